@@ -1,0 +1,32 @@
+//! The crate's one error type.
+
+use core::fmt;
+
+/// Why a constructor refused its input. Every fallible constructor returns one of these instead of
+/// panicking; once a value is constructed, every query on it succeeds.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Error {
+    /// Coincident or collinear vertices at the scalar's precision: the triangle has no
+    /// well-defined front normal or standard frame.
+    Degenerate,
+    /// A coordinate or radius is NaN or infinite.
+    NonFinite,
+    /// A coordinate or radius exceeds the scalar's safe range ([`Scalar::LIMIT`](crate::Scalar::LIMIT),
+    /// or `3.5 * LIMIT` for coordinates already in a standard frame).
+    OutOfRange,
+    /// The ball's radius is negative.
+    NegativeRadius,
+}
+
+impl fmt::Display for Error {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(match self {
+            Error::Degenerate => "degenerate triangle: coincident or collinear vertices",
+            Error::NonFinite => "coordinate or radius is NaN or infinite",
+            Error::OutOfRange => "coordinate or radius outside the scalar's safe range",
+            Error::NegativeRadius => "negative radius",
+        })
+    }
+}
+
+impl core::error::Error for Error {}

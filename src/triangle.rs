@@ -1,0 +1,173 @@
+//! Triangles and their standard frame: the one rigid transform per triangle that the face test
+//! (and every later contact test) runs in.
+
+use crate::scalar::largest;
+use crate::{Error, Scalar, StandardSweep, Sweep, Vec3, check};
+
+/// A triangle as three world-space vertices: a plain `Copy` struct with no invariant.
+///
+/// Vertices are counter-clockwise seen from the front, so the front normal points along
+/// `(v1 - v0) × (v2 - v0)`. Validate it with [`StandardTriangle::new`].
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct Triangle<S> {
+    /// First vertex; the origin of the standard frame.
+    pub v0: Vec3<S>,
+    /// Second vertex; lies in the standard frame's x–z plane with z > 0.
+    pub v1: Vec3<S>,
+    /// Third vertex; lies on the standard frame's positive x axis.
+    pub v2: Vec3<S>,
+}
+
+impl<S> Triangle<S> {
+    /// Builds a triangle from its vertices, counter-clockwise seen from the front.
+    pub const fn new(v0: Vec3<S>, v1: Vec3<S>, v2: Vec3<S>) -> Self {
+        Self { v0, v1, v2 }
+    }
+}
+
+/// A validated triangle with its precomputed standard frame.
+///
+/// The frame is the rigid transform that puts `v0` at the origin, `v2` on the positive x axis and
+/// `v1` in the x–z plane with z > 0, so the front face looks along +y. It is built from edge
+/// vectors and cross products (no trigonometry); every vector is scaled by a power of two or by
+/// its largest component before anything is squared, so construction cannot overflow or
+/// underflow for any accepted triangle. The normal comes from the two shortest edges, whose
+/// cross product suffers the least cancellation, and the axes are then made orthonormal.
+///
+/// ```
+/// use ballcast::{StandardTriangle, Triangle, Vec3};
+/// // A floor triangle facing up (+y): (v1 - v0) × (v2 - v0) = (0, 0, 1) × (1, 0, 0) = (0, 1, 0).
+/// let t = Triangle::new(
+///     Vec3::new(0.0f32, 0.0, 0.0),
+///     Vec3::new(0.0, 0.0, 1.0),
+///     Vec3::new(1.0, 0.0, 0.0),
+/// );
+/// let st = StandardTriangle::new(&t)?;
+/// assert_eq!(st.normal(), Vec3::new(0.0, 1.0, 0.0));
+/// assert_eq!(st.to_standard(Vec3::new(1.0, 0.0, 0.0))?, Vec3::new(1.0, 0.0, 0.0));
+/// # Ok::<(), ballcast::Error>(())
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct StandardTriangle<S: Scalar> {
+    origin: Vec3<S>,
+    ux: Vec3<S::Unit>,
+    uy: Vec3<S::Unit>,
+    uz: Vec3<S::Unit>,
+    x1: S,
+    z1: S,
+    x2: S,
+    normal: Vec3<S>,
+}
+
+impl<S: Scalar> StandardTriangle<S> {
+    /// Validates `t` and precomputes its standard frame.
+    ///
+    /// Errors: [`Error::NonFinite`] or [`Error::OutOfRange`] for a vertex outside
+    /// `±`[`Scalar::LIMIT`]; [`Error::Degenerate`] when two vertices coincide, when the vertices
+    /// are collinear at the scalar's precision (the normal's direction would be uncertain by more
+    /// than about 1e-3 rad), or when the standardized base `x2` or height `z1` rounds to zero.
+    pub fn new(t: &Triangle<S>) -> Result<Self, Error> {
+        for v in [t.v0, t.v1, t.v2] {
+            check::point(v, S::LIMIT)?;
+        }
+        let edges = [t.v1 - t.v0, t.v2 - t.v1, t.v0 - t.v2];
+        let [s0, s1, s2] = edges.map(S::scaled);
+        let (s0, s1, s2) = (
+            s0.ok_or(Error::Degenerate)?,
+            s1.ok_or(Error::Degenerate)?,
+            s2.ok_or(Error::Degenerate)?,
+        );
+        // (v1-v0)×(v2-v0) = e0×e1 = e1×e2 = e2×e0: use the pair that leaves out the longest edge.
+        let [l0, l1, l2] = edges.map(|e| largest(e.x.abs(), e.y.abs(), e.z.abs()));
+        let n = if l2 >= l0 && l2 >= l1 {
+            S::unit_cross(s0, s1)
+        } else if l0 >= l1 {
+            S::unit_cross(s1, s2)
+        } else {
+            S::unit_cross(s2, s0)
+        }
+        .ok_or(Error::Degenerate)?;
+
+        let base = t.v2 - t.v0;
+        let ux = S::unit_normalize(S::scaled(base).ok_or(Error::Degenerate)?);
+        let uz = S::unit_cross(ux, n).ok_or(Error::Degenerate)?;
+        let uy = S::unit_cross(uz, ux).ok_or(Error::Degenerate)?;
+
+        let side = t.v1 - t.v0;
+        let (x1, z1, x2) = (
+            S::dot_unit(side, ux),
+            S::dot_unit(side, uz),
+            S::dot_unit(base, ux),
+        );
+        if !(x2 > S::ZERO && z1 > S::ZERO) {
+            return Err(Error::Degenerate);
+        }
+        Ok(Self {
+            origin: t.v0,
+            ux,
+            uy,
+            uz,
+            x1,
+            z1,
+            x2,
+            normal: uy.map(S::unit_to_scalar),
+        })
+    }
+
+    /// The front unit normal in world orientation (the frame's +y axis).
+    pub fn normal(&self) -> Vec3<S> {
+        self.normal
+    }
+
+    /// The triangle's first vertex: the world position of the frame's origin.
+    pub fn origin(&self) -> Vec3<S> {
+        self.origin
+    }
+
+    /// The standardized vertices `[v0, v1, v2]`: `(0,0,0)`, `(x1,0,z1)` and `(x2,0,0)`.
+    pub fn vertices(&self) -> [Vec3<S>; 3] {
+        [
+            Vec3::new(S::ZERO, S::ZERO, S::ZERO),
+            Vec3::new(self.x1, S::ZERO, self.z1),
+            Vec3::new(self.x2, S::ZERO, S::ZERO),
+        ]
+    }
+
+    /// The frame's axes in world orientation, `[x, y, z]`, each a unit vector rounded to `S`.
+    pub fn axes(&self) -> [Vec3<S>; 3] {
+        [self.ux, self.uy, self.uz].map(|u| u.map(S::unit_to_scalar))
+    }
+
+    /// Transforms a world point into the standard frame.
+    ///
+    /// Errors: [`Error::NonFinite`] or [`Error::OutOfRange`] for a point outside
+    /// `±`[`Scalar::LIMIT`]. The result lies within `3.5 * LIMIT` of the origin.
+    pub fn to_standard(&self, p: Vec3<S>) -> Result<Vec3<S>, Error> {
+        Ok(self.standard_point(check::point(p, S::LIMIT)?))
+    }
+
+    /// Transforms a validated sweep into the standard frame; the radius is unchanged, and so is
+    /// any fraction alpha along the path, since the transform is rigid.
+    pub fn standardize(&self, s: &Sweep<S>) -> StandardSweep<S> {
+        StandardSweep {
+            p0: self.standard_point(s.p0()),
+            p1: self.standard_point(s.p1()),
+            radius: s.radius(),
+        }
+    }
+
+    /// [`to_standard`](Self::to_standard) for a point already known to lie within `±LIMIT`.
+    pub(crate) fn standard_point(&self, p: Vec3<S>) -> Vec3<S> {
+        let d = p - self.origin;
+        Vec3::new(
+            S::dot_unit(d, self.ux),
+            S::dot_unit(d, self.uy),
+            S::dot_unit(d, self.uz),
+        )
+    }
+
+    /// Standardized `x1`, `z1`, `x2`, for the face test.
+    pub(crate) fn shape(&self) -> (S, S, S) {
+        (self.x1, self.z1, self.x2)
+    }
+}
