@@ -41,7 +41,7 @@ pub fn standard_face<S: Scalar>(tri: &StandardTriangle<S>, s: &StandardSweep<S>)
     if y1 >= r {
         return None;
     }
-    let beta = (r - y0) / (y1 - y0);
+    let beta = S::ratio(r - y0, y1 - y0);
     let xq = p0.x + beta * (p1.x - p0.x);
     let zq = p0.z + beta * (p1.z - p0.z);
 

@@ -94,6 +94,8 @@ pub(crate) mod sealed {
         /// when its direction is uncertain: the cross product's largest component is below
         /// 1024 units of roundoff of `Unit`, so the direction error would exceed about 1e-3 rad.
         fn unit_cross(a: Vec3<Self::Unit>, b: Vec3<Self::Unit>) -> Option<Vec3<Self::Unit>>;
+        /// `n / d` rounded to nearest (floats: IEEE division). Needs `|n| <= |d|`, `d != 0`.
+        fn ratio(n: Self, d: Self) -> Self;
         /// A unit-vector component rounded to `Self`.
         fn unit_to_scalar(u: Self::Unit) -> Self;
     }
@@ -157,6 +159,9 @@ macro_rules! float_scalar {
                     return None;
                 }
                 Some(Self::unit_normalize(c.map(|x| x / m)))
+            }
+            fn ratio(n: Self, d: Self) -> Self {
+                n / d
             }
             fn unit_to_scalar(u: Self) -> Self {
                 u
@@ -262,6 +267,18 @@ macro_rules! fixed_scalar {
                 Some(Self::unit_normalize(
                     c.map(|x| <$unit>::from_bits(round_shift!(x, shift) as _)),
                 ))
+            }
+            fn ratio(n: Self, d: Self) -> Self {
+                // The `/` operator truncates; alpha deserves the nearest value.
+                let (n, d) = ((n.to_bits() as $wide) << $frac, d.to_bits() as $wide);
+                let (q, r) = (n / d, n % d);
+                let away = if (n < 0) == (d < 0) { 1 } else { -1 };
+                let q = if 2 * r.unsigned_abs() >= d.unsigned_abs() {
+                    q + away
+                } else {
+                    q
+                };
+                <$t>::from_bits(q as $bits)
             }
             fn unit_to_scalar(u: $unit) -> Self {
                 <$t>::from_bits(round_shift!(u.to_bits() as $wide, $ufrac - $frac) as $bits)
