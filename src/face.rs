@@ -33,11 +33,11 @@ pub fn standard_face<S: Scalar>(tri: &StandardTriangle<S>, s: &StandardSweep<S>)
     let (x1, z1, x2) = tri.shape();
     let (y0, y1) = (p0.y, p1.y);
 
-    if y0 < r || y0 == y1 || y1 > y0 {
+    if y0 < r || y0 == y1 {
         return None;
     }
-    // beta < 1 exactly when y1 < r; deciding it before dividing keeps a fixed-point quotient in
-    // [0, 1) instead of overflowing on a tiny denominator.
+    // beta < 1 exactly when y1 < r, which with y0 >= r also rules out moving away (y1 > y0).
+    // Deciding it before dividing keeps a fixed-point quotient in [0, 1], never overflowing.
     if y1 >= r {
         return None;
     }
