@@ -23,35 +23,161 @@ struct Seed {
     boundary: bool,
 }
 
-const fn seed(name: &'static str, p0: P, p1: P, r: f64, alpha: Option<f64>, boundary: bool) -> Seed {
-    Seed { name, p0, p1, r, alpha, boundary }
+const fn seed(
+    name: &'static str,
+    p0: P,
+    p1: P,
+    r: f64,
+    alpha: Option<f64>,
+    boundary: bool,
+) -> Seed {
+    Seed {
+        name,
+        p0,
+        p1,
+        r,
+        alpha,
+        boundary,
+    }
 }
 
 /// y0 = 5, y1 = -3, r = 1 gives beta = (1 - 5) / (-3 - 5) = 1/2 unless stated otherwise.
 const SEEDS: [Seed; 16] = [
-    seed("falls_straight_onto_interior", [2.0, 5.0, 1.0], [2.0, -3.0, 1.0], 1.0, Some(0.5), false),
+    seed(
+        "falls_straight_onto_interior",
+        [2.0, 5.0, 1.0],
+        [2.0, -3.0, 1.0],
+        1.0,
+        Some(0.5),
+        false,
+    ),
     // q = (1, 1, 1) + 1/2 (2, -8, 2) = (2, -3, 2) → q' = (2, 0, 2), inside.
-    seed("falls_obliquely_onto_interior", [1.0, 5.0, 1.0], [3.0, -3.0, 3.0], 1.0, Some(0.5), false),
-    seed("starts_below_radius", [2.0, 0.5, 1.0], [2.0, -3.0, 1.0], 1.0, None, false),
-    seed("starts_behind_the_face", [2.0, -2.0, 1.0], [2.0, -5.0, 1.0], 1.0, None, false),
-    seed("moves_parallel_to_the_face", [2.0, 3.0, 1.0], [3.0, 3.0, 1.0], 1.0, None, false),
-    seed("moves_away_from_the_front", [2.0, 2.0, 1.0], [2.0, 6.0, 1.0], 1.0, None, false),
-    seed("touching_and_moving_away", [2.0, 1.0, 1.0], [2.0, 6.0, 1.0], 1.0, None, true),
+    seed(
+        "falls_obliquely_onto_interior",
+        [1.0, 5.0, 1.0],
+        [3.0, -3.0, 3.0],
+        1.0,
+        Some(0.5),
+        false,
+    ),
+    seed(
+        "starts_below_radius",
+        [2.0, 0.5, 1.0],
+        [2.0, -3.0, 1.0],
+        1.0,
+        None,
+        false,
+    ),
+    seed(
+        "starts_behind_the_face",
+        [2.0, -2.0, 1.0],
+        [2.0, -5.0, 1.0],
+        1.0,
+        None,
+        false,
+    ),
+    seed(
+        "moves_parallel_to_the_face",
+        [2.0, 3.0, 1.0],
+        [3.0, 3.0, 1.0],
+        1.0,
+        None,
+        false,
+    ),
+    seed(
+        "moves_away_from_the_front",
+        [2.0, 2.0, 1.0],
+        [2.0, 6.0, 1.0],
+        1.0,
+        None,
+        false,
+    ),
+    seed(
+        "touching_and_moving_away",
+        [2.0, 1.0, 1.0],
+        [2.0, 6.0, 1.0],
+        1.0,
+        None,
+        true,
+    ),
     // q' = (2, 0, -1): beyond edge v0-v2 (z < 0).
-    seed("outside_edge_v0_v2", [2.0, 5.0, -1.0], [2.0, -3.0, -1.0], 1.0, None, false),
+    seed(
+        "outside_edge_v0_v2",
+        [2.0, 5.0, -1.0],
+        [2.0, -3.0, -1.0],
+        1.0,
+        None,
+        false,
+    ),
     // q' = (0.25, 0, 2): beyond edge v0-v1 (z1 x - x1 z = 1 - 2 < 0).
-    seed("outside_edge_v0_v1", [0.25, 5.0, 2.0], [0.25, -3.0, 2.0], 1.0, None, false),
+    seed(
+        "outside_edge_v0_v1",
+        [0.25, 5.0, 2.0],
+        [0.25, -3.0, 2.0],
+        1.0,
+        None,
+        false,
+    ),
     // q' = (3.5, 0, 2): beyond edge v1-v2 ((x1 - x2) z - z1 (x - x2) = -6 + 2 < 0).
-    seed("outside_edge_v1_v2", [3.5, 5.0, 2.0], [3.5, -3.0, 2.0], 1.0, None, false),
+    seed(
+        "outside_edge_v1_v2",
+        [3.5, 5.0, 2.0],
+        [3.5, -3.0, 2.0],
+        1.0,
+        None,
+        false,
+    ),
     // Ends at height 1.5 > r: beta = 4/3.5 > 1.
-    seed("stops_short_beta_above_one", [2.0, 5.0, 1.0], [2.0, 1.5, 1.0], 1.0, None, false),
+    seed(
+        "stops_short_beta_above_one",
+        [2.0, 5.0, 1.0],
+        [2.0, 1.5, 1.0],
+        1.0,
+        None,
+        false,
+    ),
     // Ends exactly touching: beta = 1 is not a hit (0 <= beta < 1).
-    seed("ends_exactly_touching_beta_one", [2.0, 5.0, 1.0], [2.0, 1.0, 1.0], 1.0, None, true),
-    seed("touching_at_the_start", [2.0, 1.0, 1.0], [2.0, -3.0, 1.0], 1.0, Some(0.0), true),
-    seed("lands_on_edge_v0_v2", [2.0, 5.0, 0.0], [2.0, -3.0, 0.0], 1.0, Some(0.5), true),
+    seed(
+        "ends_exactly_touching_beta_one",
+        [2.0, 5.0, 1.0],
+        [2.0, 1.0, 1.0],
+        1.0,
+        None,
+        true,
+    ),
+    seed(
+        "touching_at_the_start",
+        [2.0, 1.0, 1.0],
+        [2.0, -3.0, 1.0],
+        1.0,
+        Some(0.0),
+        true,
+    ),
+    seed(
+        "lands_on_edge_v0_v2",
+        [2.0, 5.0, 0.0],
+        [2.0, -3.0, 0.0],
+        1.0,
+        Some(0.5),
+        true,
+    ),
     // (2.5, 0, 2) is the midpoint of v1-v2.
-    seed("lands_on_edge_v1_v2", [2.5, 5.0, 2.0], [2.5, -3.0, 2.0], 1.0, Some(0.5), true),
-    seed("lands_on_vertex_v1", [1.0, 5.0, 4.0], [1.0, -3.0, 4.0], 1.0, Some(0.5), true),
+    seed(
+        "lands_on_edge_v1_v2",
+        [2.5, 5.0, 2.0],
+        [2.5, -3.0, 2.0],
+        1.0,
+        Some(0.5),
+        true,
+    ),
+    seed(
+        "lands_on_vertex_v1",
+        [1.0, 5.0, 4.0],
+        [1.0, -3.0, 4.0],
+        1.0,
+        Some(0.5),
+        true,
+    ),
 ];
 
 /// A rigid transform: rotation (Z·Y·X Euler angles) then translation.
@@ -100,9 +226,18 @@ fn check_seeds<S: Tolerance>(shift: usize, rigid: Option<Rigid>) {
             // half its ulp; allow 64 of S's epsilon for them on top of the tolerance table.
             let allowed = S::DISTANCE + S::EPSILON.to_f64() * (approach / 2.0 + 64.0);
             let err = (hit.alpha.to_f64() - alpha).abs() * approach;
-            assert!(err <= allowed, "{}: alpha {:?}, error {err:e}", s.name, hit.alpha);
+            assert!(
+                err <= allowed,
+                "{}: alpha {:?}, error {err:e}",
+                s.name,
+                hit.alpha
+            );
             let tilt = angle(back(hit.normal), up);
-            assert!(tilt <= S::ANGLE + S::EPSILON.to_f64(), "{}: normal off by {tilt:e}", s.name);
+            assert!(
+                tilt <= S::ANGLE + S::EPSILON.to_f64(),
+                "{}: normal off by {tilt:e}",
+                s.name
+            );
             if exact {
                 assert_eq!(hit.alpha.to_f64(), alpha, "{}", s.name);
                 assert_eq!(back(hit.normal), [0.0, 1.0, 0.0], "{}", s.name);

@@ -147,24 +147,39 @@ pub trait Tolerance: Scalar {
     const DISTANCE: f64;
     /// Angle between the reported normal and f64's, radians.
     const ANGLE: f64;
+    /// Floats round relative to magnitude; fixed-point has one absolute step everywhere.
+    const RELATIVE: bool;
+    /// The spacing of representable values near `x`.
+    fn spacing(x: f64) -> f64 {
+        let eps = Self::EPSILON.to_f64();
+        if Self::RELATIVE {
+            eps * x.abs().max(1.0)
+        } else {
+            eps
+        }
+    }
 }
 impl Tolerance for f64 {
     const NAME: &'static str = "f64";
+    const RELATIVE: bool = true;
     const DISTANCE: f64 = 1e-12;
     const ANGLE: f64 = 1e-12;
 }
 impl Tolerance for f32 {
     const NAME: &'static str = "f32";
+    const RELATIVE: bool = true;
     const DISTANCE: f64 = 1e-5;
     const ANGLE: f64 = 1e-5;
 }
 impl Tolerance for fixed::types::I32F32 {
     const NAME: &'static str = "I32F32";
+    const RELATIVE: bool = false;
     const DISTANCE: f64 = 2e-8;
     const ANGLE: f64 = 1e-7;
 }
 impl Tolerance for fixed::types::I16F16 {
     const NAME: &'static str = "I16F16";
+    const RELATIVE: bool = false;
     const DISTANCE: f64 = 5e-4;
     const ANGLE: f64 = 1e-3;
 }
