@@ -115,18 +115,24 @@ macro_rules! float_scalar {
             const LIMIT: Self = $limit;
             const EPSILON: Self = <$t>::EPSILON;
 
+            #[inline]
+
             fn from_f64(v: f64) -> Self {
                 v as $t
             }
+            #[inline]
             fn to_f64(self) -> f64 {
                 self as f64
             }
+            #[inline]
             fn is_finite(self) -> bool {
                 <$t>::is_finite(self)
             }
+            #[inline]
             fn abs(self) -> Self {
                 <$t>::abs(self)
             }
+            #[inline]
             fn sqrt(self) -> Self {
                 $sqrt(self)
             }
@@ -135,9 +141,12 @@ macro_rules! float_scalar {
         impl sealed::Kernel for $t {
             type Unit = $t;
 
+            #[inline]
+
             fn dot_unit(d: Vec3<Self>, u: Vec3<Self>) -> Self {
                 d.dot(u)
             }
+            #[inline]
             fn mul_cmp(a: Self, b: Self, c: Self, d: Self) -> Ordering {
                 (a * b).partial_cmp(&(c * d)).unwrap_or(Ordering::Equal)
             }
@@ -160,9 +169,11 @@ macro_rules! float_scalar {
                 }
                 Some(Self::unit_normalize(c.map(|x| x / m)))
             }
+            #[inline]
             fn ratio(n: Self, d: Self) -> Self {
                 n / d
             }
+            #[inline]
             fn unit_to_scalar(u: Self) -> Self {
                 u
             }
@@ -188,6 +199,8 @@ macro_rules! fixed_scalar {
             const LIMIT: Self = <$t>::from_bits($limit_int << $frac);
             const EPSILON: Self = <$t>::DELTA;
 
+            #[inline]
+
             fn from_f64(v: f64) -> Self {
                 if v.is_nan() {
                     <$t>::MAX
@@ -195,15 +208,19 @@ macro_rules! fixed_scalar {
                     <$t>::saturating_from_num(v)
                 }
             }
+            #[inline]
             fn to_f64(self) -> f64 {
                 self.to_num::<f64>()
             }
+            #[inline]
             fn is_finite(self) -> bool {
                 true
             }
+            #[inline]
             fn abs(self) -> Self {
                 self.saturating_abs()
             }
+            #[inline]
             fn sqrt(self) -> Self {
                 let b = self.to_bits();
                 if b <= 0 {
@@ -218,11 +235,14 @@ macro_rules! fixed_scalar {
         impl sealed::Kernel for $t {
             type Unit = $unit;
 
+            #[inline]
+
             fn dot_unit(d: Vec3<Self>, u: Vec3<$unit>) -> Self {
                 let p = |a: $t, b: $unit| a.to_bits() as $wide * b.to_bits() as $wide;
                 let sum = p(d.x, u.x) + p(d.y, u.y) + p(d.z, u.z);
                 <$t>::from_bits(round_shift!(sum, $ufrac) as $bits)
             }
+            #[inline]
             fn mul_cmp(a: Self, b: Self, c: Self, d: Self) -> Ordering {
                 let ab = a.to_bits() as $wide * b.to_bits() as $wide;
                 let cd = c.to_bits() as $wide * d.to_bits() as $wide;
@@ -268,6 +288,7 @@ macro_rules! fixed_scalar {
                     c.map(|x| <$unit>::from_bits(round_shift!(x, shift) as _)),
                 ))
             }
+            #[inline]
             fn ratio(n: Self, d: Self) -> Self {
                 // The `/` operator truncates; alpha deserves the nearest value.
                 let (n, d) = ((n.to_bits() as $wide) << $frac, d.to_bits() as $wide);
@@ -280,6 +301,7 @@ macro_rules! fixed_scalar {
                 };
                 <$t>::from_bits(q as $bits)
             }
+            #[inline]
             fn unit_to_scalar(u: $unit) -> Self {
                 <$t>::from_bits(round_shift!(u.to_bits() as $wide, $ufrac - $frac) as $bits)
             }
