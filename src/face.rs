@@ -6,7 +6,7 @@
 //! [`StandardTriangle::face_collision`] is the whole algorithm: transform the sweep into the
 //! triangle's precomputed frame, run the standardized test, report the world normal.
 
-use crate::{Hit, Scalar, StandardSweep, StandardTriangle, Sweep};
+use crate::{Contact, Hit, Scalar, StandardSweep, StandardTriangle, Sweep};
 use core::cmp::Ordering;
 
 /// The standardized face collision algorithm: the fraction `beta` of the path from `p0` to `p1`
@@ -30,7 +30,6 @@ use core::cmp::Ordering;
 /// ```
 pub fn standard_face<S: Scalar>(tri: &StandardTriangle<S>, s: &StandardSweep<S>) -> Option<S> {
     let (p0, p1, r) = (s.p0, s.p1, s.radius);
-    let (x1, z1, x2) = tri.shape();
     let (y0, y1) = (p0.y, p1.y);
 
     if y0 < r || y0 == y1 {
@@ -45,12 +44,17 @@ pub fn standard_face<S: Scalar>(tri: &StandardTriangle<S>, s: &StandardSweep<S>)
     let xq = p0.x + beta * (p1.x - p0.x);
     let zq = p0.z + beta * (p1.z - p0.z);
 
-    // q' is in with respect to an edge when it lies on the triangle's side of the edge's line.
+    (contains(tri, xq, zq) && beta >= S::ZERO && beta < S::ONE).then_some(beta)
+}
+
+/// Whether `q' = (xq, 0, zq)` is inside the standardized triangle or on its boundary: in with
+/// respect to all three edges, each a half-plane test on the triangle's side of the edge's line.
+pub(crate) fn contains<S: Scalar>(tri: &StandardTriangle<S>, xq: S, zq: S) -> bool {
+    let (x1, z1, x2) = tri.shape();
     let in_v0_v2 = zq >= S::ZERO;
     let in_v0_v1 = S::mul_cmp(z1, xq, x1, zq) != Ordering::Less;
     let in_v1_v2 = S::mul_cmp(x1 - x2, zq, z1, xq - x2) != Ordering::Less;
-
-    (in_v0_v2 && in_v0_v1 && in_v1_v2 && beta >= S::ZERO && beta < S::ONE).then_some(beta)
+    in_v0_v2 && in_v0_v1 && in_v1_v2
 }
 
 impl<S: Scalar> StandardTriangle<S> {
@@ -74,6 +78,7 @@ impl<S: Scalar> StandardTriangle<S> {
         Some(Hit {
             alpha,
             normal: self.normal(),
+            contact: Contact::Face,
         })
     }
 }

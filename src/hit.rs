@@ -2,15 +2,31 @@
 
 use crate::Vec3;
 
+/// Which feature of a triangle the ball touched.
+///
+/// Edge `i` runs from vertex `i` to vertex `i + 1` (mod 3): edge 0 is v0–v1, edge 1 is v1–v2,
+/// edge 2 is v2–v0.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Contact {
+    /// The face's interior or boundary, touched by the ball's flat side: the normal is the face's.
+    Face,
+    /// The interior of edge `i`.
+    Edge(u8),
+    /// Vertex `i`.
+    Vertex(u8),
+}
+
 /// A contact found along a sweep: a plain `Copy` struct.
 ///
 /// `alpha` is the fraction of the path travelled before contact, `0 <= alpha < 1`; a query that
 /// finds nothing returns `None`, the notes' alpha = 1. `normal` is the unit contact normal in
-/// world orientation, facing the ball.
+/// world orientation, from the touched feature towards the ball's centre.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Hit<S> {
     /// Fraction of the path from `p0` to `p1` travelled at first contact, in `[0, 1)`.
     pub alpha: S,
     /// Unit contact normal in world orientation, pointing towards the ball's centre.
     pub normal: Vec3<S>,
+    /// The feature touched.
+    pub contact: Contact,
 }

@@ -22,7 +22,8 @@
 //! - [`sweep`] holds [`Sweep`] (a validated moving ball) and [`StandardSweep`].
 //! - [`face`] holds the seed's face test, [`standard_face`] and
 //!   [`StandardTriangle::face_collision`].
-//! - [`hit`] holds [`Hit`], what a query returns; [`error`] holds [`Error`].
+//! - [`contact`] holds edge and vertex contacts, [`StandardTriangle::cast`] and [`Features`].
+//! - [`hit`] holds [`Hit`] and [`Contact`], what a query returns; [`error`] holds [`Error`].
 //!
 //! ```
 //! use ballcast::{StandardTriangle, Sweep, Triangle, Vec3};
@@ -43,6 +44,7 @@
 #![deny(missing_docs)]
 
 mod check;
+pub mod contact;
 pub mod error;
 pub mod face;
 pub mod hit;
@@ -51,9 +53,10 @@ pub mod sweep;
 pub mod triangle;
 pub mod vec3;
 
+pub use contact::Features;
 pub use error::Error;
 pub use face::standard_face;
-pub use hit::Hit;
+pub use hit::{Contact, Hit};
 pub use scalar::Scalar;
 pub use sweep::{StandardSweep, Sweep};
 pub use triangle::{StandardTriangle, Triangle};

@@ -79,7 +79,9 @@ pub(crate) mod sealed {
     /// method; callers inside the crate meet them through validated types.
     pub trait Kernel: Sized {
         /// The component type of unit vectors (more fractional bits than `Self` for fixed-point).
-        type Unit: Copy + Debug + PartialEq;
+        type Unit: Copy + Debug + PartialEq + Neg<Output = Self::Unit>;
+        /// Zero as a unit-vector component.
+        const UNIT_ZERO: Self::Unit;
 
         /// `d · u` rounded once. Needs components of `d` within `2 * LIMIT`.
         fn dot_unit(d: Vec3<Self>, u: Vec3<Self::Unit>) -> Self;
@@ -96,6 +98,13 @@ pub(crate) mod sealed {
         fn unit_cross(a: Vec3<Self::Unit>, b: Vec3<Self::Unit>) -> Option<Vec3<Self::Unit>>;
         /// `n / d` rounded to nearest (floats: IEEE division). Needs `|n| <= |d|`, `d != 0`.
         fn ratio(n: Self, d: Self) -> Self;
+        /// `s * u` rounded once.
+        fn mul_unit(s: Self, u: Self::Unit) -> Self;
+        /// The Euclidean length of `v`, without overflow for components within `8 * LIMIT`
+        /// (fixed-point: exact integer square root of the exact sum of squares, rounded down).
+        fn length(v: Vec3<Self>) -> Self;
+        /// `sqrt(a * b)` for `a, b >= 0` within `2 * LIMIT`; the product never leaves the wide type.
+        fn sqrt_mul(a: Self, b: Self) -> Self;
         /// A unit-vector component rounded to `Self`.
         fn unit_to_scalar(u: Self::Unit) -> Self;
     }
@@ -140,6 +149,7 @@ macro_rules! float_scalar {
 
         impl sealed::Kernel for $t {
             type Unit = $t;
+            const UNIT_ZERO: $t = 0.0;
 
             #[inline]
 
@@ -172,6 +182,23 @@ macro_rules! float_scalar {
             #[inline]
             fn ratio(n: Self, d: Self) -> Self {
                 n / d
+            }
+            #[inline]
+            fn mul_unit(s: Self, u: Self) -> Self {
+                s * u
+            }
+            fn length(v: Vec3<Self>) -> Self {
+                // Scaled by the largest component so squares can neither overflow nor underflow.
+                let m = largest(v.x.abs(), v.y.abs(), v.z.abs());
+                if m == 0.0 {
+                    return 0.0;
+                }
+                let s = v.map(|c| c / m);
+                m * $sqrt(s.dot(s))
+            }
+            #[inline]
+            fn sqrt_mul(a: Self, b: Self) -> Self {
+                $sqrt(a * b)
             }
             #[inline]
             fn unit_to_scalar(u: Self) -> Self {
@@ -234,6 +261,7 @@ macro_rules! fixed_scalar {
 
         impl sealed::Kernel for $t {
             type Unit = $unit;
+            const UNIT_ZERO: $unit = <$unit>::ZERO;
 
             #[inline]
 
@@ -300,6 +328,21 @@ macro_rules! fixed_scalar {
                     q
                 };
                 <$t>::from_bits(q as $bits)
+            }
+            #[inline]
+            fn mul_unit(s: Self, u: $unit) -> Self {
+                let p = s.to_bits() as $wide * u.to_bits() as $wide;
+                <$t>::from_bits(round_shift!(p, $ufrac) as $bits)
+            }
+            fn length(v: Vec3<Self>) -> Self {
+                // Components below 2^(BITS-1) square to below 2^(2 BITS - 2): three fit unsigned.
+                let u = v.map(|c| (c.to_bits() as $wide).unsigned_abs());
+                <$t>::from_bits((u.x * u.x + u.y * u.y + u.z * u.z).isqrt() as $bits)
+            }
+            fn sqrt_mul(a: Self, b: Self) -> Self {
+                let (a, b) = (a.to_bits().max(0) as $wide, b.to_bits().max(0) as $wide);
+                // Fractional bits: 2F in the product, F in its square root.
+                <$t>::from_bits((a * b).unsigned_abs().isqrt() as $bits)
             }
             #[inline]
             fn unit_to_scalar(u: $unit) -> Self {

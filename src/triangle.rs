@@ -2,7 +2,7 @@
 //! (and every later contact test) runs in.
 
 use crate::scalar::largest;
-use crate::{Error, Scalar, StandardSweep, Sweep, Vec3, check};
+use crate::{Error, Features, Scalar, StandardSweep, Sweep, Vec3, check};
 
 /// A triangle as three world-space vertices: a plain `Copy` struct with no invariant.
 ///
@@ -57,6 +57,19 @@ pub struct StandardTriangle<S: Scalar> {
     z1: S,
     x2: S,
     normal: Vec3<S>,
+    pub(crate) edges: [Edge<S>; 3],
+    pub(crate) features: Features,
+    pub(crate) two_sided: bool,
+}
+
+/// An edge in the standard frame, precomputed: it starts at vertex `i` and runs along `dir`
+/// (a unit vector in the x–z plane) for `len`; `out` is the in-plane unit normal pointing away
+/// from the triangle.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct Edge<S: Scalar> {
+    pub(crate) dir: Vec3<S::Unit>,
+    pub(crate) out: Vec3<S::Unit>,
+    pub(crate) len: S,
 }
 
 impl<S: Scalar> StandardTriangle<S> {
@@ -102,6 +115,27 @@ impl<S: Scalar> StandardTriangle<S> {
         if !(x2 > S::ZERO && z1 > S::ZERO) {
             return Err(Error::Degenerate);
         }
+        let z = S::ZERO;
+        let corners = [
+            Vec3::new(z, z, z),
+            Vec3::new(x1, z, z1),
+            Vec3::new(x2, z, z),
+        ];
+        let mut edges = [Edge {
+            dir: ux,
+            out: ux,
+            len: z,
+        }; 3];
+        for (i, edge) in edges.iter_mut().enumerate() {
+            let d = corners[(i + 1) % 3] - corners[i];
+            let dir = S::unit_normalize(S::scaled(d).ok_or(Error::Degenerate)?);
+            let out = Vec3::new(-dir.z, S::UNIT_ZERO, dir.x);
+            *edge = Edge {
+                dir,
+                out,
+                len: S::length(d),
+            };
+        }
         Ok(Self {
             origin: t.v0,
             ux,
@@ -111,6 +145,9 @@ impl<S: Scalar> StandardTriangle<S> {
             z1,
             x2,
             normal: uy.map(S::unit_to_scalar),
+            edges,
+            features: Features::ALL,
+            two_sided: false,
         })
     }
 
@@ -163,6 +200,16 @@ impl<S: Scalar> StandardTriangle<S> {
             S::dot_unit(d, self.ux),
             S::dot_unit(d, self.uy),
             S::dot_unit(d, self.uz),
+        )
+    }
+
+    /// A standard-frame direction (or offset) turned into world orientation.
+    pub(crate) fn world_direction(&self, v: Vec3<S>) -> Vec3<S> {
+        let (x, y, z) = (self.ux, self.uy, self.uz);
+        Vec3::new(
+            S::dot_unit(v, Vec3::new(x.x, y.x, z.x)),
+            S::dot_unit(v, Vec3::new(x.y, y.y, z.y)),
+            S::dot_unit(v, Vec3::new(x.z, y.z, z.z)),
         )
     }
 

@@ -275,3 +275,57 @@ impl Rng {
         }
     }
 }
+
+/// The point of triangle `t` closest to `p` (Ericson, Real-Time Collision Detection, 5.1.5),
+/// an oracle independent of the crate's formulation.
+pub fn closest_on_triangle(p: P, t: [P; 3]) -> P {
+    let [a, b, c] = t;
+    let (ab, ac, ap) = (sub(b, a), sub(c, a), sub(p, a));
+    let (d1, d2) = (dot(ab, ap), dot(ac, ap));
+    if d1 <= 0.0 && d2 <= 0.0 {
+        return a;
+    }
+    let bp = sub(p, b);
+    let (d3, d4) = (dot(ab, bp), dot(ac, bp));
+    if d3 >= 0.0 && d4 <= d3 {
+        return b;
+    }
+    let vc = d1 * d4 - d3 * d2;
+    if vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0 {
+        return add(a, scale(ab, d1 / (d1 - d3)));
+    }
+    let cp = sub(p, c);
+    let (d5, d6) = (dot(ab, cp), dot(ac, cp));
+    if d6 >= 0.0 && d5 <= d6 {
+        return c;
+    }
+    let vb = d5 * d2 - d1 * d6;
+    if vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0 {
+        return add(a, scale(ac, d2 / (d2 - d6)));
+    }
+    let va = d3 * d6 - d5 * d4;
+    if va <= 0.0 && d4 - d3 >= 0.0 && d5 - d6 >= 0.0 {
+        return add(b, scale(sub(c, b), (d4 - d3) / ((d4 - d3) + (d5 - d6))));
+    }
+    let denom = 1.0 / (va + vb + vc);
+    add(a, add(scale(ab, vb * denom), scale(ac, vc * denom)))
+}
+
+/// Distance from `p` to triangle `t`.
+pub fn distance_to_triangle(p: P, t: [P; 3]) -> f64 {
+    norm(sub(p, closest_on_triangle(p, t)))
+}
+
+impl Case {
+    /// The crate's full `cast` in scalar `S`, results in f64, with every feature active.
+    pub fn cast<S: Scalar>(&self, radius: f64) -> Result<Option<(f64, P)>, Error> {
+        let [a, b, c] = self.tri.map(v::<S>);
+        let st = StandardTriangle::new(&Triangle::new(a, b, c))?;
+        let s = Sweep::new(v(self.p0), v(self.p1), S::from_f64(radius))?;
+        Ok(st.cast(&s).map(|h| (h.alpha.to_f64(), back(h.normal))))
+    }
+    /// The ball's centre at fraction `t` of the path.
+    pub fn at(&self, t: f64) -> P {
+        add(self.p0, scale(sub(self.p1, self.p0), t))
+    }
+}

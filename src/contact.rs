@@ -1,0 +1,308 @@
+//! Edge and vertex contacts, and [`StandardTriangle::cast`]: the earliest contact of a moving
+//! ball with a whole triangle (face, edges, vertices).
+//!
+//! Every test runs in the triangle's standard frame, where the triangle lies in the x–z plane.
+//! An edge or vertex contact is the first moment the ball's centre comes within `r` of the
+//! feature. Each is solved by closest approach instead of a squared quadratic: with `dir` the
+//! unit direction of motion, `s` the signed distance of the start along it and `h` the distance
+//! of the feature from the line of motion, contact is `sqrt(r² - h²)` before closest approach.
+//! Only distances are formed, never squares of coordinates, so fixed-point stays in range.
+
+use crate::face::{contains, standard_face};
+use crate::{Contact, Hit, Scalar, StandardSweep, StandardTriangle, Sweep, Vec3};
+
+/// Which edges and vertices of a triangle take part in [`StandardTriangle::cast`]; the face
+/// always does. Inactive features model a mesh's interior: an edge shared with a coplanar
+/// neighbour, or one in a valley, is never the first thing a ball touches, and testing it only
+/// adds "ghost" bumps from rounding. [`Scene`](crate::Scene) computes these from adjacency.
+///
+/// ```
+/// use ballcast::Features;
+/// let f = Features::ALL.with_edge(1, false);
+/// assert!(f.edge(0) && !f.edge(1) && f.vertex(1));
+/// assert_eq!(Features::from_bits(f.bits()), f);
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct Features(u8);
+
+impl Features {
+    /// Every edge and vertex active: a lone triangle.
+    pub const ALL: Self = Self(0b11_1111);
+    /// Only the face: a triangle inside a flat mesh.
+    pub const FACE_ONLY: Self = Self(0);
+
+    /// From bits: bit `i` (0..3) is edge `i`, bit `3 + i` vertex `i`; other bits are ignored.
+    pub const fn from_bits(bits: u8) -> Self {
+        Self(bits & Self::ALL.0)
+    }
+    /// The bits, as taken by [`Features::from_bits`].
+    pub const fn bits(self) -> u8 {
+        self.0
+    }
+    /// Whether edge `i` (from vertex `i` to vertex `i + 1`) is active; false for `i > 2`.
+    pub const fn edge(self, i: usize) -> bool {
+        i < 3 && self.0 & (1 << i) != 0
+    }
+    /// Whether vertex `i` is active; false for `i > 2`.
+    pub const fn vertex(self, i: usize) -> bool {
+        i < 3 && self.0 & (8 << i) != 0
+    }
+    /// The same mask with edge `i` switched on or off (unchanged for `i > 2`).
+    pub const fn with_edge(self, i: usize, on: bool) -> Self {
+        if i > 2 {
+            self
+        } else {
+            self.with_bit(1 << i, on)
+        }
+    }
+    /// The same mask with vertex `i` switched on or off (unchanged for `i > 2`).
+    pub const fn with_vertex(self, i: usize, on: bool) -> Self {
+        if i > 2 {
+            self
+        } else {
+            self.with_bit(8 << i, on)
+        }
+    }
+    const fn with_bit(self, bit: u8, on: bool) -> Self {
+        Self(if on { self.0 | bit } else { self.0 & !bit })
+    }
+}
+
+impl Default for Features {
+    fn default() -> Self {
+        Self::ALL
+    }
+}
+
+/// A contact in the standard frame: alpha, the offset from the touched point to the ball's
+/// centre (`None` for the face, whose normal is +y), and the feature.
+type Touch<S> = (S, Option<Vec3<S>>, Contact);
+
+impl<S: Scalar> StandardTriangle<S> {
+    /// The same triangle with only the given edges and vertices taking part in [`cast`](Self::cast).
+    pub fn with_features(mut self, features: Features) -> Self {
+        self.features = features;
+        self
+    }
+
+    /// The edges and vertices that take part in [`cast`](Self::cast) (all, unless changed).
+    pub fn features(&self) -> Features {
+        self.features
+    }
+
+    /// The same triangle, one-sided (`false`, the default) or two-sided (`true`).
+    ///
+    /// One-sided, only a ball moving towards the front (velocity · front normal < 0) with its
+    /// centre in front of the plane at contact can touch it; two-sided, the back behaves like a
+    /// front facing the other way.
+    pub fn with_two_sided(mut self, two_sided: bool) -> Self {
+        self.two_sided = two_sided;
+        self
+    }
+
+    /// Whether the back face also stops balls.
+    pub fn is_two_sided(&self) -> bool {
+        self.two_sided
+    }
+
+    /// The earliest contact of the sweep's ball with the triangle: its face (the seed's test),
+    /// its active edges and its active vertices.
+    ///
+    /// Rules, so that results are predictable at the boundaries:
+    /// - One-sided by default: nothing counts unless the ball moves towards the front, and an
+    ///   edge or vertex contact counts only with the centre on the front side of the plane.
+    /// - A ball that *starts* overlapping the triangle (centre in front, closer than `r` to the
+    ///   face region, an active edge or an active vertex) and moves further in is reported at
+    ///   `alpha = 0`, with the normal pushing it out. One that starts overlapping and moves away
+    ///   is not reported, so it can leave. Overlap is never reported later along the path.
+    /// - A ray (radius 0) touches only the face, which includes its boundary.
+    /// - The normal is the unit vector from the touched point to the ball's centre.
+    ///
+    /// ```
+    /// use ballcast::{Contact, StandardTriangle, Sweep, Triangle, Vec3};
+    /// let t = Triangle::new(Vec3::new(0.0, 0.0, 0.0), Vec3::new(0.0, 0.0, 4.0), Vec3::new(4.0, 0.0, 0.0));
+    /// let st = StandardTriangle::<f64>::new(&t)?;
+    /// // Falling just beside edge v2-v0 (the x axis, z = 0): the ball catches the edge.
+    /// let s = Sweep::new(Vec3::new(2.0, 3.0, -0.6), Vec3::new(2.0, -3.0, -0.6), 1.0)?;
+    /// let hit = st.cast(&s).unwrap();
+    /// assert_eq!(hit.contact, Contact::Edge(2));
+    /// // Contact when the centre is at height 0.8: (0.6² + 0.8² = 1) after 2.2 of 6 units.
+    /// assert!((hit.alpha - 2.2 / 6.0).abs() < 1e-12);
+    /// assert!((hit.normal.y - 0.8).abs() < 1e-12 && (hit.normal.z + 0.6).abs() < 1e-12);
+    /// # Ok::<(), ballcast::Error>(())
+    /// ```
+    pub fn cast(&self, sweep: &Sweep<S>) -> Option<Hit<S>> {
+        let mut s = self.standardize(sweep);
+        // Towards the back: a one-sided triangle ignores it, a two-sided one mirrors y.
+        let back = s.p1.y > s.p0.y;
+        if back {
+            if !self.two_sided {
+                return None;
+            }
+            s.p0.y = -s.p0.y;
+            s.p1.y = -s.p1.y;
+        }
+        let (alpha, offset, contact) = self.cast_front(&s)?;
+        let normal = match offset {
+            None => self.normal(),
+            Some(mut v) => {
+                if back {
+                    v.y = -v.y;
+                }
+                unit(self.world_direction(v)).unwrap_or(self.normal())
+            }
+        };
+        Some(Hit {
+            alpha,
+            normal: if back && offset.is_none() {
+                -normal
+            } else {
+                normal
+            },
+            contact,
+        })
+    }
+
+    /// `cast` for a sweep moving towards the front (or parallel to the plane).
+    fn cast_front(&self, s: &StandardSweep<S>) -> Option<Touch<S>> {
+        let (p0, p1, r) = (s.p0, s.p1, s.radius);
+        let d = p1 - p0;
+        // Moving parallel or away, starting behind the plane, or never within r of it.
+        if d.y >= S::ZERO || p0.y < S::ZERO || p1.y >= r {
+            return None;
+        }
+        // The face is reached at height r, before any edge or vertex can be.
+        if let Some(beta) = standard_face(self, s) {
+            return Some((beta, None, Contact::Face));
+        }
+        if p0.y < r && contains(self, p0.x, p0.z) {
+            return Some((S::ZERO, None, Contact::Face));
+        }
+        if r == S::ZERO || !self.near_path(p0, p1, r) {
+            return None;
+        }
+        let mut best: Option<Touch<S>> = None;
+        for i in 0..3 {
+            if self.features.edge(i) {
+                best = earlier(best, self.edge_contact(i, p0, d, r));
+            }
+        }
+        if (0..3).any(|i| self.features.vertex(i)) {
+            let motion = (S::length(d), S::unit_normalize(S::scaled(d)?));
+            // Where an edge's contact lies next to its vertex, the two arrive together; the
+            // edge's normal is the right one, so a vertex must be earlier by more than rounding.
+            let tie = S::EPSILON + S::EPSILON + S::EPSILON + S::EPSILON;
+            for i in 0..3 {
+                if self.features.vertex(i) {
+                    let v = self.vertex_contact(i, p0, d, motion, r);
+                    if v.is_some_and(|v| best.is_none_or(|b| v.0 < b.0 - tie)) {
+                        best = v;
+                    }
+                }
+            }
+        }
+        best
+    }
+
+    /// Whether the path's bounding box, grown by `r`, meets the triangle's.
+    fn near_path(&self, p0: Vec3<S>, p1: Vec3<S>, r: S) -> bool {
+        let (x1, z1, x2) = self.shape();
+        let lo = |a: S, b: S| if a < b { a } else { b };
+        let hi = |a: S, b: S| if a < b { b } else { a };
+        let (xmin, xmax) = (lo(S::ZERO, x1), hi(x1, x2));
+        lo(p0.x, p1.x) - r <= xmax
+            && hi(p0.x, p1.x) + r >= xmin
+            && lo(p0.z, p1.z) - r <= z1
+            && hi(p0.z, p1.z) + r >= S::ZERO
+    }
+
+    /// Vertex `i` in the standard frame.
+    fn corner(&self, i: usize) -> Vec3<S> {
+        self.vertices()[i]
+    }
+
+    /// First contact with the interior of edge `i`, from vertex `i` to vertex `i + 1`.
+    fn edge_contact(&self, i: usize, p0: Vec3<S>, d: Vec3<S>, r: S) -> Option<Touch<S>> {
+        let e = &self.edges[i];
+        let rel = p0 - self.corner(i);
+        // Along the edge (u) and away from the triangle in its plane (w).
+        let (u0, du) = (S::dot_unit(rel, e.dir), S::dot_unit(d, e.dir));
+        let (w0, dw) = (S::dot_unit(rel, e.out), S::dot_unit(d, e.out));
+        let (u1, w1) = (u0 + du, w0 + dw);
+        let beside = (u0 > S::ZERO || u1 > S::ZERO) && (u0 < e.len || u1 < e.len);
+        let within = (w0 <= r || w1 <= r) && (w0 >= -r || w1 >= -r);
+        if !(beside && within) {
+            return None;
+        }
+        // Across the edge the problem is planar: the centre moves from (w0, y0) along (dw, dy).
+        let z = S::ZERO;
+        let across = Vec3::new(dw, d.y, z);
+        let motion = (S::length(across), S::unit_normalize(S::scaled(across)?));
+        let beta = first_touch(Vec3::new(w0, p0.y, z), motion, r)?;
+        let (u, w, y) = (u0 + beta * du, w0 + beta * dw, p0.y + beta * d.y);
+        if !(u > z && u < e.len && y >= z) {
+            return None;
+        }
+        let offset = Vec3::new(S::mul_unit(w, e.out.x), y, S::mul_unit(w, e.out.z));
+        Some((beta, Some(offset), Contact::Edge(i as u8)))
+    }
+
+    /// First contact with vertex `i`; `motion` is the path's length and unit direction.
+    fn vertex_contact(
+        &self,
+        i: usize,
+        p0: Vec3<S>,
+        d: Vec3<S>,
+        motion: (S, Vec3<S::Unit>),
+        r: S,
+    ) -> Option<Touch<S>> {
+        let v = self.corner(i);
+        let p1 = p0 + d;
+        let apart = |a: S, b: S, c: S| (a - r > c && b - r > c) || (a + r < c && b + r < c);
+        if apart(p0.x, p1.x, v.x) || apart(p0.z, p1.z, v.z) {
+            return None;
+        }
+        let beta = first_touch(p0 - v, motion, r)?;
+        let offset = p0 - v + d * beta;
+        (offset.y >= S::ZERO).then_some((beta, Some(offset), Contact::Vertex(i as u8)))
+    }
+}
+
+/// The fraction of a path at which a point starting at offset `q0` from a feature, moving a
+/// distance `len` along the unit direction `dir`, first comes within `r` of it; zero if it
+/// starts within `r` and approaches, `None` if it never does, moves away, or arrives too late.
+fn first_touch<S: Scalar>(q0: Vec3<S>, (len, dir): (S, Vec3<S::Unit>), r: S) -> Option<S> {
+    let s = S::dot_unit(q0, dir);
+    if s >= S::ZERO {
+        return None;
+    }
+    // |q0 × dir|, each component a two-term dot product rounded once.
+    let z = S::UNIT_ZERO;
+    let c = Vec3::new(
+        S::dot_unit(Vec3::new(q0.y, -q0.z, S::ZERO), Vec3::new(dir.z, dir.y, z)),
+        S::dot_unit(Vec3::new(q0.z, -q0.x, S::ZERO), Vec3::new(dir.x, dir.z, z)),
+        S::dot_unit(Vec3::new(q0.x, -q0.y, S::ZERO), Vec3::new(dir.y, dir.x, z)),
+    );
+    let h = S::length(c);
+    if h > r {
+        return None;
+    }
+    let t = -s - S::sqrt_mul(r - h, r + h);
+    if t < S::ZERO {
+        return Some(S::ZERO);
+    }
+    (t < len).then(|| S::ratio(t, len))
+}
+
+/// The earlier of two contacts (the first on a tie).
+fn earlier<S: Scalar>(a: Option<Touch<S>>, b: Option<Touch<S>>) -> Option<Touch<S>> {
+    match (a, b) {
+        (Some(x), Some(y)) => Some(if y.0 < x.0 { y } else { x }),
+        (x, y) => x.or(y),
+    }
+}
+
+/// `v` scaled to unit length in `S`; `None` for the zero vector.
+fn unit<S: Scalar>(v: Vec3<S>) -> Option<Vec3<S>> {
+    Some(S::unit_normalize(S::scaled(v)?).map(S::unit_to_scalar))
+}
