@@ -303,6 +303,6 @@ fn earlier<S: Scalar>(a: Option<Touch<S>>, b: Option<Touch<S>>) -> Option<Touch<
 }
 
 /// `v` scaled to unit length in `S`; `None` for the zero vector.
-fn unit<S: Scalar>(v: Vec3<S>) -> Option<Vec3<S>> {
+pub(crate) fn unit<S: Scalar>(v: Vec3<S>) -> Option<Vec3<S>> {
     Some(S::unit_normalize(S::scaled(v)?).map(S::unit_to_scalar))
 }

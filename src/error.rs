@@ -16,6 +16,8 @@ pub enum Error {
     OutOfRange,
     /// The ball's radius is negative.
     NegativeRadius,
+    /// A fixed-capacity container (a [`Scene`](crate::Scene)) is full.
+    Full,
 }
 
 impl fmt::Display for Error {
@@ -25,6 +27,7 @@ impl fmt::Display for Error {
             Error::NonFinite => "coordinate or radius is NaN or infinite",
             Error::OutOfRange => "coordinate or radius outside the scalar's safe range",
             Error::NegativeRadius => "negative radius",
+            Error::Full => "capacity exhausted",
         })
     }
 }

@@ -23,6 +23,8 @@
 //! - [`face`] holds the seed's face test, [`standard_face`] and
 //!   [`StandardTriangle::face_collision`].
 //! - [`contact`] holds edge and vertex contacts, [`StandardTriangle::cast`] and [`Features`].
+//! - [`scene`] holds [`Scene`], many triangles with active edges from adjacency, and [`SceneHit`].
+//! - [`slide`] holds [`move_and_slide`], the collision response, and [`Slide`].
 //! - [`hit`] holds [`Hit`] and [`Contact`], what a query returns; [`error`] holds [`Error`].
 //!
 //! ```
@@ -49,6 +51,8 @@ pub mod error;
 pub mod face;
 pub mod hit;
 pub mod scalar;
+pub mod scene;
+pub mod slide;
 pub mod sweep;
 pub mod triangle;
 pub mod vec3;
@@ -58,6 +62,8 @@ pub use error::Error;
 pub use face::standard_face;
 pub use hit::{Contact, Hit};
 pub use scalar::Scalar;
+pub use scene::{Scene, SceneHit};
+pub use slide::{MAX_SLIDES, Slide, move_and_slide};
 pub use sweep::{StandardSweep, Sweep};
 pub use triangle::{StandardTriangle, Triangle};
 pub use vec3::Vec3;

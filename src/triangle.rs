@@ -25,6 +25,13 @@ impl<S> Triangle<S> {
     }
 }
 
+impl<S: Copy> Triangle<S> {
+    /// The vertices as an array `[v0, v1, v2]`.
+    pub const fn vertices(&self) -> [Vec3<S>; 3] {
+        [self.v0, self.v1, self.v2]
+    }
+}
+
 /// A validated triangle with its precomputed standard frame.
 ///
 /// The frame is the rigid transform that puts `v0` at the origin, `v2` on the positive x axis and

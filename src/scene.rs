@@ -1,0 +1,227 @@
+//! Many triangles at once: [`Scene`], a fixed-capacity set of prepared triangles with active
+//! edges computed from adjacency, and its earliest-contact query.
+
+use crate::contact::unit;
+use crate::{Contact, Error, Hit, Scalar, StandardTriangle, Sweep, Triangle, Vec3};
+use heapless::Vec;
+
+/// An axis-aligned box, `min <= max` per axis.
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct Bounds<S> {
+    min: Vec3<S>,
+    max: Vec3<S>,
+}
+
+impl<S: Scalar> Bounds<S> {
+    fn of(points: &[Vec3<S>], grow: S) -> Self {
+        let pick = |f: fn(S, S) -> bool, get: fn(&Vec3<S>) -> S| {
+            points
+                .iter()
+                .map(get)
+                .reduce(|a, b| if f(b, a) { b } else { a })
+        };
+        let lo = |g| pick(|b, a| b < a, g).unwrap_or(S::ZERO) - grow;
+        let hi = |g| pick(|b, a| b > a, g).unwrap_or(S::ZERO) + grow;
+        Self {
+            min: Vec3::new(lo(|p| p.x), lo(|p| p.y), lo(|p| p.z)),
+            max: Vec3::new(hi(|p| p.x), hi(|p| p.y), hi(|p| p.z)),
+        }
+    }
+
+    fn overlaps(&self, o: &Self) -> bool {
+        self.min.x <= o.max.x
+            && o.min.x <= self.max.x
+            && self.min.y <= o.max.y
+            && o.min.y <= self.max.y
+            && self.min.z <= o.max.z
+            && o.min.z <= self.max.z
+    }
+}
+
+/// The earliest contact of a sweep with a [`Scene`]: a plain `Copy` struct.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SceneHit<S> {
+    /// Fraction of the path travelled at first contact, in `[0, 1)`.
+    pub alpha: S,
+    /// Unit contact normal; where several triangles are touched at the same alpha (within the
+    /// scalar's resolution), the normalised average of their normals.
+    pub normal: Vec3<S>,
+    /// The feature touched on triangle `index` (the earliest of simultaneous contacts).
+    pub contact: Contact,
+    /// Index of the touched triangle, in the order pushed.
+    pub index: usize,
+}
+
+/// Up to `N` prepared triangles, stored inline (no allocation), queried together.
+///
+/// Each [`push`](Self::push) validates and standardizes the triangle and updates the active
+/// edges of it and its neighbours: an edge shared (same two vertices, opposite winding) with a
+/// neighbour that continues the surface flat (normals within about 1e-3 rad) or folds towards
+/// the front (a valley) can never be touched first, so it is switched off; ridges and open
+/// edges stay active. A vertex stays active while one of the triangle's two edges at it does.
+/// A ball rolling over a tiled floor therefore only ever sees the floor's normal.
+///
+/// Queries stream through a compact array of bounding boxes first; only triangles whose box
+/// meets the sweep's are tested in full.
+///
+/// ```
+/// use ballcast::{Contact, Scene, Sweep, Triangle, Vec3};
+/// let v = Vec3::new;
+/// let mut floor: Scene<f32, 8> = Scene::new();
+/// // Two triangles tiling a square floor, facing +y, sharing the edge (0,0,0)-(2,0,2).
+/// floor.push(Triangle::new(v(0.0, 0.0, 0.0), v(0.0, 0.0, 2.0), v(2.0, 0.0, 2.0)))?;
+/// floor.push(Triangle::new(v(0.0, 0.0, 0.0), v(2.0, 0.0, 2.0), v(2.0, 0.0, 0.0)))?;
+/// // The shared diagonal is inactive in both.
+/// assert!(!floor.triangle(0).unwrap().features().edge(2));
+/// let hit = floor.cast(&Sweep::new(v(1.0, 3.0, 1.0), v(1.0, -1.0, 1.0), 0.5)?).unwrap();
+/// assert_eq!((hit.alpha, hit.normal, hit.contact), (0.625, v(0.0, 1.0, 0.0), Contact::Face));
+/// # Ok::<(), ballcast::Error>(())
+/// ```
+#[derive(Clone, Debug)]
+pub struct Scene<S: Scalar, const N: usize> {
+    bounds: Vec<Bounds<S>, N>,
+    triangles: Vec<StandardTriangle<S>, N>,
+    sources: Vec<Triangle<S>, N>,
+}
+
+impl<S: Scalar, const N: usize> Default for Scene<S, N> {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl<S: Scalar, const N: usize> Scene<S, N> {
+    /// An empty scene.
+    pub const fn new() -> Self {
+        Self {
+            bounds: Vec::new(),
+            triangles: Vec::new(),
+            sources: Vec::new(),
+        }
+    }
+
+    /// Number of triangles.
+    pub fn len(&self) -> usize {
+        self.triangles.len()
+    }
+
+    /// Whether the scene holds no triangle.
+    pub fn is_empty(&self) -> bool {
+        self.triangles.is_empty()
+    }
+
+    /// The prepared triangle at `index`.
+    pub fn triangle(&self, index: usize) -> Option<&StandardTriangle<S>> {
+        self.triangles.get(index)
+    }
+
+    /// Adds a one-sided triangle and returns its index.
+    ///
+    /// Errors: those of [`StandardTriangle::new`], or [`Error::Full`] at capacity `N`.
+    pub fn push(&mut self, t: Triangle<S>) -> Result<usize, Error> {
+        self.push_prepared(t, StandardTriangle::new(&t)?)
+    }
+
+    /// Adds a triangle that stops balls from both sides; edges are still deactivated against
+    /// flat neighbours only, since a valley on one side is a ridge on the other.
+    pub fn push_two_sided(&mut self, t: Triangle<S>) -> Result<usize, Error> {
+        self.push_prepared(t, StandardTriangle::new(&t)?.with_two_sided(true))
+    }
+
+    fn push_prepared(&mut self, t: Triangle<S>, st: StandardTriangle<S>) -> Result<usize, Error> {
+        if self.triangles.is_full() {
+            return Err(Error::Full);
+        }
+        let index = self.triangles.len();
+        let bounds = Bounds::of(&[t.v0, t.v1, t.v2], S::ZERO);
+        // Capacity was checked: none of these can fail.
+        let _ = (
+            self.bounds.push(bounds),
+            self.triangles.push(st),
+            self.sources.push(t),
+        );
+        for other in 0..index {
+            self.link(index, other);
+        }
+        Ok(index)
+    }
+
+    /// Switches off the edges `a` and `b` share where the surface is flat or a valley there.
+    fn link(&mut self, a: usize, b: usize) {
+        let (ta, tb) = (self.sources[a].vertices(), self.sources[b].vertices());
+        for i in 0..3 {
+            for j in 0..3 {
+                let shared = ta[i] == tb[(j + 1) % 3] && ta[(i + 1) % 3] == tb[j];
+                if shared && self.hides(a, b, tb[(j + 2) % 3]) {
+                    self.deactivate(a, i);
+                    self.deactivate(b, j);
+                }
+            }
+        }
+    }
+
+    /// Whether, across an edge shared by triangles `a` and `b` (whose vertex off the edge is
+    /// `apex`), the surface continues flat or folds towards the front of both.
+    fn hides(&self, a: usize, b: usize, apex: Vec3<S>) -> bool {
+        let (ta, tb) = (&self.triangles[a], &self.triangles[b]);
+        let diff = ta.normal() - tb.normal();
+        let tol = S::from_f64(1.0 / 1024.0);
+        let flat = diff.x.abs() <= tol && diff.y.abs() <= tol && diff.z.abs() <= tol;
+        let one_sided = !ta.is_two_sided() && !tb.is_two_sided();
+        // `apex` lies in range (it was validated), so `to_standard` cannot fail.
+        let valley = ta.to_standard(apex).is_ok_and(|p| p.y > S::ZERO);
+        flat || (one_sided && valley)
+    }
+
+    fn deactivate(&mut self, t: usize, edge: usize) {
+        let tri = &mut self.triangles[t];
+        let f = tri.features().with_edge(edge, false);
+        // A vertex stays active while either of this triangle's edges through it is.
+        let f = (0..3).fold(f, |f, v| f.with_vertex(v, f.edge(v) || f.edge((v + 2) % 3)));
+        *tri = tri.with_features(f);
+    }
+
+    /// The earliest contact of the sweep with any triangle, or `None`.
+    ///
+    /// Contacts within four steps of the scalar's resolution of the earliest alpha are merged:
+    /// their normals are averaged, so a ball landing on a seam gets one well-defined normal.
+    pub fn cast(&self, sweep: &Sweep<S>) -> Option<SceneHit<S>> {
+        let reach = Bounds::of(&[sweep.p0(), sweep.p1()], sweep.radius());
+        let tie = S::EPSILON + S::EPSILON + S::EPSILON + S::EPSILON;
+        let mut best: Option<(SceneHit<S>, Vec3<S>, bool)> = None;
+        for (index, b) in self.bounds.iter().enumerate() {
+            if !b.overlaps(&reach) {
+                continue;
+            }
+            let Some(Hit {
+                alpha,
+                normal,
+                contact,
+            }) = self.triangles[index].cast(sweep)
+            else {
+                continue;
+            };
+            let hit = SceneHit {
+                alpha,
+                normal,
+                contact,
+                index,
+            };
+            best = match best {
+                Some((first, sum, _))
+                    if alpha >= first.alpha - tie && alpha <= first.alpha + tie =>
+                {
+                    let first = if alpha < first.alpha { hit } else { first };
+                    Some((first, sum + normal, true))
+                }
+                Some(b) if alpha > b.0.alpha => Some(b),
+                _ => Some((hit, normal, false)),
+            };
+        }
+        let (mut hit, sum, merged) = best?;
+        if merged {
+            hit.normal = unit(sum).unwrap_or(hit.normal);
+        }
+        Some(hit)
+    }
+}

@@ -1,0 +1,105 @@
+//! Collision response: move a ball through a [`Scene`], sliding along what it touches.
+
+use crate::contact::unit;
+use crate::{Error, Scalar, Scene, SceneHit, Sweep, Vec3, vec3::cross};
+use heapless::Vec;
+
+/// At most this many sweeps per call: each contact costs one, and a ball pressed into a corner
+/// of three planes has nowhere left to go after three.
+pub const MAX_SLIDES: usize = 4;
+
+/// The outcome of [`move_and_slide`]: a plain `Copy` struct.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Slide<S> {
+    /// Where the ball's centre ends.
+    pub position: Vec3<S>,
+    /// The part of the requested displacement not travelled: what the contacts took away.
+    pub blocked: Vec3<S>,
+    /// The contacts met, in order (at most [`MAX_SLIDES`]).
+    pub contacts: [Option<SceneHit<S>>; MAX_SLIDES],
+}
+
+impl<S: Scalar> Slide<S> {
+    /// Removes from `velocity` every component pointing into a contact's normal, in contact
+    /// order: what a caller does to its velocity after the move. Never lengthens it by more
+    /// than rounding.
+    pub fn clip(&self, mut velocity: Vec3<S>) -> Vec3<S> {
+        for hit in self.contacts.iter().flatten() {
+            velocity = remove_into(velocity, hit.normal);
+        }
+        velocity
+    }
+}
+
+/// `v` without its component into `n` (unit): unchanged if `v` does not point into `n`.
+fn remove_into<S: Scalar>(v: Vec3<S>, n: Vec3<S>) -> Vec3<S> {
+    let into = v.dot(n);
+    if into < S::ZERO { v - n * into } else { v }
+}
+
+/// Moves a ball of `radius` from `position` by `displacement` through `scene`: it travels to
+/// the first contact, loses the part of the remaining motion that points into the contact
+/// normal, and continues with the rest, for at most [`MAX_SLIDES`] sweeps.
+///
+/// Where the new direction would run into a previous contact's plane, the motion follows the
+/// crease of the two planes; against a third plane it stops. The motion's length never grows,
+/// so a slide cannot gain speed. A ball that starts overlapping geometry is not pushed out, but
+/// cannot move further in (see [`StandardTriangle::cast`](crate::StandardTriangle::cast)).
+///
+/// Errors: those of [`Sweep::new`] (the ball or its target outside the safe range).
+///
+/// ```
+/// use ballcast::{Scene, Triangle, Vec3, move_and_slide};
+/// let v = Vec3::new;
+/// let mut s: Scene<f64, 4> = Scene::new();
+/// s.push(Triangle::new(v(-9.0, 0.0, -9.0), v(-9.0, 0.0, 9.0), v(9.0, 0.0, 0.0)))?;
+/// // Thrown down and sideways at a floor: it stops at the floor and slides the rest sideways.
+/// let out = move_and_slide(&s, v(0.0, 1.0, 0.0), v(2.0, -2.0, 0.0), 0.5)?;
+/// assert_eq!(out.position, v(2.0, 0.5, 0.0));
+/// assert_eq!(out.blocked, v(0.0, -1.5, 0.0));
+/// # Ok::<(), ballcast::Error>(())
+/// ```
+pub fn move_and_slide<S: Scalar, const N: usize>(
+    scene: &Scene<S, N>,
+    position: Vec3<S>,
+    displacement: Vec3<S>,
+    radius: S,
+) -> Result<Slide<S>, Error> {
+    let zero = Vec3::new(S::ZERO, S::ZERO, S::ZERO);
+    let mut out = Slide {
+        position,
+        blocked: zero,
+        contacts: [None; MAX_SLIDES],
+    };
+    let mut rest = displacement;
+    let mut planes: Vec<Vec3<S>, MAX_SLIDES> = Vec::new();
+    for slot in out.contacts.iter_mut() {
+        if rest == zero {
+            break;
+        }
+        let sweep = Sweep::new(out.position, out.position + rest, radius)?;
+        let Some(hit) = scene.cast(&sweep) else {
+            out.position = out.position + rest;
+            rest = zero;
+            break;
+        };
+        *slot = Some(hit);
+        out.position = out.position + rest * hit.alpha;
+        let left = rest * (S::ONE - hit.alpha);
+        rest = remove_into(left, hit.normal);
+        // Where the slide runs back into an earlier plane, follow the crease of the two.
+        for p in planes.iter() {
+            if rest.dot(*p) < S::ZERO {
+                rest = match unit(cross(*p, hit.normal)) {
+                    Some(c) if planes.len() < 2 => c * rest.dot(c),
+                    _ => zero,
+                };
+                break;
+            }
+        }
+        out.blocked = out.blocked + (left - rest);
+        let _ = planes.push(hit.normal);
+    }
+    out.blocked = out.blocked + rest;
+    Ok(out)
+}
