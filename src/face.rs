@@ -12,7 +12,8 @@ use core::cmp::Ordering;
 /// The standardized face collision algorithm: the fraction `beta` of the path from `p0` to `p1`
 /// at which the ball of radius `r` touches the front face, or `None` (the notes' alpha = 1).
 ///
-/// With `y0`, `y1` the heights of the start and end:
+/// With `y0`, `y1` the heights of the start and end (see `face_point`, which computes `beta`
+/// and `q'`, and `contains`, the half-plane tests):
 /// - no hit if `y0 < r` (the ball starts in or below the face's plane) or `y0 == y1` (it moves
 ///   parallel to the plane), nor if `y1 > y0` (it moves away from the front);
 /// - else `beta = (r - y0) / (y1 - y0)`, `q = p0 + beta (p1 - p0)`, `q' = (xq, 0, zq)`;
@@ -29,6 +30,13 @@ use core::cmp::Ordering;
 /// # Ok::<(), ballcast::Error>(())
 /// ```
 pub fn standard_face<S: Scalar>(tri: &StandardTriangle<S>, s: &StandardSweep<S>) -> Option<S> {
+    let (beta, xq, zq) = face_point(s)?;
+    (contains(tri, xq, zq) && beta >= S::ZERO && beta < S::ONE).then_some(beta)
+}
+
+/// The first half of the seed's test: `beta` and `q' = (xq, 0, zq)`, if the ball reaches height
+/// `r` within the path while moving towards the front.
+pub(crate) fn face_point<S: Scalar>(s: &StandardSweep<S>) -> Option<(S, S, S)> {
     let (p0, p1, r) = (s.p0, s.p1, s.radius);
     let (y0, y1) = (p0.y, p1.y);
 
@@ -43,8 +51,7 @@ pub fn standard_face<S: Scalar>(tri: &StandardTriangle<S>, s: &StandardSweep<S>)
     let beta = S::ratio(r - y0, y1 - y0);
     let xq = p0.x + beta * (p1.x - p0.x);
     let zq = p0.z + beta * (p1.z - p0.z);
-
-    (contains(tri, xq, zq) && beta >= S::ZERO && beta < S::ONE).then_some(beta)
+    Some((beta, xq, zq))
 }
 
 /// Whether `q' = (xq, 0, zq)` is inside the standardized triangle or on its boundary: in with
