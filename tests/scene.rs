@@ -4,7 +4,7 @@
 
 mod common;
 
-use ballcast::{Contact, Scalar, Scene, StandardTriangle, Sweep, Triangle, Vec3, move_and_slide};
+use ballcast::{Contact, Scalar, Scene, StandardTriangle, Sweep, Triangle, move_and_slide};
 use common::{P, Rng, Tolerance, back, v};
 use fixed::types::{I16F16, I32F32};
 
