@@ -172,7 +172,8 @@ impl<S: Scalar> StandardTriangle<S> {
             return None;
         }
         // The face is reached at height r, before any edge or vertex can be.
-        if let Some((beta, xq, zq)) = face_point(s)
+        let face = face_point(s);
+        if let Some((beta, xq, zq)) = face
             && beta < S::ONE
             && (contains(self, xq, zq) || self.within_seams(xq, zq, r))
         {
@@ -181,7 +182,10 @@ impl<S: Scalar> StandardTriangle<S> {
         if p0.y < r && contains(self, p0.x, p0.z) {
             return Some((S::ZERO, None, Contact::Face));
         }
-        if r == S::ZERO || !self.near_path(p0, p1, r) {
+        // Edges and vertices can only be touched once the centre is below height r: from q'
+        // (or the start, if already there) to the end.
+        let band = face.map_or(p0, |(_, xq, zq)| Vec3::new(xq, r, zq));
+        if r == S::ZERO || !self.near_path(band, p1, r) || self.beyond_an_edge(band, p1, r) {
             return None;
         }
         let mut best: Option<Touch<S>> = None;
@@ -191,7 +195,7 @@ impl<S: Scalar> StandardTriangle<S> {
             }
         }
         if (0..3).any(|i| self.features.vertex(i)) {
-            let motion = (S::length(d), S::unit_normalize(S::scaled(d)?));
+            let motion = S::direction(d)?;
             // Where an edge's contact lies next to its vertex, the two arrive together; the
             // edge's normal is the right one, so a vertex must be earlier by more than rounding.
             let tie = S::EPSILON + S::EPSILON + S::EPSILON + S::EPSILON;
@@ -228,21 +232,37 @@ impl<S: Scalar> StandardTriangle<S> {
         })
     }
 
-    /// Whether the path's bounding box, grown by `r`, meets the triangle's.
-    fn near_path(&self, p0: Vec3<S>, p1: Vec3<S>, r: S) -> bool {
+    /// Whether the bounding box of the segment from `a` to `b`, grown by `r`, meets the
+    /// triangle's (in the x–z plane).
+    fn near_path(&self, a: Vec3<S>, b: Vec3<S>, r: S) -> bool {
         let (x1, z1, x2) = self.shape();
         let lo = |a: S, b: S| if a < b { a } else { b };
         let hi = |a: S, b: S| if a < b { b } else { a };
         let (xmin, xmax) = (lo(S::ZERO, x1), hi(x1, x2));
-        lo(p0.x, p1.x) - r <= xmax
-            && hi(p0.x, p1.x) + r >= xmin
-            && lo(p0.z, p1.z) - r <= z1
-            && hi(p0.z, p1.z) + r >= S::ZERO
+        lo(a.x, b.x) - r <= xmax
+            && hi(a.x, b.x) + r >= xmin
+            && lo(a.z, b.z) - r <= z1
+            && hi(a.z, b.z) + r >= S::ZERO
+    }
+
+    /// Whether the segment from `a` to `b` stays more than `r` outside one edge's line: the
+    /// whole triangle lies inside that line, so nothing of it can be touched.
+    fn beyond_an_edge(&self, a: Vec3<S>, b: Vec3<S>, r: S) -> bool {
+        (0..3).any(|i| {
+            let (c, out) = (self.corner(i), self.edges[i].out);
+            S::dot_unit(a - c, out) > r && S::dot_unit(b - c, out) > r
+        })
     }
 
     /// Vertex `i` in the standard frame.
     fn corner(&self, i: usize) -> Vec3<S> {
-        self.vertices()[i]
+        let (x1, z1, x2) = self.shape();
+        let z = S::ZERO;
+        match i {
+            0 => Vec3::new(z, z, z),
+            1 => Vec3::new(x1, z, z1),
+            _ => Vec3::new(x2, z, z),
+        }
     }
 
     /// First contact with the interior of edge `i`, from vertex `i` to vertex `i + 1`.
@@ -261,7 +281,7 @@ impl<S: Scalar> StandardTriangle<S> {
         // Across the edge the problem is planar: the centre moves from (w0, y0) along (dw, dy).
         let z = S::ZERO;
         let across = Vec3::new(dw, d.y, z);
-        let motion = (S::length(across), S::unit_normalize(S::scaled(across)?));
+        let motion = S::direction(across)?;
         let beta = first_touch(Vec3::new(w0, p0.y, z), motion, r)?;
         let (u, w, y) = (u0 + beta * du, w0 + beta * dw, p0.y + beta * d.y);
         if !(u > z && u < e.len && y >= z) {
@@ -307,11 +327,7 @@ fn first_touch<S: Scalar>(q0: Vec3<S>, (len, dir): (S, Vec3<S::Unit>), r: S) -> 
         S::dot_unit(Vec3::new(q0.z, -q0.x, S::ZERO), Vec3::new(dir.x, dir.z, z)),
         S::dot_unit(Vec3::new(q0.x, -q0.y, S::ZERO), Vec3::new(dir.y, dir.x, z)),
     );
-    let h = S::length(c);
-    if h > r {
-        return None;
-    }
-    let t = -s - S::sqrt_mul(r - h, r + h);
+    let t = -s - S::chord(r, c)?;
     if t < S::ZERO {
         return Some(S::ZERO);
     }
@@ -328,5 +344,5 @@ fn earlier<S: Scalar>(a: Option<Touch<S>>, b: Option<Touch<S>>) -> Option<Touch<
 
 /// `v` scaled to unit length in `S`; `None` for the zero vector.
 pub(crate) fn unit<S: Scalar>(v: Vec3<S>) -> Option<Vec3<S>> {
-    Some(S::unit_normalize(S::scaled(v)?).map(S::unit_to_scalar))
+    S::direction(v).map(|(_, d)| d.map(S::unit_to_scalar))
 }

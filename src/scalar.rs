@@ -100,11 +100,14 @@ pub(crate) mod sealed {
         fn ratio(n: Self, d: Self) -> Self;
         /// `s * u` rounded once.
         fn mul_unit(s: Self, u: Self::Unit) -> Self;
-        /// The Euclidean length of `v`, without overflow for components within `8 * LIMIT`
-        /// (fixed-point: exact integer square root of the exact sum of squares, rounded down).
-        fn length(v: Vec3<Self>) -> Self;
-        /// `sqrt(a * b)` for `a, b >= 0` within `2 * LIMIT`; the product never leaves the wide type.
-        fn sqrt_mul(a: Self, b: Self) -> Self;
+        /// The length of `v` and its unit direction; `None` for the zero vector. Needs
+        /// components within `8 * LIMIT` (fixed-point: the length is the exact integer square root
+        /// of the exact sum of squares, rounded down).
+        fn direction(v: Vec3<Self>) -> Option<(Self, Vec3<Self::Unit>)>;
+        /// `sqrt(r² - |c|²)`, the half chord at distance `|c|` from a sphere's centre, or `None`
+        /// when `|c| > r`. Needs `r` within `LIMIT` and `c` within `8 * LIMIT`; fixed-point
+        /// forms the squares exactly in the wide type.
+        fn chord(r: Self, c: Vec3<Self>) -> Option<Self>;
         /// A unit-vector component rounded to `Self`.
         fn unit_to_scalar(u: Self::Unit) -> Self;
     }
@@ -187,18 +190,20 @@ macro_rules! float_scalar {
             fn mul_unit(s: Self, u: Self) -> Self {
                 s * u
             }
-            fn length(v: Vec3<Self>) -> Self {
-                // Scaled by the largest component so squares can neither overflow nor underflow.
-                let m = largest(v.x.abs(), v.y.abs(), v.z.abs());
-                if m == 0.0 {
-                    return 0.0;
+            #[inline]
+            fn direction(v: Vec3<Self>) -> Option<(Self, Vec3<Self>)> {
+                // Components within 8 * LIMIT square to at most 2^54 (f32) or 2^112 (f64), far from
+                // overflow, so no scaling is needed; a vector below ~1e-19 (f32) has no direction.
+                let len = $sqrt(v.dot(v));
+                if len.is_nan() || len <= 0.0 {
+                    return None;
                 }
-                let s = v.map(|c| c / m);
-                m * $sqrt(s.dot(s))
+                Some((len, v * (1.0 / len)))
             }
             #[inline]
-            fn sqrt_mul(a: Self, b: Self) -> Self {
-                $sqrt(a * b)
+            fn chord(r: Self, c: Vec3<Self>) -> Option<Self> {
+                let k2 = r * r - c.dot(c);
+                (k2 >= 0.0).then(|| $sqrt(k2))
             }
             #[inline]
             fn unit_to_scalar(u: Self) -> Self {
@@ -334,15 +339,23 @@ macro_rules! fixed_scalar {
                 let p = s.to_bits() as $wide * u.to_bits() as $wide;
                 <$t>::from_bits(round_shift!(p, $ufrac) as $bits)
             }
-            fn length(v: Vec3<Self>) -> Self {
+            fn direction(v: Vec3<Self>) -> Option<(Self, Vec3<$unit>)> {
                 // Components below 2^(BITS-1) square to below 2^(2 BITS - 2): three fit unsigned.
                 let u = v.map(|c| (c.to_bits() as $wide).unsigned_abs());
-                <$t>::from_bits((u.x * u.x + u.y * u.y + u.z * u.z).isqrt() as $bits)
+                let len = (u.x * u.x + u.y * u.y + u.z * u.z).isqrt();
+                Some((
+                    <$t>::from_bits(len as $bits),
+                    Self::unit_normalize(Self::scaled(v)?),
+                ))
             }
-            fn sqrt_mul(a: Self, b: Self) -> Self {
-                let (a, b) = (a.to_bits().max(0) as $wide, b.to_bits().max(0) as $wide);
-                // Fractional bits: 2F in the product, F in its square root.
-                <$t>::from_bits((a * b).unsigned_abs().isqrt() as $bits)
+            fn chord(r: Self, c: Vec3<Self>) -> Option<Self> {
+                if c.x.abs() > r || c.y.abs() > r || c.z.abs() > r {
+                    return None;
+                }
+                // Every square is below r² <= LIMIT², exact with 2F fractional bits.
+                let sq = |a: $t| (a.to_bits() as $wide) * (a.to_bits() as $wide);
+                let k2 = sq(r) - sq(c.x) - sq(c.y) - sq(c.z);
+                (k2 >= 0).then(|| <$t>::from_bits(k2.unsigned_abs().isqrt() as $bits))
             }
             #[inline]
             fn unit_to_scalar(u: $unit) -> Self {

@@ -134,14 +134,10 @@ impl<S: Scalar> StandardTriangle<S> {
             len: z,
         }; 3];
         for (i, edge) in edges.iter_mut().enumerate() {
-            let d = corners[(i + 1) % 3] - corners[i];
-            let dir = S::unit_normalize(S::scaled(d).ok_or(Error::Degenerate)?);
+            let (len, dir) =
+                S::direction(corners[(i + 1) % 3] - corners[i]).ok_or(Error::Degenerate)?;
             let out = Vec3::new(-dir.z, S::UNIT_ZERO, dir.x);
-            *edge = Edge {
-                dir,
-                out,
-                len: S::length(d),
-            };
+            *edge = Edge { dir, out, len };
         }
         Ok(Self {
             origin: t.v0,
