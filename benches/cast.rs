@@ -11,6 +11,8 @@ use std::hint::black_box;
 
 const SWEEPS: usize = 64;
 type P = [f64; 3];
+/// A ball path: start, end, radius.
+type Path = (P, P, f64);
 
 /// A deterministic generator (xorshift64), fixed seed.
 struct Rng(u64);
@@ -27,7 +29,7 @@ const TRIANGLE: [P; 3] = [[0.3, 0.2, 0.1], [1.0, 0.4, 6.5], [7.0, -0.3, 0.5]];
 
 /// Sweeps from above the triangle down through its plane: about half hit the face, and many
 /// of the rest pass close to an edge or vertex.
-fn single_sweeps() -> Vec<(P, P, f64)> {
+fn single_sweeps() -> Vec<Path> {
     let mut g = Rng(0x9E37_79B9_7F4A_7C15);
     (0..SWEEPS)
         .map(|_| {
@@ -40,7 +42,7 @@ fn single_sweeps() -> Vec<(P, P, f64)> {
 
 /// A room 16 × 8 × 16 facing inwards, its six walls tiled, the first `n` triangles of it (the
 /// last walls may be partly open), and short ball moves inside it, as a physics step makes.
-fn room(n: usize) -> (Vec<[P; 3]>, Vec<(P, P, f64)>) {
+fn room(n: usize) -> (Vec<[P; 3]>, Vec<Path>) {
     let per_side = (n as f64 / 12.0).sqrt().ceil() as usize;
     let mut tris = Vec::new();
     let mut quad = |o: P, a: P, b: P| {
@@ -82,7 +84,7 @@ fn v<S: Scalar>(p: P) -> Vec3<S> {
     Vec3::new(S::from_f64(p[0]), S::from_f64(p[1]), S::from_f64(p[2]))
 }
 
-fn sweeps<S: Scalar>(raw: &[(P, P, f64)]) -> Vec<Sweep<S>> {
+fn sweeps<S: Scalar>(raw: &[Path]) -> Vec<Sweep<S>> {
     raw.iter()
         .map(|&(a, b, r)| Sweep::new(v(a), v(b), S::from_f64(r)).unwrap())
         .collect()
