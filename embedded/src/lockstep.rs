@@ -152,10 +152,10 @@ pub fn step<S: Scalar>(
         // The first contact; ties go to the earlier triangle.
         let mut first: Option<Hit<S>> = None;
         for t in tris {
-            if let Some(h) = t.face_collision(&sweep) {
-                if first.is_none_or(|f| h.alpha < f.alpha) {
-                    first = Some(h);
-                }
+            if let Some(h) = t.face_collision(&sweep)
+                && first.is_none_or(|f| h.alpha < f.alpha)
+            {
+                first = Some(h);
             }
         }
         let Some(hit) = first else {

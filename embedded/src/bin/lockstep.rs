@@ -18,5 +18,7 @@ fn main() -> ! {
         hprintln!("{} {:016x}", name, o.hash);
     });
     debug::exit(debug::EXIT_SUCCESS);
-    loop {}
+    loop {
+        cortex_m::asm::wfi();
+    }
 }
