@@ -35,7 +35,7 @@ trap 'rm -rf "$work"' EXIT
 
 for t in "${targets[@]}"; do
     cargo build --quiet --release --target "$t" --bin counts
-    elf="target/$t/release/counts"
+    elf="${CARGO_TARGET_DIR:-target}/$t/release/counts"
     # The program's own output (semihosting) goes to a file, the instruction log through awk.
     # shellcheck disable=SC2086 # machine options are words on purpose
     timeout 120 qemu-system-arm ${machine[$t]} -nographic \
