@@ -1,0 +1,61 @@
+#!/usr/bin/env bash
+# Microcontroller CI: the lockstep scene on Cortex-M0 (thumbv6m-none-eabi, soft float) and
+# Cortex-M4F (thumbv7em-none-eabihf) under qemu-system-arm with semihosting must print every
+# scalar's trajectory hash bit for bit as the host does; then the face test's instruction counts
+# and code size per scalar on both (embedded/count.sh). Run by .ci/run after `cargo test`.
+#
+#   bash .ci/embedded.sh
+#
+# Installs what it needs (qemu-system-arm from Debian's packages, the two rustup targets,
+# llvm-tools). Every QEMU run is bounded by `timeout 120`.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+export CARGO_BUILD_JOBS="${CARGO_BUILD_JOBS:-1}"
+
+if ! command -v qemu-system-arm >/dev/null; then
+    sudo=""
+    if [ "$(id -u)" -ne 0 ]; then sudo="sudo"; fi
+    $sudo apt-get update -qq
+    DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends qemu-system-arm
+fi
+rustup target add thumbv6m-none-eabi thumbv7em-none-eabihf
+rustup component add llvm-tools
+
+work="$(mktemp -d)"
+trap 'rm -rf "$work"' EXIT
+
+echo "== lockstep on the host"
+# The pinned hashes (tests/lockstep.rs) hold in release here; .ci/run's `cargo test` checks the
+# same constants in debug, so debug and release agree without building the dev-dependencies twice.
+cargo test --quiet --release --test lockstep
+cargo run --quiet --release --example lockstep >"$work/host.txt" 2>/dev/null
+cat "$work/host.txt"
+if [ "$(wc -l <"$work/host.txt")" -ne 4 ]; then
+    echo "FAIL: the host example should print four scalars" >&2
+    exit 1
+fi
+
+failed=0
+for target in thumbv6m-none-eabi thumbv7em-none-eabihf; do
+    echo "== lockstep on $target under QEMU"
+    (cd embedded && cargo build --quiet --release --target "$target" --bin lockstep)
+    # The runner (embedded/.cargo/config.toml) is QEMU; the build above makes this a pure run.
+    (cd embedded && timeout 120 cargo run --quiet --release --target "$target" --bin lockstep) \
+        >"$work/$target.txt"
+    while read -r name hash; do
+        got="$(awk -v n="$name" '$1 == n { print $2 }' "$work/$target.txt")"
+        if [ "$got" = "$hash" ]; then
+            echo "$name $hash matches the host"
+        else
+            echo "FAIL: $name on $target: ${got:-nothing} (host $hash)" >&2
+            failed=1
+        fi
+    done <"$work/host.txt"
+done
+if [ "$failed" -ne 0 ]; then
+    exit 1
+fi
+echo "lockstep: every scalar's hash equals the host's on thumbv6m-none-eabi and thumbv7em-none-eabihf"
+
+echo "== face test: instructions and size per scalar"
+bash embedded/count.sh
