@@ -62,10 +62,10 @@ pub use error::Error;
 pub use face::standard_face;
 pub use hit::{Contact, Hit};
 pub use scalar::Scalar;
-pub use scene::{Scene, SceneHit};
+pub use scene::{Geometry, Scene, SceneHit};
 pub use slide::{MAX_SLIDES, Slide, move_and_slide};
 pub use sweep::{StandardSweep, Sweep};
-pub use triangle::{StandardTriangle, Triangle};
+pub use triangle::{Edge, Parts, StandardTriangle, Triangle};
 pub use vec3::Vec3;
 
 // The README's examples run as doctests.

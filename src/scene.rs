@@ -187,41 +187,73 @@ impl<S: Scalar, const N: usize> Scene<S, N> {
     /// their normals are averaged, so a ball landing on a seam gets one well-defined normal.
     pub fn cast(&self, sweep: &Sweep<S>) -> Option<SceneHit<S>> {
         let reach = Bounds::of(&[sweep.p0(), sweep.p1()], sweep.radius());
-        let tie = S::EPSILON + S::EPSILON + S::EPSILON + S::EPSILON;
-        let mut best: Option<(SceneHit<S>, Vec3<S>, bool)> = None;
-        for (index, b) in self.bounds.iter().enumerate() {
-            if !b.overlaps(&reach) {
-                continue;
-            }
-            let Some(Hit {
-                alpha,
-                normal,
-                contact,
-            }) = self.triangles[index].cast(sweep)
-            else {
-                continue;
-            };
-            let hit = SceneHit {
-                alpha,
-                normal,
-                contact,
-                index,
-            };
-            best = match best {
-                Some((first, sum, _))
-                    if alpha >= first.alpha - tie && alpha <= first.alpha + tie =>
-                {
-                    let first = if alpha < first.alpha { hit } else { first };
-                    Some((first, sum + normal, true))
-                }
-                Some(b) if alpha > b.0.alpha => Some(b),
-                _ => Some((hit, normal, false)),
-            };
-        }
-        let (mut hit, sum, merged) = best?;
-        if merged {
-            hit.normal = unit(sum).unwrap_or(hit.normal);
-        }
-        Some(hit)
+        earliest(
+            self.bounds
+                .iter()
+                .zip(self.triangles.iter())
+                .enumerate()
+                .filter(|(_, (b, _))| b.overlaps(&reach))
+                .filter_map(|(i, (_, t))| Some((i, t.cast(sweep)?))),
+        )
     }
+}
+
+/// Anything a ball can be cast against: a [`Scene`], or a slice of prepared triangles such as
+/// a `static` baked into flash with [`StandardTriangle::from_parts`].
+pub trait Geometry<S: Scalar> {
+    /// The earliest contact along the sweep, simultaneous contacts merged as in [`Scene::cast`].
+    fn cast(&self, sweep: &Sweep<S>) -> Option<SceneHit<S>>;
+}
+
+impl<S: Scalar, const N: usize> Geometry<S> for Scene<S, N> {
+    fn cast(&self, sweep: &Sweep<S>) -> Option<SceneHit<S>> {
+        Scene::cast(self, sweep)
+    }
+}
+
+/// A slice has no bounding boxes to reject with, so every triangle is tested: fine for the
+/// small scenes firmware keeps in flash.
+impl<S: Scalar> Geometry<S> for [StandardTriangle<S>] {
+    fn cast(&self, sweep: &Sweep<S>) -> Option<SceneHit<S>> {
+        earliest(
+            self.iter()
+                .enumerate()
+                .filter_map(|(i, t)| Some((i, t.cast(sweep)?))),
+        )
+    }
+}
+
+/// The earliest of indexed hits, merging those within four steps of resolution of it.
+fn earliest<S: Scalar>(hits: impl Iterator<Item = (usize, Hit<S>)>) -> Option<SceneHit<S>> {
+    let tie = S::EPSILON + S::EPSILON + S::EPSILON + S::EPSILON;
+    let mut best: Option<(SceneHit<S>, Vec3<S>, bool)> = None;
+    for (
+        index,
+        Hit {
+            alpha,
+            normal,
+            contact,
+        },
+    ) in hits
+    {
+        let hit = SceneHit {
+            alpha,
+            normal,
+            contact,
+            index,
+        };
+        best = match best {
+            Some((first, sum, _)) if alpha >= first.alpha - tie && alpha <= first.alpha + tie => {
+                let first = if alpha < first.alpha { hit } else { first };
+                Some((first, sum + normal, true))
+            }
+            Some(b) if alpha > b.0.alpha => Some(b),
+            _ => Some((hit, normal, false)),
+        };
+    }
+    let (mut hit, sum, merged) = best?;
+    if merged {
+        hit.normal = unit(sum).unwrap_or(hit.normal);
+    }
+    Some(hit)
 }

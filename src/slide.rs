@@ -1,7 +1,7 @@
 //! Collision response: move a ball through a [`Scene`], sliding along what it touches.
 
 use crate::contact::unit;
-use crate::{Error, Scalar, Scene, SceneHit, Sweep, Vec3, vec3::cross};
+use crate::{Error, Geometry, Scalar, SceneHit, Sweep, Vec3, vec3::cross};
 use heapless::Vec;
 
 /// At most this many sweeps per call: each contact costs one, and a ball pressed into a corner
@@ -37,7 +37,8 @@ fn remove_into<S: Scalar>(v: Vec3<S>, n: Vec3<S>) -> Vec3<S> {
     if into < S::ZERO { v - n * into } else { v }
 }
 
-/// Moves a ball of `radius` from `position` by `displacement` through `scene`: it travels to
+/// Moves a ball of `radius` from `position` by `displacement` through `scene` (a [`Scene`](crate::Scene)
+/// or a slice of prepared triangles): it travels to
 /// the first contact, loses the part of the remaining motion that points into the contact
 /// normal, and continues with the rest, for at most [`MAX_SLIDES`] sweeps.
 ///
@@ -63,8 +64,8 @@ fn remove_into<S: Scalar>(v: Vec3<S>, n: Vec3<S>) -> Vec3<S> {
 /// assert_eq!(out.blocked, v(0.0, -1.5, 0.0));
 /// # Ok::<(), ballcast::Error>(())
 /// ```
-pub fn move_and_slide<S: Scalar, const N: usize>(
-    scene: &Scene<S, N>,
+pub fn move_and_slide<S: Scalar, G: Geometry<S> + ?Sized>(
+    scene: &G,
     position: Vec3<S>,
     displacement: Vec3<S>,
     radius: S,

@@ -69,14 +69,68 @@ pub struct StandardTriangle<S: Scalar> {
     pub(crate) two_sided: bool,
 }
 
-/// An edge in the standard frame, precomputed: it starts at vertex `i` and runs along `dir`
-/// (a unit vector in the x–z plane) for `len`; `out` is the in-plane unit normal pointing away
-/// from the triangle.
+/// Everything a [`StandardTriangle`] holds, as plain data with public fields: the form in which
+/// a build step bakes prepared triangles into a `static`, so firmware keeps them in flash and
+/// does no work at start-up (see the `bake` example).
+///
+/// Parts are meant to come from [`StandardTriangle::to_parts`] on the same scalar type; the
+/// `const` [`StandardTriangle::from_parts`] trusts them, and [`Parts::verify`] checks them
+/// against the triangle they were made from (recomputing it, bit for bit).
+///
+/// ```
+/// use ballcast::{StandardTriangle, Triangle, Vec3};
+/// let t = Triangle::new(Vec3::new(0.0f32, 0.0, 0.0), Vec3::new(0.0, 0.0, 1.0), Vec3::new(1.0, 0.0, 0.0));
+/// let st = StandardTriangle::new(&t)?;
+/// let parts = st.to_parts();
+/// assert_eq!(StandardTriangle::from_parts(parts), st);
+/// assert_eq!(parts.verify(&t), Ok(()));
+/// # Ok::<(), ballcast::Error>(())
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub(crate) struct Edge<S: Scalar> {
-    pub(crate) dir: Vec3<S::Unit>,
-    pub(crate) out: Vec3<S::Unit>,
-    pub(crate) len: S,
+pub struct Parts<S: Scalar> {
+    /// World position of v0, the frame's origin.
+    pub origin: Vec3<S>,
+    /// The frame's axes `[x, y, z]` in world orientation (unit-vector precision).
+    pub axes: [Vec3<S::Unit>; 3],
+    /// Standardized `x1`, `z1`, `x2`.
+    pub shape: [S; 3],
+    /// Front unit normal in world orientation.
+    pub normal: Vec3<S>,
+    /// The edges, precomputed in the standard frame.
+    pub edges: [Edge<S>; 3],
+    /// [`Features::bits`] of the active edges and vertices.
+    pub features: u8,
+    /// Whether the back face also stops balls.
+    pub two_sided: bool,
+}
+
+impl<S: Scalar> Parts<S> {
+    /// Checks that these parts are exactly what [`StandardTriangle::new`] makes of `source`
+    /// (with the same features and sidedness): the way to validate a baked scene in a test.
+    ///
+    /// Errors: those of [`StandardTriangle::new`], or [`Error::Degenerate`] on any difference.
+    pub fn verify(&self, source: &Triangle<S>) -> Result<(), Error> {
+        let made = StandardTriangle::new(source)?
+            .with_features(Features::from_bits(self.features))
+            .with_two_sided(self.two_sided);
+        if made.to_parts() == *self {
+            Ok(())
+        } else {
+            Err(Error::Degenerate)
+        }
+    }
+}
+
+/// Edge `i` of a triangle in its standard frame, precomputed (part of [`Parts`]): it starts at
+/// vertex `i` and runs to vertex `i + 1`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Edge<S: Scalar> {
+    /// Unit direction, in the x–z plane.
+    pub dir: Vec3<S::Unit>,
+    /// Unit normal in the x–z plane pointing away from the triangle.
+    pub out: Vec3<S::Unit>,
+    /// Length.
+    pub len: S,
 }
 
 impl<S: Scalar> StandardTriangle<S> {
@@ -152,6 +206,41 @@ impl<S: Scalar> StandardTriangle<S> {
             features: Features::ALL,
             two_sided: false,
         })
+    }
+
+    /// The triangle as plain data, e.g. for baking into a `static` (see [`Parts`]).
+    pub fn to_parts(&self) -> Parts<S> {
+        Parts {
+            origin: self.origin,
+            axes: [self.ux, self.uy, self.uz],
+            shape: [self.x1, self.z1, self.x2],
+            normal: self.normal,
+            edges: self.edges,
+            features: self.features.bits(),
+            two_sided: self.two_sided,
+        }
+    }
+
+    /// Rebuilds a triangle from [`Parts`] made by [`to_parts`](Self::to_parts), in a `const`
+    /// context, so a prepared scene can live in a `static` (read-only memory) with no start-up
+    /// work. Nothing is re-validated here: parts from anywhere else may give wrong answers (never
+    /// undefined behaviour); check baked parts with [`Parts::verify`] in a test.
+    pub const fn from_parts(p: Parts<S>) -> Self {
+        let [ux, uy, uz] = p.axes;
+        let [x1, z1, x2] = p.shape;
+        Self {
+            origin: p.origin,
+            ux,
+            uy,
+            uz,
+            x1,
+            z1,
+            x2,
+            normal: p.normal,
+            edges: p.edges,
+            features: Features::from_bits(p.features),
+            two_sided: p.two_sided,
+        }
     }
 
     /// The front unit normal in world orientation (the frame's +y axis).
