@@ -12,10 +12,10 @@ use fixed::types::{I16F16, I32F32};
 use lockstep::{Bits, Fnv, Outcome, simulate};
 
 /// The pinned outcomes: hash, contacts, escapes.
-const F64: Outcome = pinned(0xd76b_86c7_4003_ef1c, 299);
-const F32: Outcome = pinned(0x1aac_9679_7632_9c52, 299);
-const I32F32_RUN: Outcome = pinned(0x86e6_5e2f_f59a_c248, 299);
-const I16F16_RUN: Outcome = pinned(0xfd4d_ca71_52bd_669f, 285);
+const F64: Outcome = pinned(0xbf2d_8bbc_07ef_318d, 8379);
+const F32: Outcome = pinned(0xc07f_a1cd_537d_ef64, 8379);
+const I32F32_RUN: Outcome = pinned(0xdc2d_3b61_f8ed_18d5, 8379);
+const I16F16_RUN: Outcome = pinned(0xe37a_eb9f_0b3c_6227, 8379);
 
 const fn pinned(hash: u64, contacts: u32) -> Outcome {
     Outcome {

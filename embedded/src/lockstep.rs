@@ -10,9 +10,8 @@
 //!   normals facing inwards) and a ramp of 4 triangles in one corner: 28 triangles.
 //! - Throws: [`THROWS`] throws of [`STEPS_PER_THROW`] steps at 60 Hz, each from a start and
 //!   velocity given by a fixed formula of the throw's index ([`throw`]): no randomness.
-//! - Step ([`step`]): gravity, then up to [`SUBSTEPS`] straight sweeps; at the first face hit the
-//!   ball is lifted [`SKIN`] off the face and its velocity reflected with restitution 0.8.
-//!   Kept small so `move_and_slide` can replace it.
+//! - Step ([`step`]): gravity, then `move_and_slide` through the scene (faces, edges and
+//!   vertices, sliding along what it touches), then the velocity is clipped by the contacts.
 //! - Hash: FNV-1a 64 over the raw bits of the ball's position (x, y, z) after every step, each
 //!   component as 8 little-endian bytes ([`Bits`]: the IEEE bits of `f32`/`f64`, the two's
 //!   complement bits of `I16F16`/`I32F32`).
@@ -20,7 +19,7 @@
 //!   its throw and counts as an escape; the run never panics once the scene is built.
 #![allow(dead_code)]
 
-use ballcast::{Error, Hit, Scalar, StandardTriangle, Sweep, Triangle, Vec3};
+use ballcast::{Error, Scalar, StandardTriangle, Triangle, Vec3, move_and_slide};
 use fixed::types::{I16F16, I32F32};
 
 /// Steps in a whole run, over all throws.
@@ -31,17 +30,10 @@ pub const THROWS: usize = 20;
 pub const STEPS_PER_THROW: usize = STEPS / THROWS;
 /// Triangles in the scene.
 pub const TRIANGLES: usize = 28;
-/// Sweeps per step at most: after each bounce the ball continues for the rest of the step.
-pub const SUBSTEPS: usize = 4;
 /// Step length, seconds.
 pub const DT: f64 = 1.0 / 60.0;
 /// The ball's radius.
 pub const RADIUS: f64 = 0.5;
-/// Fraction of the normal speed kept by a bounce.
-pub const RESTITUTION: f64 = 0.8;
-/// After a contact the ball is lifted this far off the face, so rounding never starts the next
-/// sweep inside the face's plane (the face test ignores balls that start there).
-pub const SKIN: f64 = 1e-3;
 /// Gravity along y.
 pub const GRAVITY: f64 = -9.81;
 
@@ -105,10 +97,6 @@ pub struct Params<S> {
     pub dt: S,
     /// The ball's radius.
     pub radius: S,
-    /// Lift off a face after a contact.
-    pub skin: S,
-    /// `1 + restitution`: the reflected share of the normal velocity.
-    pub bounce: S,
     /// Gravity vector.
     pub gravity: Vec3<S>,
 }
@@ -120,8 +108,6 @@ impl<S: Scalar> Params<S> {
         Self {
             dt: c(DT),
             radius: c(RADIUS),
-            skin: c(SKIN),
-            bounce: S::ONE + c(RESTITUTION),
             gravity: Vec3::new(S::ZERO, c(GRAVITY), S::ZERO),
         }
     }
@@ -136,38 +122,19 @@ pub struct Ball<S> {
     pub v: Vec3<S>,
 }
 
-/// One time step: gravity, then up to [`SUBSTEPS`] sweeps, bouncing off the first face hit.
-/// Returns the number of contacts; an error only if the ball leaves the scalar's range.
+/// One time step: gravity, then `move_and_slide` through the scene (full contacts: faces,
+/// edges, vertices), then the velocity loses whatever pointed into the contacts. Returns the
+/// number of contacts; an error only if the ball leaves the scalar's range.
 pub fn step<S: Scalar>(
     tris: &[StandardTriangle<S>],
     k: &Params<S>,
     ball: &mut Ball<S>,
 ) -> Result<u32, Error> {
     ball.v = ball.v + k.gravity * k.dt;
-    let mut remaining = S::ONE;
-    let mut contacts = 0;
-    for _ in 0..SUBSTEPS {
-        let target = ball.p + ball.v * (k.dt * remaining);
-        let sweep = Sweep::new(ball.p, target, k.radius)?;
-        // The first contact; ties go to the earlier triangle.
-        let mut first: Option<Hit<S>> = None;
-        for t in tris {
-            if let Some(h) = t.face_collision(&sweep)
-                && first.is_none_or(|f| h.alpha < f.alpha)
-            {
-                first = Some(h);
-            }
-        }
-        let Some(hit) = first else {
-            ball.p = target;
-            break;
-        };
-        contacts += 1;
-        ball.p = ball.p + (target - ball.p) * hit.alpha + hit.normal * k.skin;
-        ball.v = ball.v - hit.normal * (k.bounce * ball.v.dot(hit.normal));
-        remaining = remaining * (S::ONE - hit.alpha);
-    }
-    Ok(contacts)
+    let out = move_and_slide(tris, ball.p, ball.v * k.dt, k.radius)?;
+    ball.p = out.position;
+    ball.v = out.clip(ball.v);
+    Ok(out.contacts.iter().flatten().count() as u32)
 }
 
 /// A scalar's exact bit pattern, for hashing.
