@@ -22,6 +22,8 @@ use crate::{Contact, Hit, Scalar, StandardSweep, StandardTriangle, Sweep, Vec3};
 /// assert!(f.edge(0) && !f.edge(1) && f.vertex(1));
 /// assert_eq!(Features::from_bits(f.bits()), f);
 /// ```
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub struct Features(u8);
 

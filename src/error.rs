@@ -4,6 +4,8 @@ use core::fmt;
 
 /// Why a constructor refused its input. Every fallible constructor returns one of these instead of
 /// panicking; once a value is constructed, every query on it succeeds.
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Error {
     /// Coincident or collinear vertices at the scalar's precision: the triangle has no

@@ -6,6 +6,8 @@ use crate::Vec3;
 ///
 /// Edge `i` runs from vertex `i` to vertex `i + 1` (mod 3): edge 0 is v0–v1, edge 1 is v1–v2,
 /// edge 2 is v2–v0.
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Contact {
     /// The face's interior or boundary, touched by the ball's flat side: the normal is the face's.
@@ -21,6 +23,8 @@ pub enum Contact {
 /// `alpha` is the fraction of the path travelled before contact, `0 <= alpha < 1`; a query that
 /// finds nothing returns `None`, the notes' alpha = 1. `normal` is the unit contact normal in
 /// world orientation, from the touched feature towards the ball's centre.
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Hit<S> {
     /// Fraction of the path from `p0` to `p1` travelled at first contact, in `[0, 1)`.

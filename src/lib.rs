@@ -25,6 +25,7 @@
 //! - [`contact`] holds edge and vertex contacts, [`StandardTriangle::cast`] and [`Features`].
 //! - [`scene`] holds [`Scene`], many triangles with active edges from adjacency, and [`SceneHit`].
 //! - [`slide`] holds [`move_and_slide`], the collision response, and [`Slide`].
+//! - [`interop`] holds conversions for the `mint`, `glam` and `serde` features.
 //! - [`hit`] holds [`Hit`] and [`Contact`], what a query returns; [`error`] holds [`Error`].
 //!
 //! ```
@@ -50,6 +51,7 @@ pub mod contact;
 pub mod error;
 pub mod face;
 pub mod hit;
+pub mod interop;
 pub mod scalar;
 pub mod scene;
 pub mod slide;

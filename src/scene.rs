@@ -39,6 +39,8 @@ impl<S: Scalar> Bounds<S> {
 }
 
 /// The earliest contact of a sweep with a [`Scene`]: a plain `Copy` struct.
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct SceneHit<S> {
     /// Fraction of the path travelled at first contact, in `[0, 1)`.
@@ -113,6 +115,16 @@ impl<S: Scalar, const N: usize> Scene<S, N> {
     /// The prepared triangle at `index`.
     pub fn triangle(&self, index: usize) -> Option<&StandardTriangle<S>> {
         self.triangles.get(index)
+    }
+
+    /// The triangles as pushed, in order.
+    pub fn sources(&self) -> impl Iterator<Item = Triangle<S>> + '_ {
+        self.sources.iter().copied()
+    }
+
+    /// Whether each triangle, in order, is two-sided.
+    pub fn sidedness(&self) -> impl Iterator<Item = bool> + '_ {
+        self.triangles.iter().map(|t| t.is_two_sided())
     }
 
     /// Adds a one-sided triangle and returns its index.

@@ -1,4 +1,4 @@
-//! Collision response: move a ball through a [`Scene`], sliding along what it touches.
+//! Collision response: move a ball through a [`Scene`](crate::Scene), sliding along what it touches.
 
 use crate::contact::unit;
 use crate::{Error, Geometry, Scalar, SceneHit, Sweep, Vec3, vec3::cross};

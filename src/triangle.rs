@@ -8,6 +8,8 @@ use crate::{Error, Features, Scalar, StandardSweep, Sweep, Vec3, check};
 ///
 /// Vertices are counter-clockwise seen from the front, so the front normal points along
 /// `(v1 - v0) × (v2 - v0)`. Validate it with [`StandardTriangle::new`].
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 pub struct Triangle<S> {
     /// First vertex; the origin of the standard frame.
