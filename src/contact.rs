@@ -225,7 +225,7 @@ impl<S: Scalar> StandardTriangle<S> {
         let margin = r / (four * four * four) + S::EPSILON * four;
         let q = Vec3::new(xq, S::ZERO, zq);
         (0..3).all(|i| {
-            let w = S::dot_unit(q - self.corner(i), self.edges[i].out);
+            let w = S::dot_unit(q - self.corner(i), self.edges[i].out());
             w <= if self.features.edge(i) {
                 S::ZERO
             } else {
@@ -251,7 +251,7 @@ impl<S: Scalar> StandardTriangle<S> {
     /// whole triangle lies inside that line, so nothing of it can be touched.
     fn beyond_an_edge(&self, a: Vec3<S>, b: Vec3<S>, r: S) -> bool {
         (0..3).any(|i| {
-            let (c, out) = (self.corner(i), self.edges[i].out);
+            let (c, out) = (self.corner(i), self.edges[i].out());
             S::dot_unit(a - c, out) > r && S::dot_unit(b - c, out) > r
         })
     }
@@ -272,8 +272,9 @@ impl<S: Scalar> StandardTriangle<S> {
         let e = &self.edges[i];
         let rel = p0 - self.corner(i);
         // Along the edge (u) and away from the triangle in its plane (w).
-        let (u0, du) = (S::dot_unit(rel, e.dir), S::dot_unit(d, e.dir));
-        let (w0, dw) = (S::dot_unit(rel, e.out), S::dot_unit(d, e.out));
+        let (along, out) = (e.along(), e.out());
+        let (u0, du) = (S::dot_unit(rel, along), S::dot_unit(d, along));
+        let (w0, dw) = (S::dot_unit(rel, out), S::dot_unit(d, out));
         let (u1, w1) = (u0 + du, w0 + dw);
         let beside = (u0 > S::ZERO || u1 > S::ZERO) && (u0 < e.len || u1 < e.len);
         let within = (w0 <= r || w1 <= r) && (w0 >= -r || w1 >= -r);
@@ -289,7 +290,7 @@ impl<S: Scalar> StandardTriangle<S> {
         if !(u > z && u < e.len && y >= z) {
             return None;
         }
-        let offset = Vec3::new(S::mul_unit(w, e.out.x), y, S::mul_unit(w, e.out.z));
+        let offset = Vec3::new(S::mul_unit(w, out.x), y, S::mul_unit(w, out.z));
         Some((beta, Some(offset), Contact::Edge(i as u8)))
     }
 

@@ -127,12 +127,23 @@ impl<S: Scalar> Parts<S> {
 /// vertex `i` and runs to vertex `i + 1`.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Edge<S: Scalar> {
-    /// Unit direction, in the x–z plane.
-    pub dir: Vec3<S::Unit>,
-    /// Unit normal in the x–z plane pointing away from the triangle.
-    pub out: Vec3<S::Unit>,
+    /// Unit direction `[x, z]` in the x–z plane (its y component is zero).
+    pub dir: [S::Unit; 2],
     /// Length.
     pub len: S,
+}
+
+impl<S: Scalar> Edge<S> {
+    /// The unit direction as a vector of the standard frame.
+    pub(crate) fn along(&self) -> Vec3<S::Unit> {
+        Vec3::new(self.dir[0], S::UNIT_ZERO, self.dir[1])
+    }
+
+    /// The unit normal in the triangle's plane pointing away from the triangle: the direction
+    /// turned a quarter to the right, seen from the front.
+    pub(crate) fn out(&self) -> Vec3<S::Unit> {
+        Vec3::new(-self.dir[1], S::UNIT_ZERO, self.dir[0])
+    }
 }
 
 impl<S: Scalar> StandardTriangle<S> {
@@ -185,15 +196,16 @@ impl<S: Scalar> StandardTriangle<S> {
             Vec3::new(x2, z, z),
         ];
         let mut edges = [Edge {
-            dir: ux,
-            out: ux,
+            dir: [S::UNIT_ZERO; 2],
             len: z,
         }; 3];
         for (i, edge) in edges.iter_mut().enumerate() {
             let (len, dir) =
                 S::direction(corners[(i + 1) % 3] - corners[i]).ok_or(Error::Degenerate)?;
-            let out = Vec3::new(-dir.z, S::UNIT_ZERO, dir.x);
-            *edge = Edge { dir, out, len };
+            *edge = Edge {
+                dir: [dir.x, dir.z],
+                len,
+            };
         }
         Ok(Self {
             origin: t.v0,

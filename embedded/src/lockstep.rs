@@ -198,17 +198,25 @@ pub struct Outcome {
 
 /// Builds the scene in `S`. Panics only if the fixed scene were invalid in `S` (it is not; the
 /// host test runs this for every scalar).
-pub fn scene<S: Scalar>() -> [StandardTriangle<S>; TRIANGLES] {
-    let room = room();
-    core::array::from_fn(|i| {
-        let v = room[i].map(|p| Vec3::new(p[0], p[1], p[2]).map(S::from_f64));
-        StandardTriangle::new(&Triangle::new(v[0], v[1], v[2])).expect("the scene is valid")
-    })
+/// The triangles are pushed one by one into the caller's storage: no scene-sized temporary on
+/// the stack, which a 16 KB Cortex-M0 cannot spare.
+pub fn scene<S: Scalar>(tris: &mut Triangles<S>) {
+    for t in room() {
+        let v = t.map(|p| Vec3::new(p[0], p[1], p[2]).map(S::from_f64));
+        let st = StandardTriangle::new(&Triangle::new(v[0], v[1], v[2]));
+        let _ = tris.push(st.expect("the scene is valid"));
+    }
 }
 
-/// Runs the whole scripted sequence in `S`.
+/// Storage for the prepared scene.
+pub type Triangles<S> = heapless::Vec<StandardTriangle<S>, TRIANGLES>;
+
+/// Runs the whole scripted sequence in `S`. Never inlined: each scalar's scene (up to 6 KB) then
+/// lives in its own stack frame, freed before the next, which a 16 KB Cortex-M0 needs.
+#[inline(never)]
 pub fn simulate<S: Bits>() -> Outcome {
-    let tris = scene::<S>();
+    let mut tris = Triangles::<S>::new();
+    scene(&mut tris);
     let k = Params::<S>::new();
     let v3 = |p: [f64; 3]| Vec3::new(p[0], p[1], p[2]).map(S::from_f64);
     let mut out = Outcome {
