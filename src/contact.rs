@@ -134,13 +134,17 @@ impl<S: Scalar> StandardTriangle<S> {
     /// # Ok::<(), ballcast::Error>(())
     /// ```
     pub fn cast(&self, sweep: &Sweep<S>) -> Option<Hit<S>> {
-        let mut s = self.standardize(sweep);
+        let (y0, y1) = self.heights(sweep);
         // Towards the back: a one-sided triangle ignores it, a two-sided one mirrors y.
-        let back = s.p1.y > s.p0.y;
+        let back = y1 > y0;
+        let (start, end) = if back { (-y0, -y1) } else { (y0, y1) };
+        // Contact needs the centre to start on the side it moves towards and to come within r
+        // of the plane: decided by the heights, before the rest of the transform.
+        if y0 == y1 || (back && !self.two_sided) || start < S::ZERO || end >= sweep.radius() {
+            return None;
+        }
+        let mut s = self.standardize_from(sweep, (y0, y1));
         if back {
-            if !self.two_sided {
-                return None;
-            }
             s.p0.y = -s.p0.y;
             s.p1.y = -s.p1.y;
         }

@@ -81,7 +81,14 @@ impl<S: Scalar> StandardTriangle<S> {
     /// # Ok::<(), ballcast::Error>(())
     /// ```
     pub fn face_collision(&self, sweep: &Sweep<S>) -> Option<Hit<S>> {
-        let alpha = standard_face(self, &self.standardize(sweep))?;
+        // The heights alone settle most sweeps (the seed's first test, or beta >= 1): the rest of
+        // the transform is only computed when q' is needed.
+        let (y0, y1) = self.heights(sweep);
+        let r = sweep.radius();
+        if y0 < r || y1 >= r {
+            return None;
+        }
+        let alpha = standard_face(self, &self.standardize_from(sweep, (y0, y1)))?;
         Some(Hit {
             alpha,
             normal: self.normal(),

@@ -299,6 +299,26 @@ impl<S: Scalar> StandardTriangle<S> {
         }
     }
 
+    /// The heights of the sweep's ends above the triangle's plane (their standard-frame y):
+    /// a third of the transform, and all that most rejections need.
+    pub(crate) fn heights(&self, s: &Sweep<S>) -> (S, S) {
+        let y = |p: Vec3<S>| S::dot_unit(p - self.origin, self.uy);
+        (y(s.p0()), y(s.p1()))
+    }
+
+    /// [`standardize`](Self::standardize) given the [`heights`](Self::heights) already found.
+    pub(crate) fn standardize_from(&self, s: &Sweep<S>, (y0, y1): (S, S)) -> StandardSweep<S> {
+        let point = |p: Vec3<S>, y: S| {
+            let d = p - self.origin;
+            Vec3::new(S::dot_unit(d, self.ux), y, S::dot_unit(d, self.uz))
+        };
+        StandardSweep {
+            p0: point(s.p0(), y0),
+            p1: point(s.p1(), y1),
+            radius: s.radius(),
+        }
+    }
+
     /// [`to_standard`](Self::to_standard) for a point already known to lie within `±LIMIT`.
     pub(crate) fn standard_point(&self, p: Vec3<S>) -> Vec3<S> {
         let d = p - self.origin;
