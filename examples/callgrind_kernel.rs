@@ -177,7 +177,7 @@ fn main() {
         "usage: callgrind_kernel <face|cast|scene> <f32|f64|I32F32|I16F16> <n>"
     );
     let n: usize = args[3].parse().expect("n");
-    assert!(n % SWEEPS == 0, "n must be a multiple of {SWEEPS}");
+    assert!(n.is_multiple_of(SWEEPS), "n must be a multiple of {SWEEPS}");
     let hits = match args[2].as_str() {
         "f32" => run_f32(&args[1], n),
         "f64" => run_f64(&args[1], n),
