@@ -80,6 +80,10 @@ impl Default for Features {
 /// centre (`None` for the face, whose normal is +y), and the feature.
 type Touch<S> = (S, Option<Vec3<S>>, Contact);
 
+/// An edge or vertex contact with its alpha still as a fraction `t / len` (see `first_touch`):
+/// two contacts whose rounded alphas tie are still ordered exactly by it.
+type Timed<S> = (Touch<S>, (S, S));
+
 impl<S: Scalar> StandardTriangle<S> {
     /// The same triangle with only the given edges and vertices taking part in [`cast`](Self::cast).
     pub fn with_features(mut self, features: Features) -> Self {
@@ -194,7 +198,7 @@ impl<S: Scalar> StandardTriangle<S> {
         if r == S::ZERO || !self.near_path(band, p1, r) || self.beyond_an_edge(band, p1, r) {
             return None;
         }
-        let mut best: Option<Touch<S>> = None;
+        let mut best: Option<Timed<S>> = None;
         for i in 0..3 {
             if self.features.edge(i) {
                 best = earlier(best, self.edge_contact(i, p0, d, r));
@@ -208,13 +212,13 @@ impl<S: Scalar> StandardTriangle<S> {
             for i in 0..3 {
                 if self.features.vertex(i) {
                     let v = self.vertex_contact(i, p0, d, motion, r);
-                    if v.is_some_and(|v| best.is_none_or(|b| v.0 < b.0 - tie)) {
+                    if v.is_some_and(|v| best.is_none_or(|b| v.0.0 < b.0.0 - tie)) {
                         best = v;
                     }
                 }
             }
         }
-        best
+        best.map(|(touch, _)| touch)
     }
 
     /// Whether `q'` lies inside the triangle once each inactive edge is moved out by
@@ -272,7 +276,7 @@ impl<S: Scalar> StandardTriangle<S> {
     }
 
     /// First contact with the interior of edge `i`, from vertex `i` to vertex `i + 1`.
-    fn edge_contact(&self, i: usize, p0: Vec3<S>, d: Vec3<S>, r: S) -> Option<Touch<S>> {
+    fn edge_contact(&self, i: usize, p0: Vec3<S>, d: Vec3<S>, r: S) -> Option<Timed<S>> {
         let e = &self.edges[i];
         let rel = p0 - self.corner(i);
         // Along the edge (u) and away from the triangle in its plane (w).
@@ -289,13 +293,13 @@ impl<S: Scalar> StandardTriangle<S> {
         let z = S::ZERO;
         let across = Vec3::new(dw, d.y, z);
         let motion = S::direction(across)?;
-        let beta = first_touch(Vec3::new(w0, p0.y, z), motion, r)?;
+        let (beta, key) = first_touch(Vec3::new(w0, p0.y, z), motion, r)?;
         let (u, w, y) = (u0 + beta * du, w0 + beta * dw, p0.y + beta * d.y);
         if !(u > z && u < e.len && y >= z) {
             return None;
         }
         let offset = Vec3::new(S::mul_unit(w, out.x), y, S::mul_unit(w, out.z));
-        Some((beta, Some(offset), Contact::Edge(i as u8)))
+        Some(((beta, Some(offset), Contact::Edge(i as u8)), key))
     }
 
     /// First contact with vertex `i`; `motion` is the path's length and unit direction.
@@ -306,23 +310,28 @@ impl<S: Scalar> StandardTriangle<S> {
         d: Vec3<S>,
         motion: (S, Vec3<S::Unit>),
         r: S,
-    ) -> Option<Touch<S>> {
+    ) -> Option<Timed<S>> {
         let v = self.corner(i);
         let p1 = p0 + d;
         let apart = |a: S, b: S, c: S| (a - r > c && b - r > c) || (a + r < c && b + r < c);
         if apart(p0.x, p1.x, v.x) || apart(p0.z, p1.z, v.z) {
             return None;
         }
-        let beta = first_touch(p0 - v, motion, r)?;
+        let (beta, key) = first_touch(p0 - v, motion, r)?;
         let offset = p0 - v + d * beta;
-        (offset.y >= S::ZERO).then_some((beta, Some(offset), Contact::Vertex(i as u8)))
+        (offset.y >= S::ZERO).then_some(((beta, Some(offset), Contact::Vertex(i as u8)), key))
     }
 }
 
 /// The fraction of a path at which a point starting at offset `q0` from a feature, moving a
 /// distance `len` along the unit direction `dir`, first comes within `r` of it; zero if it
 /// starts within `r` and approaches, `None` if it never does, moves away, or arrives too late.
-fn first_touch<S: Scalar>(q0: Vec3<S>, (len, dir): (S, Vec3<S::Unit>), r: S) -> Option<S> {
+/// Also returns the fraction unrounded, as `(t, len)`.
+fn first_touch<S: Scalar>(
+    q0: Vec3<S>,
+    (len, dir): (S, Vec3<S::Unit>),
+    r: S,
+) -> Option<(S, (S, S))> {
     let s = S::dot_unit(q0, dir);
     if s >= S::ZERO {
         return None;
@@ -336,15 +345,22 @@ fn first_touch<S: Scalar>(q0: Vec3<S>, (len, dir): (S, Vec3<S::Unit>), r: S) -> 
     );
     let t = -s - S::chord(r, c)?;
     if t < S::ZERO {
-        return Some(S::ZERO);
+        return Some((S::ZERO, (S::ZERO, len)));
     }
-    (t < len).then(|| S::ratio(t, len))
+    (t < len).then(|| (S::ratio(t, len), (t, len)))
 }
 
-/// The earlier of two contacts (the first on a tie).
-fn earlier<S: Scalar>(a: Option<Touch<S>>, b: Option<Touch<S>>) -> Option<Touch<S>> {
+/// The earlier of two contacts, by their exact fractions `t / len` (the first on a tie).
+fn earlier<S: Scalar>(a: Option<Timed<S>>, b: Option<Timed<S>>) -> Option<Timed<S>> {
     match (a, b) {
-        (Some(x), Some(y)) => Some(if y.0 < x.0 { y } else { x }),
+        (Some(x), Some(y)) => {
+            let ((tx, lx), (ty, ly)) = (x.1, y.1);
+            Some(if S::mul_cmp(ty, lx, tx, ly).is_lt() {
+                y
+            } else {
+                x
+            })
+        }
         (x, y) => x.or(y),
     }
 }

@@ -319,10 +319,22 @@ pub fn distance_to_triangle(p: P, t: [P; 3]) -> f64 {
 impl Case {
     /// The crate's full `cast` in scalar `S`, results in f64, with every feature active.
     pub fn cast<S: Scalar>(&self, radius: f64) -> Result<Option<(f64, P)>, Error> {
+        Ok(self
+            .cast_with::<S>(radius, ballcast::Features::ALL)?
+            .map(|(a, n, _)| (a, n)))
+    }
+    /// `cast` with the given features active, with the contact reported.
+    pub fn cast_with<S: Scalar>(
+        &self,
+        radius: f64,
+        features: ballcast::Features,
+    ) -> Result<Option<(f64, P, ballcast::Contact)>, Error> {
         let [a, b, c] = self.tri.map(v::<S>);
-        let st = StandardTriangle::new(&Triangle::new(a, b, c))?;
+        let st = StandardTriangle::new(&Triangle::new(a, b, c))?.with_features(features);
         let s = Sweep::new(v(self.p0), v(self.p1), S::from_f64(radius))?;
-        Ok(st.cast(&s).map(|h| (h.alpha.to_f64(), back(h.normal))))
+        Ok(st
+            .cast(&s)
+            .map(|h| (h.alpha.to_f64(), back(h.normal), h.contact)))
     }
     /// The ball's centre at fraction `t` of the path.
     pub fn at(&self, t: f64) -> P {
