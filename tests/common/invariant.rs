@@ -8,11 +8,13 @@
 //! `0 <= alpha < 1` and a unit normal within the scalar's tolerance.
 //!
 //! Input layout: a mode byte, a 32-bit selector, then [`WORDS`] 64-bit words, one per value:
-//! `v0`, `v1`, `v2`, `p0`, `p1` (three coordinates each) and the radius. Modes (`mode % 4`):
-//! 0 raw bit patterns (floats: NaN, infinities, subnormals, huge values; fixed-point: the whole
-//! range, most of it beyond `LIMIT`); 1 raw values folded into `±LIMIT`; 2 a small integer grid
-//! with optional perturbations of a few ULP, scaled by a shared power of two (`mode >> 2`);
-//! 3 a per-value mix of the three plus special values, chosen by the selector's bit pairs.
+//! `v0`, `v1`, `v2`, `p0`, `p1` (three coordinates each) and the radius. Value kinds
+//! (`mode % 4`): 0 raw bit patterns (floats: NaN, infinities, subnormals, huge values;
+//! fixed-point: the whole range, most of it beyond `LIMIT`); 1 raw values folded into `±LIMIT`;
+//! 2 a small integer grid with optional perturbations of a few ULP, scaled by a shared power of
+//! two (`2^((mode >> 3) - 16)`); 3 a per-value mix of the three plus special values, chosen by
+//! the selector's bit pairs. With `mode & 4` the path is instead aimed at the triangle (see
+//! [`aim`]), so that hits, grazing paths and contacts near edges are common.
 #![allow(dead_code)]
 
 use ballcast::{
@@ -109,9 +111,66 @@ fn grid<S: Bits>(w: u64, scale: i32) -> S {
     S::from_f64(x * 2f64.powi(scale))
 }
 
+/// A fraction from 16 bits of `w`, in `[lo, hi]`.
+fn frac(w: u64, shift: u32, lo: f64, hi: f64) -> f64 {
+    lo + ((w >> shift) as u16) as f64 / 65535.0 * (hi - lo)
+}
+
+/// Replaces the path and radius (`x[9..16]`) by one aimed at the triangle `x[0..9]`, computed in
+/// f64 and rounded to `S`: the radius from `w[15]`'s value, a target point with barycentric
+/// weights from `w[9]`, `w[10]` (a little beyond the edges too), a start above and an end below
+/// the plane at the contact height (from `w[11]`, `w[12]`; often exactly at it), and a sideways
+/// drift (`w[13]`, `w[14]`). Degenerate or non-finite triangles are left alone.
+pub fn aim<S: Bits>(x: &mut [S; WORDS], w: &[u64; WORDS]) {
+    let f: [f64; 9] = core::array::from_fn(|i| x[i].to_f64());
+    let (a, b, c) = ([f[0], f[1], f[2]], [f[3], f[4], f[5]], [f[6], f[7], f[8]]);
+    let sub = |p: [f64; 3], q: [f64; 3]| [p[0] - q[0], p[1] - q[1], p[2] - q[2]];
+    let (e1, e2) = (sub(b, a), sub(c, a));
+    let n = [
+        e1[1] * e2[2] - e1[2] * e2[1],
+        e1[2] * e2[0] - e1[0] * e2[2],
+        e1[0] * e2[1] - e1[1] * e2[0],
+    ];
+    let len = (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]).sqrt();
+    let span = e1.iter().chain(&e2).fold(0.0f64, |m, v| m.max(v.abs()));
+    if !(len.is_finite() && len > 0.0 && span.is_finite()) {
+        return;
+    }
+    let n = n.map(|v| v / len);
+    let r = x[15].to_f64().abs();
+    let r = if r.is_finite() {
+        r.min(span)
+    } else {
+        span / 8.0
+    };
+    let (u, v) = (frac(w[9], 0, -0.1, 1.1), frac(w[10], 0, -0.1, 1.1));
+    // Heights of the centre above the plane: exactly at contact when the selector bits say so.
+    let h0 = r + if w[11] & 1 == 0 {
+        0.0
+    } else {
+        frac(w[11], 8, 0.0, 2.0) * span
+    };
+    let h1 = r - if w[12] & 1 == 0 {
+        0.0
+    } else {
+        frac(w[12], 8, -0.1, 2.0) * span
+    };
+    let (dx, dz) = (
+        frac(w[13], 0, -0.5, 0.5) * span,
+        frac(w[14], 0, -0.5, 0.5) * span,
+    );
+    let d = [dx, 0.0, dz];
+    for k in 0..3 {
+        let q = a[k] + u * e1[k] + v * e2[k];
+        x[9 + k] = S::from_f64(q + n[k] * h0 + d[k]);
+        x[12 + k] = S::from_f64(q + n[k] * h1 - d[k]);
+    }
+    x[15] = S::from_f64(r);
+}
+
 /// Value `i` of an input.
 pub fn value<S: Bits>(mode: u8, sel: u32, i: usize, w: u64) -> S {
-    let scale = (mode >> 2) as i32 - 32;
+    let scale = (mode >> 3) as i32 - 16;
     let kind = if mode % 4 == 3 {
         (sel >> (2 * i)) & 3
     } else {
@@ -190,7 +249,10 @@ pub struct Outcome {
 /// Checks one input; panics (a finding) if the invariant fails.
 pub fn check<S: Bits>(mode: u8, sel: u32, w: &[u64; WORDS]) -> Outcome {
     let mut out = Outcome::default();
-    let x: [S; WORDS] = core::array::from_fn(|i| value(mode, sel, i, w[i]));
+    let mut x: [S; WORDS] = core::array::from_fn(|i| value(mode, sel, i, w[i]));
+    if mode & 4 != 0 {
+        aim(&mut x, w);
+    }
     let p = |i: usize| Vec3::new(x[i], x[i + 1], x[i + 2]);
     let (v0, v1, v2, p0, p1, r) = (p(0), p(3), p(6), p(9), p(12), x[15]);
 
