@@ -73,10 +73,34 @@ macro_rules! wrappers {
     };
 }
 
-wrappers!(f32, ballcast_f32_triangle, ballcast_f32_sweep, ballcast_f32_face, run_f32);
-wrappers!(f64, ballcast_f64_triangle, ballcast_f64_sweep, ballcast_f64_face, run_f64);
-wrappers!(I16F16, ballcast_i16f16_triangle, ballcast_i16f16_sweep, ballcast_i16f16_face, run_i16f16);
-wrappers!(I32F32, ballcast_i32f32_triangle, ballcast_i32f32_sweep, ballcast_i32f32_face, run_i32f32);
+wrappers!(
+    f32,
+    ballcast_f32_triangle,
+    ballcast_f32_sweep,
+    ballcast_f32_face,
+    run_f32
+);
+wrappers!(
+    f64,
+    ballcast_f64_triangle,
+    ballcast_f64_sweep,
+    ballcast_f64_face,
+    run_f64
+);
+wrappers!(
+    I16F16,
+    ballcast_i16f16_triangle,
+    ballcast_i16f16_sweep,
+    ballcast_i16f16_face,
+    run_i16f16
+);
+wrappers!(
+    I32F32,
+    ballcast_i32f32_triangle,
+    ballcast_i32f32_sweep,
+    ballcast_i32f32_face,
+    run_i32f32
+);
 
 /// A wrapper that can panic (an index the optimiser cannot check), for the self-test.
 #[cfg(feature = "selftest")]
