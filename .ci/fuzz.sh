@@ -13,7 +13,9 @@ export CARGO_BUILD_JOBS="${CARGO_BUILD_JOBS:-1}"
 runs="${1:-1000000}"
 seconds="${2:-120}"
 
-rustup toolchain install nightly --profile minimal >/dev/null 2>&1
+# Installs nightly only if missing: `rustup toolchain install nightly` would also update it.
+rustup run nightly rustc --version >/dev/null 2>&1 ||
+    rustup toolchain install nightly --profile minimal
 command -v cargo-fuzz >/dev/null || cargo install cargo-fuzz --locked
 
 cargo +nightly fuzz build -s none

@@ -12,7 +12,9 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 export CARGO_BUILD_JOBS="${CARGO_BUILD_JOBS:-1}"
-rustup toolchain install nightly --profile minimal >/dev/null 2>&1
+# Installs nightly only if missing: `rustup toolchain install nightly` would also update it.
+rustup run nightly rustc --version >/dev/null 2>&1 ||
+    rustup toolchain install nightly --profile minimal
 rustup component add --toolchain nightly miri rust-src >/dev/null 2>&1
 
 export MIRIFLAGS="${MIRIFLAGS:--Zmiri-disable-isolation}"
