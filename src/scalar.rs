@@ -298,7 +298,9 @@ macro_rules! fixed_scalar {
                 let w = s.map(|c| c.to_bits() as $wide);
                 // Squares carry 2*UFRAC fractional bits; with |s| <= 1 their sum is below 3.
                 let len2 = w.x * w.x + w.y * w.y + w.z * w.z;
-                let len = (len2 as u128).isqrt() as $wide;
+                // Never zero for the inputs described, but a divisor the compiler cannot prove nonzero
+                // would leave a panic path in the binary.
+                let len = (len2 as u128).isqrt().max(1) as $wide;
                 w.map(|c| {
                     let num = c << $ufrac;
                     let half = if num < 0 { -(len / 2) } else { len / 2 };

@@ -1,0 +1,136 @@
+//! `#[no_mangle]` wrappers around `StandardTriangle::new`, `Sweep::new`, `face_collision` and `cast` for
+//! every scalar, linked for a bare-metal target in release. Without the default `triangle`
+//! feature the triangle constructor is left out: the face wrappers then take their triangle from
+//! an opaque static, so the face test is checked on its own. The panic handler calls a function
+//! that does not exist, so the link fails if any panic path survives optimisation: every
+//! `core::panicking::*`, `panic_bounds_check`, `panic_const_*`, `unwrap_failed`, … ends in the
+//! panic handler. With `--features locate` the handler exists instead, to find the path with
+//! `llvm-objdump`.
+#![no_std]
+#![no_main]
+
+use ballcast::{Error, Hit, StandardTriangle, Sweep, Triangle, Vec3};
+use core::hint::black_box;
+use fixed::types::{I16F16, I32F32};
+
+#[cfg(not(feature = "locate"))]
+#[panic_handler]
+fn panic(_: &core::panic::PanicInfo) -> ! {
+    unsafe extern "C" {
+        // Deliberately undefined: referencing it from a reachable panic fails the link.
+        fn ballcast_has_a_panic_path() -> !;
+    }
+    // SAFETY: never called in a successful link; the symbol does not exist.
+    unsafe { ballcast_has_a_panic_path() }
+}
+
+#[cfg(feature = "locate")]
+#[panic_handler]
+fn panic(_: &core::panic::PanicInfo) -> ! {
+    loop {
+        core::hint::spin_loop();
+    }
+}
+
+macro_rules! wrappers {
+    ($t:ty, $tri:ident, $sweep:ident, $face:ident, $cast:ident, $run:ident) => {
+        #[cfg(feature = "triangle")]
+        #[unsafe(no_mangle)]
+        #[inline(never)]
+        pub fn $tri(t: &Triangle<$t>) -> Result<StandardTriangle<$t>, Error> {
+            StandardTriangle::new(t)
+        }
+
+        /// Without the constructor: a triangle the optimiser knows nothing about.
+        #[cfg(not(feature = "triangle"))]
+        fn $tri(_: &Triangle<$t>) -> Result<StandardTriangle<$t>, Error> {
+            static SLOT: Result<StandardTriangle<$t>, Error> = Err(Error::Degenerate);
+            *black_box(&SLOT)
+        }
+
+        #[unsafe(no_mangle)]
+        #[inline(never)]
+        pub fn $sweep(p0: Vec3<$t>, p1: Vec3<$t>, r: $t) -> Result<Sweep<$t>, Error> {
+            Sweep::new(p0, p1, r)
+        }
+
+        #[unsafe(no_mangle)]
+        #[inline(never)]
+        pub fn $face(t: &StandardTriangle<$t>, s: &Sweep<$t>) -> Option<Hit<$t>> {
+            t.face_collision(s)
+        }
+
+        /// The full test: face, edges and vertices.
+        #[unsafe(no_mangle)]
+        #[inline(never)]
+        pub fn $cast(t: &StandardTriangle<$t>, s: &Sweep<$t>) -> Option<Hit<$t>> {
+            t.cast(s)
+        }
+
+        /// Calls the wrappers on values the optimiser cannot see.
+        fn $run() {
+            let tri = black_box(Triangle::<$t>::default());
+            let st = black_box($tri(&tri));
+            let v = black_box(Vec3::<$t>::default());
+            let s = black_box($sweep(v, black_box(v), black_box(tri.v0.x)));
+            if let (Ok(st), Ok(s)) = (st, s) {
+                black_box($face(&st, &s));
+                black_box($cast(&st, &s));
+            }
+        }
+    };
+}
+
+wrappers!(
+    f32,
+    ballcast_f32_triangle,
+    ballcast_f32_sweep,
+    ballcast_f32_face,
+    ballcast_f32_cast,
+    run_f32
+);
+wrappers!(
+    f64,
+    ballcast_f64_triangle,
+    ballcast_f64_sweep,
+    ballcast_f64_face,
+    ballcast_f64_cast,
+    run_f64
+);
+wrappers!(
+    I16F16,
+    ballcast_i16f16_triangle,
+    ballcast_i16f16_sweep,
+    ballcast_i16f16_face,
+    ballcast_i16f16_cast,
+    run_i16f16
+);
+wrappers!(
+    I32F32,
+    ballcast_i32f32_triangle,
+    ballcast_i32f32_sweep,
+    ballcast_i32f32_face,
+    ballcast_i32f32_cast,
+    run_i32f32
+);
+
+/// A wrapper that can panic (an index the optimiser cannot check), for the self-test.
+#[cfg(feature = "selftest")]
+#[unsafe(no_mangle)]
+#[inline(never)]
+pub fn ballcast_selftest_index(a: &[u8; 4], i: usize) -> u8 {
+    a[i]
+}
+
+/// The entry point: makes every wrapper reachable, so none is discarded before linking.
+#[unsafe(no_mangle)]
+pub extern "C" fn _start() -> ! {
+    loop {
+        run_f32();
+        run_f64();
+        run_i16f16();
+        run_i32f32();
+        #[cfg(feature = "selftest")]
+        black_box(ballcast_selftest_index(&black_box([1; 4]), black_box(9)));
+    }
+}
