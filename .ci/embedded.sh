@@ -57,5 +57,11 @@ if [ "$failed" -ne 0 ]; then
 fi
 echo "lockstep: every scalar's hash equals the host's on thumbv6m-none-eabi and thumbv7em-none-eabihf"
 
+echo "== firmware: a baked I16F16 scene in flash, on thumbv6m-none-eabi under QEMU"
+(cd embedded && cargo build --quiet --release --target thumbv6m-none-eabi --bin firmware)
+(cd embedded && timeout 120 cargo run --quiet --release --target thumbv6m-none-eabi --bin firmware) \
+    | tee "$work/firmware.txt"
+grep -q "^firmware: " "$work/firmware.txt"
+
 echo "== face test: instructions and size per scalar"
 bash embedded/count.sh
