@@ -192,13 +192,16 @@ macro_rules! float_scalar {
             }
             #[inline]
             fn direction(v: Vec3<Self>) -> Option<(Self, Vec3<Self>)> {
-                // Components within 8 * LIMIT square to at most 2^54 (f32) or 2^112 (f64), far from
-                // overflow, so no scaling is needed; a vector below ~1e-19 (f32) has no direction.
-                let len = $sqrt(v.dot(v));
-                if len.is_nan() || len <= 0.0 {
+                // Scaled by the largest component first, so tiny vectors (a tiny radius makes
+                // tiny contact offsets) neither underflow nor lose their direction.
+                let m = largest(v.x.abs(), v.y.abs(), v.z.abs());
+                if m.is_nan() || m <= 0.0 {
                     return None;
                 }
-                Some((len, v * (1.0 / len)))
+                // Dividing, not multiplying by 1 / m, which overflows for a subnormal m.
+                let s = v.map(|c| c / m);
+                let len = $sqrt(s.dot(s));
+                Some((m * len, s * (1.0 / len)))
             }
             #[inline]
             fn chord(r: Self, c: Vec3<Self>) -> Option<Self> {

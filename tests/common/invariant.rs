@@ -210,6 +210,7 @@ fn justified<S: Scalar>(e: Error, xs: &[S], bound: S, r: Option<S>) {
             "OutOfRange for {xs:?} {r:?}"
         ),
         Error::NegativeRadius => assert!(r.is_some_and(|r| r < S::ZERO), "NegativeRadius, {r:?}"),
+        Error::Full => panic!("a constructor reported a full container"),
         Error::Degenerate => assert!(
             r.is_none() && xs.iter().all(|x| in_range(*x, bound)),
             "Degenerate for {xs:?}"
@@ -317,11 +318,24 @@ pub fn check<S: Bits>(mode: u8, sel: u32, w: &[u64; WORDS]) -> Outcome {
     assert_eq!(st.to_standard(p1), Ok(ss.p1()));
     let hit = st.face_collision(&s);
     assert_eq!(hit.map(|h| h.alpha), standard_face(&st, &ss));
-    if let Some(Hit { alpha, normal }) = hit {
+    if let Some(Hit { alpha, normal, .. }) = hit {
         assert_alpha(alpha, "alpha");
         assert_eq!(normal, st.normal());
         assert_unit(normal, "hit normal");
         out.hit = true;
+    }
+    // The full test: a face hit is its answer too; any hit has a valid alpha and unit normal.
+    let full = st.cast(&s);
+    if let Some(h) = hit {
+        assert_eq!(
+            full.map(|f| f.alpha),
+            Some(h.alpha),
+            "cast disagrees with the face hit"
+        );
+    }
+    if let Some(Hit { alpha, normal, .. }) = full {
+        assert_alpha(alpha, "cast alpha");
+        assert_unit(normal, "cast normal");
     }
     out
 }
