@@ -25,6 +25,7 @@
 //! - [`contact`] holds edge and vertex contacts, [`StandardTriangle::cast`] and [`Features`].
 //! - [`scene`] holds [`Scene`], many triangles with active edges from adjacency, and [`SceneHit`].
 //! - [`slide`] holds [`move_and_slide`], the collision response, and [`Slide`].
+//! - [`plan`] holds the precision planner: which scalars fit a scene, and their expected error.
 //! - [`interop`] holds conversions for the `mint`, `glam` and `serde` features.
 //! - [`hit`] holds [`Hit`] and [`Contact`], what a query returns; [`error`] holds [`Error`].
 //!
@@ -52,6 +53,7 @@ pub mod error;
 pub mod face;
 pub mod hit;
 pub mod interop;
+pub mod plan;
 pub mod scalar;
 pub mod scene;
 pub mod slide;
@@ -63,6 +65,7 @@ pub use contact::Features;
 pub use error::Error;
 pub use face::standard_face;
 pub use hit::{Contact, Hit};
+pub use plan::{Precision, Verdict, plan};
 pub use scalar::Scalar;
 pub use scene::{Geometry, Scene, SceneHit};
 pub use slide::{MAX_SLIDES, Slide, move_and_slide};

@@ -56,6 +56,8 @@ pub trait Scalar:
     const LIMIT: Self;
     /// The spacing of representable values near one (machine epsilon; one LSB for fixed-point).
     const EPSILON: Self;
+    /// The same facts as plain numbers, for the precision planner ([`crate::plan`]).
+    const PRECISION: crate::Precision;
 
     /// Converts from `f64`, rounding to nearest. Fixed-point saturates, and maps NaN to the
     /// largest value so that constructors reject it as out of range rather than read it as zero.
@@ -126,6 +128,12 @@ macro_rules! float_scalar {
             const ONE: Self = 1.0;
             const LIMIT: Self = $limit;
             const EPSILON: Self = <$t>::EPSILON;
+            const PRECISION: crate::Precision = crate::Precision {
+                name: stringify!($t),
+                limit: $limit,
+                epsilon: <$t>::EPSILON as f64,
+                relative: true,
+            };
 
             #[inline]
 
@@ -233,6 +241,12 @@ macro_rules! fixed_scalar {
             const ONE: Self = <$t>::ONE;
             const LIMIT: Self = <$t>::from_bits($limit_int << $frac);
             const EPSILON: Self = <$t>::DELTA;
+            const PRECISION: crate::Precision = crate::Precision {
+                name: stringify!($t),
+                limit: $limit_int as f64,
+                epsilon: 1.0 / (1u64 << $frac) as f64,
+                relative: false,
+            };
 
             #[inline]
 
