@@ -4,7 +4,6 @@
 
 mod common;
 
-use ballcast::Scalar;
 use common::{Rng, Tolerance};
 use fixed::types::{I16F16, I32F32};
 
