@@ -151,6 +151,7 @@ fn nan_and_infinity_are_refused_at_the_boundary<S: Tolerance>() {
 
 macro_rules! per_scalar {
     ($($m:ident: $t:ty),*) => {$(mod $m {
+        #[allow(unused_imports)] // the fixed-point types, unused where $t is a float
         use super::*;
         #[test] fn sliver_inside_a_mesh() { super::sliver_inside_a_mesh::<$t>() }
         #[test] fn mesh_far_from_the_origin() { super::mesh_far_from_the_origin::<$t>() }
