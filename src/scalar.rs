@@ -200,13 +200,18 @@ macro_rules! float_scalar {
             }
             #[inline]
             fn direction(v: Vec3<Self>) -> Option<(Self, Vec3<Self>)> {
-                // Scaled by the largest component first, so tiny vectors (a tiny radius makes
-                // tiny contact offsets) neither underflow nor lose their direction.
+                let n2 = v.dot(v);
+                // Squares that underflowed cost at most EPSILON of n2 above this threshold.
+                if n2 >= <$t>::MIN_POSITIVE / <$t>::EPSILON && n2.is_finite() {
+                    let len = $sqrt(n2);
+                    return Some((len, v * (1.0 / len)));
+                }
+                // Tiny vectors (a tiny radius makes tiny contact offsets): scale by the largest
+                // component first, dividing, since 1 / m overflows for a subnormal m.
                 let m = largest(v.x.abs(), v.y.abs(), v.z.abs());
                 if m.is_nan() || m <= 0.0 {
                     return None;
                 }
-                // Dividing, not multiplying by 1 / m, which overflows for a subnormal m.
                 let s = v.map(|c| c / m);
                 let len = $sqrt(s.dot(s));
                 Some((m * len, s * (1.0 / len)))
