@@ -207,19 +207,15 @@ impl<S: Scalar> StandardTriangle<S> {
                 len,
             };
         }
-        Ok(Self {
+        Ok(Self::from_parts(Parts {
             origin: t.v0,
-            ux,
-            uy,
-            uz,
-            x1,
-            z1,
-            x2,
+            axes: [ux, uy, uz],
+            shape: [x1, z1, x2],
             normal: uy.map(S::unit_to_scalar),
             edges,
-            features: Features::ALL,
+            features: Features::ALL.bits(),
             two_sided: false,
-        })
+        }))
     }
 
     /// The triangle as plain data, e.g. for baking into a `static` (see [`Parts`]).
