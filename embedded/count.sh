@@ -45,7 +45,7 @@ for t in "${targets[@]}"; do
         awk '
             /^Trace/ {
                 s = $NF
-                if (!inside && s ~ /^face_/ && prev ~ /^bench_/) { inside = 1; drv = prev; calls[drv]++ }
+                if (!inside && s ~ /^(face|cast)_/ && prev ~ /^bench_/) { inside = 1; drv = prev; calls[drv]++ }
                 if (inside) { if (s == drv) inside = 0; else n[drv]++ }
                 prev = s
             }
@@ -97,15 +97,17 @@ count() { # target driver -> instructions per call
 echo "Instructions per face test (\`full\`: reaches the division and the edge tests, 3 hits and"
 echo "3 misses; \`early\`: leaves at the height tests), executed under QEMU, callees included:"
 echo
-echo "| scalar | Cortex-M0 full | Cortex-M0 early | Cortex-M4F full | Cortex-M4F early |"
-echo "|---|---:|---:|---:|---:|"
+echo "| scalar | Cortex-M0 full | Cortex-M0 early | Cortex-M0 cast | Cortex-M4F full | Cortex-M4F early | Cortex-M4F cast |"
+echo "|---|---:|---:|---:|---:|---:|---:|"
 for s in "${scalars[@]}"; do
     row="| ${pretty[$s]} |"
     for t in "${targets[@]}"; do
-        row="$row $(count "$t" "bench_full_$s") | $(count "$t" "bench_early_$s") |"
+        row="$row $(count "$t" "bench_full_$s") | $(count "$t" "bench_early_$s") | $(count "$t" "bench_cast_$s") |"
     done
     echo "$row"
 done
+echo
+echo "(\`cast\`: the full test, face, edges and vertices, on the \`full\` sweeps.)"
 echo
 echo "Code size of the face test in bytes (\`own\`: the face_<scalar> wrapper with face_collision"
 echo "inlined; \`with callees\`: plus every function it reaches, each once):"

@@ -1,4 +1,4 @@
-//! Instruction counts of the face test, per scalar, on bare metal.
+//! Instruction counts of the face test and the full `cast`, per scalar, on bare metal.
 //!
 //! For every scalar this runs `StandardTriangle::face_collision` on a fixed set of sweeps against
 //! one precomputed triangle in general position. Each measured call goes through an
@@ -8,6 +8,9 @@
 //! callees such as the soft-float and 128-bit division routines included. `embedded/count.sh`
 //! does that and prints the table; this program itself prints what it ran, and fails unless
 //! every sweep hit or missed as designed.
+//!
+//! `cast_<scalar>` wraps `StandardTriangle::cast` the same way, driven by `bench_cast_<scalar>`
+//! over the `full` sweeps.
 //!
 //! Groups: `full` sweeps reach the division and the three edge tests (3 hits, 3 misses outside one
 //! edge each); `early` sweeps leave at the height tests (start behind the plane, move away, stop
@@ -116,7 +119,21 @@ fn drive<S: Scalar>(
 }
 
 macro_rules! measured {
-    ($s:ty, $name:literal, $face:ident, $full:ident, $early:ident) => {
+    ($s:ty, $name:literal, $face:ident, $full:ident, $early:ident, $cast:ident, $full_cast:ident) => {
+        /// The measured call: one full `cast` (face, edges, vertices).
+        #[unsafe(no_mangle)]
+        #[inline(never)]
+        pub fn $cast(t: &StandardTriangle<$s>, s: &Sweep<$s>) -> Option<Hit<$s>> {
+            t.cast(s)
+        }
+
+        /// Driver for `cast` on the `full` group.
+        #[unsafe(no_mangle)]
+        #[inline(never)]
+        pub fn $full_cast(t: &StandardTriangle<$s>, sweeps: &[Sweep<$s>]) -> u32 {
+            drive(t, sweeps, $cast) + black_box(2) - 2
+        }
+
         /// The measured call: one face test.
         #[unsafe(no_mangle)]
         #[inline(never)]
@@ -148,6 +165,9 @@ macro_rules! measured {
             fn early(t: &StandardTriangle<$s>, sweeps: &[Sweep<$s>]) -> u32 {
                 $early(t, sweeps)
             }
+            fn full_cast(t: &StandardTriangle<$s>, sweeps: &[Sweep<$s>]) -> u32 {
+                $full_cast(t, sweeps)
+            }
         }
     };
 }
@@ -156,23 +176,28 @@ trait Measure: Scalar {
     const NAME: &'static str;
     fn full(t: &StandardTriangle<Self>, sweeps: &[Sweep<Self>]) -> u32;
     fn early(t: &StandardTriangle<Self>, sweeps: &[Sweep<Self>]) -> u32;
+    fn full_cast(t: &StandardTriangle<Self>, sweeps: &[Sweep<Self>]) -> u32;
 }
 
-measured!(f32, "f32", face_f32, bench_full_f32, bench_early_f32);
-measured!(f64, "f64", face_f64, bench_full_f64, bench_early_f64);
+measured!(f32, "f32", face_f32, bench_full_f32, bench_early_f32, cast_f32, bench_cast_f32);
+measured!(f64, "f64", face_f64, bench_full_f64, bench_early_f64, cast_f64, bench_cast_f64);
 measured!(
     I16F16,
     "I16F16",
     face_i16f16,
     bench_full_i16f16,
-    bench_early_i16f16
+    bench_early_i16f16,
+    cast_i16f16,
+    bench_cast_i16f16
 );
 measured!(
     I32F32,
     "I32F32",
     face_i32f32,
     bench_full_i32f32,
-    bench_early_i32f32
+    bench_early_i32f32,
+    cast_i32f32,
+    bench_cast_i32f32
 );
 
 /// Runs both groups in `S`; false if any sweep did not hit or miss as designed.
@@ -183,6 +208,8 @@ fn measure<S: Measure>() -> bool {
     let (full, early) = (sweeps::<S, 6>(&FULL, n), sweeps::<S, 4>(&EARLY, n));
     let full_hits = S::full(&t, &full);
     let early_hits = S::early(&t, &early);
+    // `cast` also catches the balls beside the edges: more hits than the face test, never fewer.
+    let cast_hits = S::full_cast(&t, &full);
     hprintln!(
         "{} full {} calls {} hits; early {} calls {} hits",
         S::NAME,
@@ -191,7 +218,8 @@ fn measure<S: Measure>() -> bool {
         early.len(),
         early_hits
     );
-    full_hits == FULL_HITS && early_hits == 0
+    hprintln!("{} cast {} calls {} hits", S::NAME, full.len(), cast_hits);
+    full_hits == FULL_HITS && early_hits == 0 && cast_hits >= FULL_HITS
 }
 
 #[entry]
