@@ -60,7 +60,7 @@ fn roll<S: Scalar>(tris: &[[P; 3]]) -> Result<(Vec<P>, usize), ballcast::Error> 
             let out = move_and_slide(&scene, p, v * dt, r)?;
             contacts += out.contacts.iter().flatten().count();
             p = out.position;
-            v = out.clip(v);
+            v = out.clip(v)?;
             path.push(p.to_array().map(S::to_f64));
         }
     }

@@ -79,7 +79,7 @@ fn simulate<S: Scalar>(name: &'static str) -> Run {
         let out = move_and_slide(&scene, p, v * dt, r).expect("the ball stays in range");
         run.contacts += out.contacts.iter().flatten().count();
         p = out.position;
-        v = out.clip(v) * damping;
+        v = out.clip(v).expect("the velocity stays in range") * damping;
         run.path.push(p.to_array().map(S::to_f64));
     }
     run.speed = v

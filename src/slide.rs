@@ -1,7 +1,7 @@
 //! Collision response: move a ball through a [`Scene`](crate::Scene), sliding along what it touches.
 
 use crate::contact::unit;
-use crate::{Error, Geometry, Scalar, SceneHit, Sweep, Vec3, vec3::cross};
+use crate::{Error, Geometry, Scalar, SceneHit, Sweep, Vec3, check, vec3::cross};
 use heapless::Vec;
 
 /// At most this many sweeps per call: each contact costs one, and a ball pressed into a corner
@@ -23,11 +23,15 @@ impl<S: Scalar> Slide<S> {
     /// Removes from `velocity` every component pointing into a contact's normal, in contact
     /// order: what a caller does to its velocity after the move. Never lengthens it by more
     /// than rounding.
-    pub fn clip(&self, mut velocity: Vec3<S>) -> Vec3<S> {
+    ///
+    /// Errors: [`Error::NonFinite`] or [`Error::OutOfRange`] for a velocity component beyond
+    /// `±`[`Scalar::LIMIT`].
+    pub fn clip(&self, velocity: Vec3<S>) -> Result<Vec3<S>, Error> {
+        let mut v = check::point(velocity, S::LIMIT)?;
         for hit in self.contacts.iter().flatten() {
-            velocity = remove_into(velocity, hit.normal);
+            v = remove_into(v, hit.normal);
         }
-        velocity
+        Ok(v)
     }
 }
 
@@ -49,7 +53,9 @@ fn remove_into<S: Scalar>(v: Vec3<S>, n: Vec3<S>) -> Vec3<S> {
 /// skins, the motion's length never grows, so a slide cannot gain speed. A ball that starts overlapping geometry is not pushed out, but
 /// cannot move further in (see [`StandardTriangle::cast`](crate::StandardTriangle::cast)).
 ///
-/// Errors: those of [`Sweep::new`] (the ball or its target outside the safe range).
+/// Errors: [`Error::NonFinite`] or [`Error::OutOfRange`] when `position`, `displacement` or the
+/// target is outside `±`[`Scalar::LIMIT`], [`Error::NegativeRadius`]; checked before any
+/// arithmetic, so fixed-point cannot overflow.
 ///
 /// ```
 /// use ballcast::{Scene, Triangle, Vec3, move_and_slide};
@@ -70,6 +76,9 @@ pub fn move_and_slide<S: Scalar, G: Geometry<S> + ?Sized>(
     displacement: Vec3<S>,
     radius: S,
 ) -> Result<Slide<S>, Error> {
+    // Inside these ranges `position + displacement` stays within 2 * LIMIT: no overflow.
+    check::point(position, S::LIMIT)?;
+    check::point(displacement, S::LIMIT)?;
     let zero = Vec3::new(S::ZERO, S::ZERO, S::ZERO);
     let mut out = Slide {
         position,

@@ -222,7 +222,7 @@ fn slide_keeps_out_and_never_speeds_up<S: Tolerance>() {
             );
         }
         let vel = v::<S>(d);
-        let clipped = out.clip(vel);
+        let clipped = out.clip(vel).unwrap();
         assert!(common::norm(back(clipped)) <= common::norm(back(vel)) + S::DISTANCE);
     }
 }

@@ -133,7 +133,7 @@ pub fn step<S: Scalar>(
     ball.v = ball.v + k.gravity * k.dt;
     let out = move_and_slide(tris, ball.p, ball.v * k.dt, k.radius)?;
     ball.p = out.position;
-    ball.v = out.clip(ball.v);
+    ball.v = out.clip(ball.v)?;
     Ok(out.contacts.iter().flatten().count() as u32)
 }
 

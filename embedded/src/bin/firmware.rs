@@ -28,14 +28,14 @@ fn main() -> ! {
     let mut contacts = 0;
     for _ in 0..STEPS {
         v = v + gravity * dt;
-        match move_and_slide(&baked::SCENE[..], p, v * dt, r) {
-            Ok(out) => {
-                contacts += out.contacts.iter().flatten().count();
-                p = out.position;
-                v = out.clip(v) * c(0.98);
-            }
-            Err(_) => break, // left the safe range: cannot happen in this closed corner
-        }
+        // An error means the ball left the safe range: it cannot in this closed corner.
+        let Ok(out) = move_and_slide(&baked::SCENE[..], p, v * dt, r) else {
+            break;
+        };
+        let Ok(clipped) = out.clip(v) else { break };
+        contacts += out.contacts.iter().flatten().count();
+        p = out.position;
+        v = clipped * c(0.98);
     }
     hprintln!(
         "firmware: {} triangles in flash, {} bytes each; after {} steps the ball rests at ({}, {}, {}) with {} contacts",
