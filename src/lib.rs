@@ -8,12 +8,17 @@
 //! - **`no_std`, no allocation**: nothing here touches a heap; every type is a plain value.
 //! - **No panics, no undefined behaviour**: constructors validate their input and return an
 //!   [`Error`] value; once constructed, every query succeeds. Inside the documented safe range
-//!   ([`Scalar::LIMIT`]) no fixed-point intermediate can overflow. `#![forbid(unsafe_code)]`.
+//!   ([`Scalar::LIMIT`]) no fixed-point intermediate can overflow. A link-time check (CI's
+//!   `.ci/no_panic.sh`) shows the release build of construction, `face_collision` and `cast`
+//!   has no panic path in any scalar. `#![forbid(unsafe_code)]`.
 //! - **One algorithm, four scalars**: `f32`, `f64`, [`I16F16`](fixed::types::I16F16) and
-//!   [`I32F32`](fixed::types::I32F32) run the same generic code; fixed-point results are
-//!   bit-identical on every target.
-//! - **Measured accuracy** against `f64` (scene scale 10: triangles within ±10, paths within
-//!   ±40, radius 0.1–2), as the README's table reports.
+//!   [`I32F32`](fixed::types::I32F32) run the same generic code; trajectories are bit-identical
+//!   on x86-64, Cortex-M0 and Cortex-M4F in every scalar (checked under QEMU).
+//! - **Measured accuracy** against `f64` at scene scale 10 (triangles within ±10, paths within
+//!   ±40, radius 0.1–2; 10^6 full casts): the contact's position along the normal is off by at
+//!   most 1.4e-5 (`f32`, p99 4.4e-6), 1.2e-8 (`I32F32`, p99 6.5e-9) and 7.6e-4 (`I16F16`,
+//!   p99 4.3e-4, mostly alpha's own 2^-16 step over long paths). [`plan`] predicts these for
+//!   any scene size.
 //!
 //! ## Map
 //! - [`scalar`] holds the [`Scalar`] trait and its implementations.
