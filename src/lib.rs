@@ -17,7 +17,7 @@
 //! - **Measured accuracy** against `f64` at scene scale 10 (triangles within ±10, paths within
 //!   ±40, radius 0.1–2; 10^6 full casts): the contact's position along the normal is off by at
 //!   most 1.4e-5 (`f32`, p99 4.4e-6), 1.2e-8 (`I32F32`, p99 6.5e-9) and 7.6e-4 (`I16F16`,
-//!   p99 4.3e-4, mostly alpha's own 2^-16 step over long paths). [`plan`] predicts these for
+//!   p99 4.3e-4, mostly alpha's own 2^-16 step over long paths). [`plan()`] predicts these for
 //!   any scene size.
 //!
 //! ## Map
@@ -30,7 +30,7 @@
 //! - [`contact`] holds edge and vertex contacts, [`StandardTriangle::cast`] and [`Features`].
 //! - [`scene`] holds [`Scene`], many triangles with active edges from adjacency, and [`SceneHit`].
 //! - [`slide`] holds [`move_and_slide`], the collision response, and [`Slide`].
-//! - [`plan`] holds the precision planner: which scalars fit a scene, and their expected error.
+//! - [`mod@plan`] holds the precision planner: which scalars fit a scene, and their expected error.
 //! - [`interop`] holds conversions for the `mint`, `glam` and `serde` features.
 //! - [`hit`] holds [`Hit`] and [`Contact`], what a query returns; [`error`] holds [`Error`].
 //!
