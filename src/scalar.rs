@@ -56,7 +56,7 @@ pub trait Scalar:
     const LIMIT: Self;
     /// The spacing of representable values near one (machine epsilon; one LSB for fixed-point).
     const EPSILON: Self;
-    /// The same facts as plain numbers, for the precision planner ([`crate::plan`]).
+    /// The same facts as plain numbers, for the precision planner ([`crate::plan()`]).
     const PRECISION: crate::Precision;
 
     /// Converts from `f64`, rounding to nearest. Fixed-point saturates, and maps NaN to the
