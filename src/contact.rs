@@ -204,18 +204,21 @@ impl<S: Scalar> StandardTriangle<S> {
                 best = earlier(best, self.edge_contact(i, p0, d, r));
             }
         }
-        if (0..3).any(|i| self.features.vertex(i)) {
-            let motion = S::direction(d)?;
-            // Where an edge's contact lies next to its vertex, the two arrive together; the
-            // edge's normal is the right one, so a vertex must be earlier by more than rounding.
-            let tie = S::EPSILON + S::EPSILON + S::EPSILON + S::EPSILON;
-            for i in 0..3 {
-                if self.features.vertex(i) {
-                    let v = self.vertex_contact(i, p0, d, motion, r);
-                    if v.is_some_and(|v| best.is_none_or(|b| v.0.0 < b.0.0 - tie)) {
-                        best = v;
-                    }
-                }
+        // The path's length and direction, computed once and only if a vertex needs them.
+        let mut motion = None;
+        // Where an edge's contact lies next to its vertex, the two arrive together; the edge's
+        // normal is the right one, so a vertex must be earlier by more than rounding.
+        let tie = S::EPSILON + S::EPSILON + S::EPSILON + S::EPSILON;
+        for i in 0..3 {
+            if !self.features.vertex(i) || self.vertex_out_of_reach(i, p0, d, r) {
+                continue;
+            }
+            let Some(m) = *motion.get_or_insert_with(|| S::direction(d)) else {
+                continue;
+            };
+            let v = self.vertex_contact(i, p0, d, m, r);
+            if v.is_some_and(|v| best.is_none_or(|b| v.0.0 < b.0.0 - tie)) {
+                best = v;
             }
         }
         best.map(|(touch, _)| touch)
@@ -302,6 +305,13 @@ impl<S: Scalar> StandardTriangle<S> {
         Some(((beta, Some(offset), Contact::Edge(i as u8)), key))
     }
 
+    /// Whether the path's box, grown by `r`, misses vertex `i` in x or z.
+    fn vertex_out_of_reach(&self, i: usize, p0: Vec3<S>, d: Vec3<S>, r: S) -> bool {
+        let (v, p1) = (self.corner(i), p0 + d);
+        let apart = |a: S, b: S, c: S| (a - r > c && b - r > c) || (a + r < c && b + r < c);
+        apart(p0.x, p1.x, v.x) || apart(p0.z, p1.z, v.z)
+    }
+
     /// First contact with vertex `i`; `motion` is the path's length and unit direction.
     fn vertex_contact(
         &self,
@@ -312,11 +322,6 @@ impl<S: Scalar> StandardTriangle<S> {
         r: S,
     ) -> Option<Timed<S>> {
         let v = self.corner(i);
-        let p1 = p0 + d;
-        let apart = |a: S, b: S, c: S| (a - r > c && b - r > c) || (a + r < c && b + r < c);
-        if apart(p0.x, p1.x, v.x) || apart(p0.z, p1.z, v.z) {
-            return None;
-        }
         let (beta, key) = first_touch(p0 - v, motion, r)?;
         let offset = p0 - v + d * beta;
         (offset.y >= S::ZERO).then_some(((beta, Some(offset), Contact::Vertex(i as u8)), key))
