@@ -189,7 +189,7 @@ impl<S: Scalar> StandardTriangle<S> {
         {
             return Some((beta, None, Contact::Face));
         }
-        if p0.y < r && contains(self, p0.x, p0.z) {
+        if p0.y < r && (contains(self, p0.x, p0.z) || self.within_seams(p0.x, p0.z, r)) {
             return Some((S::ZERO, None, Contact::Face));
         }
         // Edges and vertices can only be touched once the centre is below height r: from q'
