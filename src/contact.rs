@@ -352,7 +352,12 @@ fn first_touch<S: Scalar>(
     if t < S::ZERO {
         return Some((S::ZERO, (S::ZERO, len)));
     }
-    (t < len).then(|| (S::ratio(t, len), (t, len)))
+    if t >= len {
+        return None;
+    }
+    // Rounded to nearest, a fraction just below one can become one: that is no contact.
+    let beta = S::ratio(t, len);
+    (beta < S::ONE).then_some((beta, (t, len)))
 }
 
 /// The earlier of two contacts, by their exact fractions `t / len` (the first on a tie).

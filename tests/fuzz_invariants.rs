@@ -1,7 +1,7 @@
 //! The fuzzing invariant (`tests/common/invariant.rs`, shared with the cargo-fuzz targets in
 //! `fuzz/`) as a proptest over arbitrary bit patterns, in every scalar: constructors refuse bad
 //! input with a justified error value, accept exactly the safe range, and whatever they accept
-//! the face test answers without panicking (debug build: overflow checks on), with
+//! `face_collision` and `cast` answer without panicking (debug build: overflow checks on), with
 //! `0 <= alpha < 1` and a unit normal.
 //!
 //! Cases per scalar: `PROPTEST_CASES` if set, else 20 000.
@@ -44,4 +44,11 @@ per_scalar!(
 fn short_inputs_are_padded() {
     invariant::check_bytes::<f32>(&[]);
     invariant::check_bytes::<I16F16>(&[2, 0, 0, 0, 0, 4, 8]);
+}
+
+/// Found by the i16f16 fuzz target once the invariant covered `cast`: a vertex contact whose
+/// fraction `t / len` was just below one rounded to alpha = 1 in I16F16.
+#[test]
+fn regression_fuzz_i16f16_cast_alpha_one() {
+    invariant::check_bytes::<I16F16>(include_bytes!("data/fuzz-i16f16-cast-alpha-one.bin"));
 }
