@@ -29,7 +29,7 @@
 //! (`tradeoff --kernel <scalar> <scale> <n>` is the mode `scripts/callgrind.sh` runs under
 //! callgrind: `cast` over the first n cases of that scale, nothing else measured.)
 
-use ballcast::{Contact, Error, Scalar, StandardTriangle, Sweep, Triangle, Vec3};
+use ballcast::{Contact, Error, Features, Scalar, StandardTriangle, Sweep, Triangle};
 use fixed::types::{I16F16, I32F32};
 use std::fmt::Write as _;
 use std::hint::black_box;
@@ -40,112 +40,28 @@ const TIMED: usize = 4096;
 const REPS: usize = 15;
 const SCALES: [&str; 5] = ["1", "10", "100", "1000", "far"];
 
-type P = [f64; 3];
+// The case generator, vector helpers and tolerance table of the tests, so the report measures
+// exactly what they check.
+#[path = "../tests/common/mod.rs"]
+mod common;
 
-fn sub(a: P, b: P) -> P {
-    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
-}
-fn add(a: P, b: P) -> P {
-    [a[0] + b[0], a[1] + b[1], a[2] + b[2]]
-}
-fn scale(a: P, s: f64) -> P {
-    a.map(|x| x * s)
-}
-fn dot(a: P, b: P) -> f64 {
-    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
-}
-fn cross(a: P, b: P) -> P {
-    [
-        a[1] * b[2] - a[2] * b[1],
-        a[2] * b[0] - a[0] * b[2],
-        a[0] * b[1] - a[1] * b[0],
-    ]
-}
-fn norm(a: P) -> f64 {
-    dot(a, a).sqrt()
-}
-fn angle(a: P, b: P) -> f64 {
-    norm(cross(a, b)).atan2(dot(a, b))
-}
+use common::{Case, P, Rng, Tolerance, add, angle, dot, norm, sub, v};
 
-/// One query in f64.
-#[derive(Clone, Copy, Debug)]
-struct Case {
-    tri: [P; 3],
-    p0: P,
-    p1: P,
-    r: f64,
-}
-
-/// xorshift64*, fixed seed per scale.
-struct Rng(u64);
-impl Rng {
-    fn next(&mut self) -> f64 {
-        self.0 ^= self.0 >> 12;
-        self.0 ^= self.0 << 25;
-        self.0 ^= self.0 >> 27;
-        (self.0.wrapping_mul(0x2545_F491_4F6C_DD1D) >> 11) as f64 / (1u64 << 53) as f64
-    }
-    fn range(&mut self, lo: f64, hi: f64) -> f64 {
-        lo + (hi - lo) * self.next()
-    }
-    fn point(&mut self, half: f64) -> P {
-        [0; 3].map(|_| self.range(-half, half))
-    }
-    /// Uniform: triangle within ±s, path within ±4s, radius 0.01s–0.2s.
-    fn uniform(&mut self, s: f64) -> Case {
-        Case {
-            tri: [self.point(s), self.point(s), self.point(s)],
-            p0: self.point(4.0 * s),
-            p1: self.point(4.0 * s),
-            r: self.range(0.01 * s, 0.2 * s),
-        }
-    }
-    /// Falling: the path crosses the triangle's plane from the front, from height 0.1s–3s.
-    fn falling(&mut self, s: f64) -> Case {
-        let tri = [self.point(s), self.point(s), self.point(s)];
-        let n = cross(sub(tri[1], tri[0]), sub(tri[2], tri[0]));
-        let n = scale(n, 1.0 / norm(n).max(1e-300));
-        let h = self.range(0.1 * s, 3.0 * s);
-        Case {
-            tri,
-            p0: add(self.point(s), scale(n, h)),
-            p1: add(self.point(s), scale(n, -h)),
-            r: self.range(0.01 * s, 0.2 * s),
-        }
-    }
-}
-
-/// The scalars measured, with the tolerance table of `tests/common/mod.rs` and the far offset.
-trait Measured: Scalar {
-    const NAME: &'static str;
-    const DISTANCE: f64;
-    const ANGLE: f64;
-    /// Offset of the "far" scale.
+/// The scalars measured (names and tolerances from `tests/common/mod.rs`), with the offset of
+/// their "far" scale.
+trait Measured: Tolerance {
     const FAR: f64;
 }
 impl Measured for f64 {
-    const NAME: &'static str = "f64";
-    const DISTANCE: f64 = 1e-12;
-    const ANGLE: f64 = 1e-12;
     const FAR: f64 = 1e4;
 }
 impl Measured for f32 {
-    const NAME: &'static str = "f32";
-    const DISTANCE: f64 = 1e-5;
-    const ANGLE: f64 = 1e-5;
     const FAR: f64 = 1e4;
 }
 impl Measured for I32F32 {
-    const NAME: &'static str = "I32F32";
-    const DISTANCE: f64 = 2e-8;
-    const ANGLE: f64 = 1e-7;
     const FAR: f64 = 0.9 * 268_435_456.0;
 }
 impl Measured for I16F16 {
-    const NAME: &'static str = "I16F16";
-    const DISTANCE: f64 = 5e-4;
-    const ANGLE: f64 = 1e-3;
     const FAR: f64 = 0.9 * 4096.0;
 }
 
@@ -164,9 +80,9 @@ fn cases(label: &str, s: f64, off: f64) -> impl Iterator<Item = Case> {
     let o = [off; 3];
     (0..).map(move |i| {
         let c = if i % 2 == 0 {
-            rng.uniform(s)
+            rng.case(s)
         } else {
-            rng.falling(s)
+            rng.falling_case(s)
         };
         Case {
             tri: c.tri.map(|p| add(p, o)),
@@ -177,35 +93,16 @@ fn cases(label: &str, s: f64, off: f64) -> impl Iterator<Item = Case> {
     })
 }
 
-fn v<S: Scalar>(p: P) -> Vec3<S> {
-    Vec3::new(S::from_f64(p[0]), S::from_f64(p[1]), S::from_f64(p[2]))
-}
-fn back<S: Scalar>(p: Vec3<S>) -> P {
-    [p.x.to_f64(), p.y.to_f64(), p.z.to_f64()]
+/// The triangle and sweep of a case in `S`, for timing.
+fn prepare<S: Scalar>(c: &Case, r: f64) -> Result<(StandardTriangle<S>, Sweep<S>), Error> {
+    let [a, b, t] = c.tri.map(v::<S>);
+    let st = StandardTriangle::new(&Triangle::new(a, b, t))?;
+    Ok((st, Sweep::new(v(c.p0), v(c.p1), S::from_f64(r))?))
 }
 
-impl Case {
-    /// Every input rounded to `S` and back: exactly representable in `S` and in f64.
-    fn rounded<S: Scalar>(&self) -> Case {
-        let q = |p: P| back(v::<S>(p));
-        Case {
-            tri: self.tri.map(q),
-            p0: q(self.p0),
-            p1: q(self.p1),
-            r: S::from_f64(self.r).to_f64(),
-        }
-    }
-    fn prepare<S: Scalar>(&self, r: f64) -> Result<(StandardTriangle<S>, Sweep<S>), Error> {
-        let [a, b, c] = self.tri.map(v::<S>);
-        let st = StandardTriangle::new(&Triangle::new(a, b, c))?;
-        Ok((st, Sweep::new(v(self.p0), v(self.p1), S::from_f64(r))?))
-    }
-    fn cast<S: Scalar>(&self, r: f64) -> Result<Option<(f64, P, Contact)>, Error> {
-        let (st, sw) = self.prepare::<S>(r)?;
-        Ok(st
-            .cast(&sw)
-            .map(|h| (h.alpha.to_f64(), back(h.normal), h.contact)))
-    }
+/// The full `cast` of a case in `S`, every feature active.
+fn cast<S: Scalar>(c: &Case, r: f64) -> Result<Option<(f64, P, Contact)>, Error> {
+    c.cast_with::<S>(r, Features::ALL)
 }
 
 fn quantile(sorted: &[f64], q: f64) -> f64 {
@@ -242,7 +139,7 @@ fn prepared<S: Measured>(label: &str, n: usize) -> Vec<(StandardTriangle<S>, Swe
         .take(4 * n)
         .filter_map(|c| {
             let c = c.rounded::<S>();
-            c.prepare::<S>(c.r).ok()
+            prepare::<S>(&c, c.r).ok()
         })
         .take(n)
         .collect()
@@ -309,7 +206,7 @@ fn measure<S: Measured>(label: &'static str) -> Row {
     if S::NAME == "f64" {
         // The reference: only speed and the hit count.
         for c in cases(label, s, off).take(CASES) {
-            match c.cast::<f64>(c.r) {
+            match cast::<f64>(&c, c.r) {
                 Ok(h) => {
                     row.valid += 1;
                     row.hits += h.is_some() as usize;
@@ -325,7 +222,7 @@ fn measure<S: Measured>(label: &'static str) -> Row {
     let (mut dist, mut angles) = (Vec::new(), Vec::new());
     for c in cases(label, s, off).take(CASES) {
         let c = c.rounded::<S>();
-        let (Ok(got), Ok(want)) = (c.cast::<S>(c.r), c.cast::<f64>(c.r)) else {
+        let (Ok(got), Ok(want)) = (cast::<S>(&c, c.r), cast::<f64>(&c, c.r)) else {
             row.rejected += 1;
             continue;
         };
@@ -356,7 +253,7 @@ fn measure<S: Measured>(label: &'static str) -> Row {
             (None, None) => {}
             (got, want) => {
                 row.disagree += 1;
-                let flips = |r: f64| c.cast::<f64>(r.max(0.0)).ok().flatten().is_some();
+                let flips = |r: f64| cast::<f64>(&c, r.max(0.0)).ok().flatten().is_some();
                 let (lo, hi) = (flips(c.r - band), flips(c.r + band));
                 let at_start =
                     want.is_some_and(|(a, ..)| a < 1e-6) || got.is_some_and(|(a, ..)| a < 1e-3);
