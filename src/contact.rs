@@ -9,6 +9,7 @@
 //! Only distances are formed, never squares of coordinates, so fixed-point stays in range.
 
 use crate::face::{contains, face_point};
+use crate::scalar::tie;
 use crate::{Contact, Hit, Scalar, StandardSweep, StandardTriangle, Sweep, Vec3};
 
 /// Which edges and vertices of a triangle take part in [`StandardTriangle::cast`]; the face
@@ -208,7 +209,7 @@ impl<S: Scalar> StandardTriangle<S> {
         let mut motion = None;
         // Where an edge's contact lies next to its vertex, the two arrive together; the edge's
         // normal is the right one, so a vertex must be earlier by more than rounding.
-        let tie = S::EPSILON + S::EPSILON + S::EPSILON + S::EPSILON;
+        let tie = tie::<S>();
         for i in 0..3 {
             if !self.features.vertex(i) || self.vertex_out_of_reach(i, p0, d, r) {
                 continue;

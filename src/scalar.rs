@@ -115,6 +115,12 @@ pub(crate) mod sealed {
     }
 }
 
+/// Four steps of the scalar's resolution: contacts whose alphas differ by no more are taken to
+/// arrive together (their order is rounding).
+pub(crate) fn tie<S: Scalar>() -> S {
+    S::EPSILON + S::EPSILON + S::EPSILON + S::EPSILON
+}
+
 /// The largest of three values: with magnitudes, a vector length that needs no squaring.
 pub(crate) fn largest<T: PartialOrd + Copy>(a: T, b: T, c: T) -> T {
     let ab = if b > a { b } else { a };

@@ -2,6 +2,7 @@
 //! edges computed from adjacency, and its earliest-contact query.
 
 use crate::contact::unit;
+use crate::scalar::tie;
 use crate::{Contact, Error, Hit, Scalar, StandardTriangle, Sweep, Triangle, Vec3};
 use heapless::Vec;
 
@@ -237,7 +238,7 @@ impl<S: Scalar> Geometry<S> for [StandardTriangle<S>] {
 
 /// The earliest of indexed hits, merging those within four steps of resolution of it.
 fn earliest<S: Scalar>(hits: impl Iterator<Item = (usize, Hit<S>)>) -> Option<SceneHit<S>> {
-    let tie = S::EPSILON + S::EPSILON + S::EPSILON + S::EPSILON;
+    let tie = tie::<S>();
     let mut best: Option<(SceneHit<S>, Vec3<S>, bool)> = None;
     for (
         index,
