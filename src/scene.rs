@@ -1,9 +1,8 @@
 //! Many triangles at once: [`Scene`], a fixed-capacity set of prepared triangles with active
 //! edges computed from adjacency, and its earliest-contact query.
 
-use crate::contact::unit;
-use crate::scalar::tie;
-use crate::{Contact, Error, Hit, Scalar, StandardTriangle, Sweep, Triangle, Vec3};
+use crate::merge::{PLANES, earliest};
+use crate::{Contact, Error, Scalar, StandardTriangle, Sweep, Triangle, Vec3};
 use heapless::Vec;
 
 /// An axis-aligned box, `min <= max` per axis.
@@ -46,13 +45,17 @@ impl<S: Scalar> Bounds<S> {
 pub struct SceneHit<S> {
     /// Fraction of the path travelled at first contact, in `[0, 1)`.
     pub alpha: S,
-    /// Unit contact normal; where several triangles are touched at the same alpha (within the
-    /// scalar's resolution), the normalised average of their normals.
+    /// Unit contact normal; where several triangles are touched at the same alpha (within four
+    /// steps of the scalar's resolution), the normalised sum of their normals in index order.
     pub normal: Vec3<S>,
     /// The feature touched on triangle `index` (the earliest of simultaneous contacts).
     pub contact: Contact,
-    /// Index of the touched triangle, in the order pushed.
+    /// Index of the touched triangle, in the order pushed (the smallest of exact ties).
     pub index: usize,
+    /// The distinct planes touched at this alpha (normals of the simultaneous contacts, in
+    /// index order, nearly parallel ones once): what a response must not move into. The first
+    /// is always `Some`.
+    pub planes: [Option<Vec3<S>>; PLANES],
 }
 
 /// Up to `N` prepared triangles, stored inline (no allocation), queried together.
@@ -196,18 +199,21 @@ impl<S: Scalar, const N: usize> Scene<S, N> {
 
     /// The earliest contact of the sweep with any triangle, or `None`.
     ///
-    /// Contacts within four steps of the scalar's resolution of the earliest alpha are merged:
-    /// their normals are averaged, so a ball landing on a seam gets one well-defined normal.
+    /// Contacts within four steps of the scalar's resolution of the earliest alpha arrive
+    /// together: their normals are summed in index order and normalised, so a ball landing on a
+    /// seam gets one well-defined normal, and their distinct planes are listed for a response.
+    /// The rule depends on the set of contacts, not on the order they are found in.
     pub fn cast(&self, sweep: &Sweep<S>) -> Option<SceneHit<S>> {
         let reach = Bounds::of(&[sweep.p0(), sweep.p1()], sweep.radius());
-        earliest(
-            self.bounds
-                .iter()
-                .zip(self.triangles.iter())
-                .enumerate()
-                .filter(|(_, (b, _))| b.overlaps(&reach))
-                .filter_map(|(i, (_, t))| Some((i, t.cast(sweep)?))),
-        )
+        earliest(|acc| {
+            for (i, (b, t)) in self.bounds.iter().zip(self.triangles.iter()).enumerate() {
+                if b.overlaps(&reach)
+                    && let Some(hit) = t.cast(sweep)
+                {
+                    acc.offer(i, hit);
+                }
+            }
+        })
     }
 }
 
@@ -228,45 +234,12 @@ impl<S: Scalar, const N: usize> Geometry<S> for Scene<S, N> {
 /// small scenes firmware keeps in flash.
 impl<S: Scalar> Geometry<S> for [StandardTriangle<S>] {
     fn cast(&self, sweep: &Sweep<S>) -> Option<SceneHit<S>> {
-        earliest(
-            self.iter()
-                .enumerate()
-                .filter_map(|(i, t)| Some((i, t.cast(sweep)?))),
-        )
-    }
-}
-
-/// The earliest of indexed hits, merging those within four steps of resolution of it.
-fn earliest<S: Scalar>(hits: impl Iterator<Item = (usize, Hit<S>)>) -> Option<SceneHit<S>> {
-    let tie = tie::<S>();
-    let mut best: Option<(SceneHit<S>, Vec3<S>, bool)> = None;
-    for (
-        index,
-        Hit {
-            alpha,
-            normal,
-            contact,
-        },
-    ) in hits
-    {
-        let hit = SceneHit {
-            alpha,
-            normal,
-            contact,
-            index,
-        };
-        best = match best {
-            Some((first, sum, _)) if alpha >= first.alpha - tie && alpha <= first.alpha + tie => {
-                let first = if alpha < first.alpha { hit } else { first };
-                Some((first, sum + normal, true))
+        earliest(|acc| {
+            for (i, t) in self.iter().enumerate() {
+                if let Some(hit) = t.cast(sweep) {
+                    acc.offer(i, hit);
+                }
             }
-            Some(b) if alpha > b.0.alpha => Some(b),
-            _ => Some((hit, normal, false)),
-        };
+        })
     }
-    let (mut hit, sum, merged) = best?;
-    if merged {
-        hit.normal = unit(sum).unwrap_or(hit.normal);
-    }
-    Some(hit)
 }

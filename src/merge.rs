@@ -1,0 +1,136 @@
+//! The earliest contact among many triangles, with simultaneous contacts merged by a rule that
+//! does not depend on the order the triangles are visited in.
+//!
+//! A linear scan meets triangles in index order, a tree in whatever order its traversal takes;
+//! both must give the same bits. So the answer is defined on the set of contacts, not on the
+//! visit: the earliest is the smallest alpha (the smallest index on an exact tie); the contacts
+//! *tied* with it are those whose alpha lies within [`tie`] of it, each of which could have come
+//! first but for rounding; their normals are summed in index order. [`Earliest`] keeps the
+//! tied contacts with the [`TIES`] smallest indices in a fixed buffer; in the rare case that it
+//! had to drop one while the window was still moving, [`earliest`] visits once more with the
+//! window fixed, which makes the kept set exact.
+
+use crate::contact::unit;
+use crate::scalar::tie;
+use crate::{Hit, Scalar, SceneHit, Vec3};
+use heapless::Vec;
+
+/// How many tied contacts are kept (by smallest index): a vertex where eight triangles meet.
+pub(crate) const TIES: usize = 8;
+
+/// How many distinct planes a [`SceneHit`] lists: more than three are never needed to stop a
+/// ball, and a slide uses at most this many.
+pub const PLANES: usize = 4;
+
+/// An accumulator for the contacts of one sweep, fed in any order with [`offer`](Self::offer).
+#[derive(Debug)]
+pub(crate) struct Earliest<S: Scalar> {
+    best: Option<(usize, Hit<S>)>,
+    ties: Vec<(usize, Hit<S>), TIES>,
+    /// Set on the second visit: the window no longer moves.
+    fixed: Option<S>,
+    /// A tied contact was dropped for room while the window could still shrink.
+    lossy: bool,
+}
+
+impl<S: Scalar> Earliest<S> {
+    fn new(fixed: Option<S>) -> Self {
+        Self {
+            best: None,
+            ties: Vec::new(),
+            fixed,
+            lossy: false,
+        }
+    }
+
+    /// The largest alpha still worth testing: contacts later than this can neither come first
+    /// nor tie with the first. One (the end of the path) while nothing was found.
+    pub(crate) fn reach(&self) -> S {
+        match (self.fixed, self.best) {
+            (Some(w), _) => w,
+            (None, Some((_, b))) => b.alpha + tie::<S>(),
+            (None, None) => S::ONE,
+        }
+    }
+
+    /// Takes the contact of triangle `index`.
+    pub(crate) fn offer(&mut self, index: usize, hit: Hit<S>) {
+        if hit.alpha > self.reach() {
+            return;
+        }
+        let first = self
+            .best
+            .is_none_or(|(i, b)| hit.alpha < b.alpha || (hit.alpha == b.alpha && index < i));
+        if first {
+            self.best = Some((index, hit));
+            let reach = self.reach();
+            self.ties.retain(|(_, h)| h.alpha <= reach);
+        }
+        // Keep the buffer sorted by index, dropping the largest index when full.
+        let at = self.ties.partition_point(|(i, _)| *i < index);
+        if self.ties.is_full() {
+            self.lossy |= self.fixed.is_none();
+            if at == TIES {
+                return;
+            }
+            self.ties.pop();
+        }
+        // Room was made above: the insert cannot fail.
+        let _ = self.ties.insert(at, (index, hit));
+    }
+
+    fn finish(self) -> Option<SceneHit<S>> {
+        let (
+            index,
+            Hit {
+                alpha,
+                normal,
+                contact,
+            },
+        ) = self.best?;
+        let mut planes = [None; PLANES];
+        let mut sum = Vec3::new(S::ZERO, S::ZERO, S::ZERO);
+        for (_, h) in &self.ties {
+            sum = sum + h.normal;
+            if !planes.iter().flatten().any(|p| same_plane(*p, h.normal))
+                && let Some(slot) = planes.iter_mut().find(|p| p.is_none())
+            {
+                *slot = Some(h.normal);
+            }
+        }
+        let normal = if self.ties.len() > 1 {
+            unit(sum).unwrap_or(normal)
+        } else {
+            normal
+        };
+        Some(SceneHit {
+            alpha,
+            normal,
+            contact,
+            index,
+            planes,
+        })
+    }
+}
+
+/// Whether two unit normals agree within about 1e-3 rad per component: one plane for a response.
+pub(crate) fn same_plane<S: Scalar>(a: Vec3<S>, b: Vec3<S>) -> bool {
+    let d = a - b;
+    let tol = S::from_f64(1.0 / 1024.0);
+    d.x.abs() <= tol && d.y.abs() <= tol && d.z.abs() <= tol
+}
+
+/// The earliest contact found by `visit`, which offers contacts (in any order) to the
+/// accumulator it is given and may skip whatever lies beyond its [`reach`](Earliest::reach).
+/// `visit` runs once, or twice when more than [`TIES`] contacts tied and the first run could
+/// not keep the right ones.
+pub(crate) fn earliest<S: Scalar>(mut visit: impl FnMut(&mut Earliest<S>)) -> Option<SceneHit<S>> {
+    let mut first = Earliest::new(None);
+    visit(&mut first);
+    if !first.lossy {
+        return first.finish();
+    }
+    let mut second = Earliest::new(Some(first.reach()));
+    visit(&mut second);
+    second.finish()
+}
