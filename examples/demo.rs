@@ -75,11 +75,14 @@ fn simulate<S: Scalar>(name: &'static str) -> Run {
         path: Vec::with_capacity(STEPS),
     };
     for _ in 0..STEPS {
-        v = v + gravity * dt;
-        let out = move_and_slide(&scene, p, v * dt, r).expect("the ball stays in range");
+        v = v + gravity.scale(dt);
+        let out = move_and_slide(&scene, p, v.scale(dt), r).expect("the ball stays in range");
         run.contacts += out.contacts.iter().flatten().count();
         p = out.position;
-        v = out.clip(v).expect("the velocity stays in range") * damping;
+        v = out
+            .clip(v)
+            .expect("the velocity stays in range")
+            .scale(damping);
         run.path.push(p.to_array().map(S::to_f64));
     }
     run.speed = v

@@ -34,6 +34,5 @@ pub(crate) fn radius<S: Scalar>(r: S) -> Result<S, Error> {
 /// `2 * sqrt(3) * LIMIT < 3.5 * LIMIT` of the origin, and fixed-point needs the headroom for
 /// differences of two such coordinates.
 pub(crate) fn standard_bound<S: Scalar>() -> S {
-    let two = S::ONE + S::ONE;
-    S::LIMIT * (two + S::ONE) + S::LIMIT / two
+    S::LIMIT + S::LIMIT + S::LIMIT + S::div_pow2(S::LIMIT, 1)
 }

@@ -119,9 +119,10 @@ impl<S: Scalar> StandardTriangle<S> {
     /// - One-sided by default: nothing counts unless the ball moves towards the front, and an
     ///   edge or vertex contact counts only with the centre on the front side of the plane.
     /// - A ball that *starts* overlapping the triangle (centre in front, closer than `r` to the
-    ///   face region, an active edge or an active vertex) and moves further in is reported at
-    ///   `alpha = 0`, with the normal pushing it out. One that starts overlapping and moves away
-    ///   is not reported, so it can leave. Overlap is never reported later along the path.
+    ///   face region, an active edge or an active vertex) and does not move away (it moves
+    ///   further in, or along the plane as rounded) is reported at `alpha = 0`, with the normal
+    ///   pushing it out. One that starts overlapping and moves away is not reported, so it can
+    ///   leave. Overlap is never reported later along the path.
     /// - A ray (radius 0) touches only the face, which includes its boundary.
     /// - The normal is the unit vector from the touched point to the ball's centre.
     ///
@@ -140,12 +141,14 @@ impl<S: Scalar> StandardTriangle<S> {
     /// ```
     pub fn cast(&self, sweep: &Sweep<S>) -> Option<Hit<S>> {
         let (y0, y1) = self.heights(sweep);
-        // Towards the back: a one-sided triangle ignores it, a two-sided one mirrors y.
-        let back = y1 > y0;
+        // Towards the back (or along the plane behind it): a one-sided triangle ignores it, a
+        // two-sided one mirrors y.
+        let back = y1 > y0 || (y1 == y0 && y0 < S::ZERO);
         let (start, end) = if back { (-y0, -y1) } else { (y0, y1) };
         // Contact needs the centre to start on the side it moves towards and to come within r
-        // of the plane: decided by the heights, before the rest of the transform.
-        if y0 == y1 || (back && !self.two_sided) || start < S::ZERO || end >= sweep.radius() {
+        // of the plane: decided by the heights, before the rest of the transform. A path along
+        // the plane counts only where the ball starts overlapping the triangle.
+        if (back && !self.two_sided) || start < S::ZERO || end >= sweep.radius() {
             return None;
         }
         let mut s = self.standardize_from(sweep, (y0, y1));
@@ -178,8 +181,10 @@ impl<S: Scalar> StandardTriangle<S> {
     fn cast_front(&self, s: &StandardSweep<S>) -> Option<Touch<S>> {
         let (p0, p1, r) = (s.p0, s.p1, s.radius);
         let d = p1 - p0;
-        // Moving parallel or away, starting behind the plane, or never within r of it.
-        if d.y >= S::ZERO || p0.y < S::ZERO || p1.y >= r {
+        // Moving away, starting behind the plane, or never within r of it. A path along the
+        // plane (as rounded) can only meet what the ball already overlaps, at alpha = 0: it must
+        // not carry an overlapping ball on by a step of rounding per call.
+        if d.y > S::ZERO || p0.y < S::ZERO || p1.y >= r {
             return None;
         }
         // The face is reached at height r, before any edge or vertex can be.
@@ -222,7 +227,9 @@ impl<S: Scalar> StandardTriangle<S> {
                 best = v;
             }
         }
+        // Along the plane, only what the ball already overlaps counts.
         best.map(|(touch, _)| touch)
+            .filter(|(alpha, ..)| d.y < S::ZERO || *alpha == S::ZERO)
     }
 
     /// Whether `q'` lies inside the triangle once each inactive edge is moved out by
@@ -233,8 +240,7 @@ impl<S: Scalar> StandardTriangle<S> {
         if (0..3).all(|i| self.features.edge(i)) {
             return false;
         }
-        let four = S::ONE + S::ONE + S::ONE + S::ONE;
-        let margin = r / (four * four * four) + S::EPSILON * four;
+        let margin = S::div_pow2(r, 6) + tie::<S>();
         let q = Vec3::new(xq, S::ZERO, zq);
         (0..3).all(|i| {
             let w = S::dot_unit(q - self.corner(i), self.edges[i].out());
@@ -298,7 +304,7 @@ impl<S: Scalar> StandardTriangle<S> {
         let across = Vec3::new(dw, d.y, z);
         let motion = S::direction(across)?;
         let (beta, key) = first_touch(Vec3::new(w0, p0.y, z), motion, r)?;
-        let (u, w, y) = (u0 + beta * du, w0 + beta * dw, p0.y + beta * d.y);
+        let (u, w, y) = (u0 + beta.mul(du), w0 + beta.mul(dw), p0.y + beta.mul(d.y));
         if !(u > z && u < e.len && y >= z) {
             return None;
         }
@@ -324,7 +330,7 @@ impl<S: Scalar> StandardTriangle<S> {
     ) -> Option<Timed<S>> {
         let v = self.corner(i);
         let (beta, key) = first_touch(p0 - v, motion, r)?;
-        let offset = p0 - v + d * beta;
+        let offset = p0 - v + d.scale(beta);
         (offset.y >= S::ZERO).then_some(((beta, Some(offset), Contact::Vertex(i as u8)), key))
     }
 }
@@ -338,8 +344,9 @@ fn first_touch<S: Scalar>(
     (len, dir): (S, Vec3<S::Unit>),
     r: S,
 ) -> Option<(S, (S, S))> {
+    // Moving away from the feature; moving square to it counts, for a ball already within r.
     let s = S::dot_unit(q0, dir);
-    if s >= S::ZERO {
+    if s > S::ZERO {
         return None;
     }
     // |q0 × dir|, each component a two-term dot product rounded once.
@@ -357,7 +364,7 @@ fn first_touch<S: Scalar>(
         return None;
     }
     // Rounded to nearest, a fraction just below one can become one: that is no contact.
-    let beta = S::ratio(t, len);
+    let beta = S::div(t, len);
     (beta < S::ONE).then_some((beta, (t, len)))
 }
 

@@ -7,6 +7,7 @@ use core::fmt;
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[non_exhaustive]
 pub enum Error {
     /// Coincident or collinear vertices at the scalar's precision: the triangle has no
     /// well-defined front normal or standard frame.
@@ -20,6 +21,10 @@ pub enum Error {
     NegativeRadius,
     /// A fixed-capacity container (a [`Scene`](crate::Scene)) is full.
     Full,
+    /// The ball is too small for the scalar's rounding at its coordinates: below
+    /// [`slide::min_radius`](crate::slide::min_radius), a response could not keep it out of
+    /// geometry.
+    RadiusTooSmall,
 }
 
 impl fmt::Display for Error {
@@ -30,6 +35,9 @@ impl fmt::Display for Error {
             Error::OutOfRange => "coordinate or radius outside the scalar's safe range",
             Error::NegativeRadius => "negative radius",
             Error::Full => "capacity exhausted",
+            Error::RadiusTooSmall => {
+                "radius below the smallest the scalar resolves at these coordinates"
+            }
         })
     }
 }

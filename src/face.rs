@@ -48,9 +48,9 @@ pub(crate) fn face_point<S: Scalar>(s: &StandardSweep<S>) -> Option<(S, S, S)> {
     if y1 >= r {
         return None;
     }
-    let beta = S::ratio(r - y0, y1 - y0);
-    let xq = p0.x + beta * (p1.x - p0.x);
-    let zq = p0.z + beta * (p1.z - p0.z);
+    let beta = S::div(r - y0, y1 - y0);
+    let xq = p0.x + beta.mul(p1.x - p0.x);
+    let zq = p0.z + beta.mul(p1.z - p0.z);
     Some((beta, xq, zq))
 }
 

@@ -39,12 +39,32 @@ impl Precision {
     /// assert!(e > 1e-4 && e < 3e-4);
     /// ```
     pub const fn distance_error(&self, extent: f64, path: f64) -> f64 {
-        let heights = if self.relative {
-            4.0 * self.epsilon * extent
+        self.epsilon / 2.0 * path + self.height_error(extent)
+    }
+
+    /// The rounding of a height (a coordinate in a triangle's frame) for coordinates within
+    /// `±extent`: four steps of the spacing at `extent` (at least 1) for floats, eight absolute
+    /// steps for fixed-point.
+    pub const fn height_error(&self, extent: f64) -> f64 {
+        if self.relative {
+            4.0 * self.epsilon * if extent > 1.0 { extent } else { 1.0 }
         } else {
             8.0 * self.epsilon
-        };
-        self.epsilon / 2.0 * path + heights
+        }
+    }
+
+    /// The smallest radius [`move_and_slide`](crate::move_and_slide) accepts for coordinates
+    /// within `±extent`: sixteen times [`height_error`](Self::height_error), as
+    /// [`slide::min_radius`](crate::slide::min_radius) computes it in the scalar.
+    ///
+    /// ```
+    /// use ballcast::Scalar;
+    /// use fixed::types::I16F16;
+    /// assert_eq!(I16F16::PRECISION.min_radius(2048.0), 128.0 / 65536.0);
+    /// assert_eq!(f32::PRECISION.min_radius(1000.0), 64.0 * f32::EPSILON as f64 * 1000.0);
+    /// ```
+    pub const fn min_radius(&self, extent: f64) -> f64 {
+        16.0 * self.height_error(extent)
     }
 }
 
@@ -57,6 +77,8 @@ pub struct Verdict {
     pub fits: bool,
     /// Expected largest contact error along the normal (meaningful only if `fits`).
     pub distance_error: f64,
+    /// The smallest radius [`move_and_slide`](crate::move_and_slide) accepts at the extent.
+    pub min_radius: f64,
 }
 
 /// Every scalar's verdict for a scene with coordinates within `±extent`, radii up to `radius`
@@ -84,6 +106,7 @@ impl Verdict {
             precision,
             fits: precision.fits(extent, radius),
             distance_error: precision.distance_error(extent, path),
+            min_radius: precision.min_radius(extent),
         }
     }
 }

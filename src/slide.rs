@@ -1,7 +1,22 @@
-//! Collision response: move a ball through a [`Scene`](crate::Scene), sliding along what it touches.
+//! Collision response: move a ball through a [`Geometry`], sliding along what it touches.
+//!
+//! The rules are Quake's fly-move (`SV_FlyMove`, id Software, 1996), kept exact enough for
+//! fixed point:
+//! 1. Sweep the remaining motion; without contact, travel all of it.
+//! 2. Travel to the contact, then step a *skin* off along the contact normal ([`skin`]).
+//! 3. Collect every plane touched so far in this call, including all planes touched at the same
+//!    moment ([`SceneHit::planes`]): a ball pushed into a corner meets both walls at once.
+//! 4. Constrain what is left of the motion by all of them at once: remove the part into one
+//!    plane if that leaves it clear of the others; else follow the crease of two planes if
+//!    that does; else stop. Stop too when what is left points against the requested
+//!    displacement: a ball pushed into a corner wider than 90° comes to rest instead of being
+//!    bounced back out along the second wall.
+//!
+//! Every product and quotient rounds to nearest through the [`Scalar`] trait, so a resting ball
+//! pushed into a floor does not creep along it.
 
-use crate::contact::unit;
-use crate::{Error, Geometry, Scalar, SceneHit, Sweep, Vec3, check, vec3::cross};
+use crate::merge::{PLANES, same_plane};
+use crate::{Error, Geometry, Scalar, SceneHit, Sweep, Vec3, check, contact::unit};
 use heapless::Vec;
 
 /// At most this many sweeps per call: each contact costs one, and a ball pressed into a corner
@@ -20,53 +35,81 @@ pub struct Slide<S> {
 }
 
 impl<S: Scalar> Slide<S> {
-    /// Removes from `velocity` every component pointing into a contact's normal, in contact
-    /// order: what a caller does to its velocity after the move. Never lengthens it by more
-    /// than rounding.
+    /// Constrains `velocity` by every plane the move touched, with the same rules as the move
+    /// itself: what a caller does to its velocity afterwards. Never lengthens it by more than
+    /// rounding, and never turns it against itself.
     ///
     /// Errors: [`Error::NonFinite`] or [`Error::OutOfRange`] for a velocity component beyond
     /// `±`[`Scalar::LIMIT`].
     pub fn clip(&self, velocity: Vec3<S>) -> Result<Vec3<S>, Error> {
-        let mut v = check::point(velocity, S::LIMIT)?;
+        let v = check::point(velocity, S::LIMIT)?;
+        let mut planes: Planes<S> = Vec::new();
         for hit in self.contacts.iter().flatten() {
-            v = remove_into(v, hit.normal);
+            add_planes(&mut planes, hit);
         }
-        Ok(v)
+        Ok(constrain(v, &planes, v))
     }
 }
 
-/// `v` without its component into `n` (unit): unchanged if `v` does not point into `n`.
-fn remove_into<S: Scalar>(v: Vec3<S>, n: Vec3<S>) -> Vec3<S> {
-    let into = v.dot(n);
-    if into < S::ZERO { v - n * into } else { v }
-}
+/// The planes a call has touched: up to [`PLANES`] per contact.
+type Planes<S> = Vec<Vec3<S>, { MAX_SLIDES * PLANES }>;
 
-/// Moves a ball of `radius` from `position` by `displacement` through `scene` (a [`Scene`](crate::Scene)
-/// or a slice of prepared triangles): it travels to
-/// the first contact, loses the part of the remaining motion that points into the contact
-/// normal, and continues with the rest, for at most [`MAX_SLIDES`] sweeps.
-///
-/// Where the new direction would run into a previous contact's plane, the motion follows the
-/// crease of the two planes; against a third plane it stops. After each contact the ball is
-/// lifted off the surface by a skin of `radius / 1024 + 4 EPSILON` along the normal, so the
-/// next sweep does not meet the same plane again at once through rounding. Apart from those
-/// skins, the motion's length never grows, so a slide cannot gain speed. A ball that starts overlapping geometry is not pushed out, but
-/// cannot move further in (see [`StandardTriangle::cast`](crate::StandardTriangle::cast)).
-///
-/// Errors: [`Error::NonFinite`] or [`Error::OutOfRange`] when `position`, `displacement` or the
-/// target is outside `±`[`Scalar::LIMIT`], [`Error::NegativeRadius`]; checked before any
-/// arithmetic, so fixed-point cannot overflow.
+/// The gap kept between a ball of `radius` and what it touched, for centres within `±extent`:
+/// `radius / 1024` plus twice the rounding of a height there, so that the next sweep does not
+/// meet the same plane again at once through rounding.
 ///
 /// ```
-/// use ballcast::{Scene, Triangle, Vec3, move_and_slide};
+/// use ballcast::slide::skin;
+/// assert_eq!(skin(0.5f64, 1.0), 0.5 / 1024.0 + 8.0 * f64::EPSILON);
+/// ```
+pub fn skin<S: Scalar>(radius: S, extent: S) -> S {
+    let e = S::height_error(extent);
+    S::div_pow2(radius, 10) + e + e
+}
+
+/// The smallest radius [`move_and_slide`] accepts for centres within `±extent`: sixteen times
+/// the rounding of a height there, so that the skin and the seam margins stay well above the
+/// rounding of the frames they protect against. Smaller balls are refused with
+/// [`Error::RadiusTooSmall`]; [`Precision::min_radius`](crate::Precision::min_radius) gives the
+/// same figure for planning.
+///
+/// ```
+/// use ballcast::slide::min_radius;
+/// use fixed::types::I16F16;
+/// // I16F16: 128 steps of 2^-16 anywhere in its range.
+/// assert_eq!(min_radius(I16F16::from_num(2048)), I16F16::from_bits(128));
+/// ```
+pub fn min_radius<S: Scalar>(extent: S) -> S {
+    let e = S::height_error(extent);
+    let e4 = e + e + e + e;
+    e4 + e4 + e4 + e4
+}
+
+/// Moves a ball of `radius` from `position` by `displacement` through `scene` (a
+/// [`Scene`](crate::Scene), a mesh, or a slice of prepared triangles), sliding along what it
+/// touches by the rules in the [module docs](self), for at most [`MAX_SLIDES`] sweeps.
+///
+/// Guarantees, in every scalar: the motion's length never grows beyond the skins, so a slide
+/// cannot gain speed; it never runs against `displacement` apart from the skins; a ball that
+/// starts overlapping geometry is not carried further in (each call lifts it by a skin while
+/// the displacement does not move it away).
+///
+/// Errors, checked before any arithmetic so fixed-point cannot overflow:
+/// [`Error::NonFinite`] or [`Error::OutOfRange`] when `position`, `displacement`, the target or
+/// `radius` is outside `±`[`Scalar::LIMIT`], [`Error::NegativeRadius`], and
+/// [`Error::RadiusTooSmall`] below [`min_radius`] at the larger of the start's and target's
+/// coordinates.
+///
+/// ```
+/// use ballcast::{Scene, Triangle, Vec3, move_and_slide, slide::skin};
 /// let v = Vec3::new;
 /// let mut s: Scene<f64, 4> = Scene::new();
 /// s.push(Triangle::new(v(-9.0, 0.0, -9.0), v(-9.0, 0.0, 9.0), v(9.0, 0.0, 0.0)))?;
 /// // Thrown down and sideways at a floor: it stops at the floor and slides the rest sideways,
-/// // resting a skin (0.5 / 1024 + 4 EPSILON) above it.
+/// // resting a skin above it.
 /// let out = move_and_slide(&s, v(0.0, 1.0, 0.0), v(2.0, -2.0, 0.0), 0.5)?;
 /// assert_eq!(out.position.x, 2.0);
-/// assert!((out.position.y - 0.5 - 0.5 / 1024.0).abs() < 1e-12);
+/// assert!((out.position.y - 0.5 - skin(0.5, 2.0)).abs() < 1e-12);
 /// assert_eq!(out.blocked, v(0.0, -1.5, 0.0));
 /// # Ok::<(), ballcast::Error>(())
 /// ```
@@ -79,16 +122,22 @@ pub fn move_and_slide<S: Scalar, G: Geometry<S> + ?Sized>(
     // Inside these ranges `position + displacement` stays within 2 * LIMIT: no overflow.
     check::point(position, S::LIMIT)?;
     check::point(displacement, S::LIMIT)?;
+    check::radius(radius)?;
+    let target = check::point(position + displacement, S::LIMIT)?;
+    let (a, b) = (magnitude(position), magnitude(target));
+    let extent = if a > b { a } else { b };
+    if radius < min_radius(extent) {
+        return Err(Error::RadiusTooSmall);
+    }
+    let skin = skin(radius, extent);
     let zero = Vec3::new(S::ZERO, S::ZERO, S::ZERO);
     let mut out = Slide {
         position,
         blocked: zero,
         contacts: [None; MAX_SLIDES],
     };
-    let four = S::ONE + S::ONE + S::ONE + S::ONE;
-    let skin = radius / (four * four * four * four * four) + S::EPSILON * four;
     let mut rest = displacement;
-    let mut planes: Vec<Vec3<S>, MAX_SLIDES> = Vec::new();
+    let mut planes: Planes<S> = Vec::new();
     for slot in out.contacts.iter_mut() {
         if rest == zero {
             break;
@@ -100,24 +149,69 @@ pub fn move_and_slide<S: Scalar, G: Geometry<S> + ?Sized>(
             break;
         };
         *slot = Some(hit);
-        // Stop a skin's width short along the normal: a slide that starts exactly touching would
-        // otherwise meet the same plane again at alpha 0 whenever rounding tilts it inwards.
-        out.position = out.position + rest * hit.alpha + hit.normal * skin;
-        let left = rest * (S::ONE - hit.alpha);
-        rest = remove_into(left, hit.normal);
-        // Where the slide runs back into an earlier plane, follow the crease of the two.
-        for p in planes.iter() {
-            if rest.dot(*p) < S::ZERO {
-                rest = match unit(cross(*p, hit.normal)) {
-                    Some(c) if planes.len() < 2 => c * rest.dot(c),
-                    _ => zero,
-                };
-                break;
-            }
-        }
+        out.position = out.position + rest.scale(hit.alpha) + hit.normal.scale(skin);
+        let left = rest.scale(S::ONE - hit.alpha);
+        add_planes(&mut planes, &hit);
+        rest = constrain(left, &planes, displacement);
         out.blocked = out.blocked + (left - rest);
-        let _ = planes.push(hit.normal);
     }
     out.blocked = out.blocked + rest;
     Ok(out)
+}
+
+/// The largest coordinate magnitude of a point.
+fn magnitude<S: Scalar>(p: Vec3<S>) -> S {
+    crate::scalar::largest(p.x.abs(), p.y.abs(), p.z.abs())
+}
+
+/// Adds a contact's planes to those already touched, each distinct plane once.
+fn add_planes<S: Scalar>(planes: &mut Planes<S>, hit: &SceneHit<S>) {
+    for n in hit.planes.iter().flatten() {
+        if !planes.iter().any(|p| same_plane(*p, *n)) {
+            // Room for every plane of every contact: cannot fail.
+            let _ = planes.push(*n);
+        }
+    }
+}
+
+/// `v` constrained by every plane (unit normals): unchanged if it moves into none; else the
+/// first of: `v` without its part into one plane, along the crease of two, that moves into
+/// no other plane (beyond rounding); else zero. Zero too if the result runs against `primal`.
+fn constrain<S: Scalar>(v: Vec3<S>, planes: &[Vec3<S>], primal: Vec3<S>) -> Vec3<S> {
+    let zero = Vec3::new(S::ZERO, S::ZERO, S::ZERO);
+    let slack = -S::height_error(magnitude(v));
+    let clear = |w: Vec3<S>| planes.iter().all(|n| S::dot(w, *n) >= slack);
+    let keep = |w: Vec3<S>| if S::dot(w, primal) > S::ZERO { w } else { zero };
+    if clear(v) {
+        return v;
+    }
+    for n in planes {
+        let into = S::dot(v, *n);
+        let w = if into < S::ZERO { v - n.scale(into) } else { v };
+        if clear(w) {
+            return keep(w);
+        }
+    }
+    for (i, a) in planes.iter().enumerate() {
+        for b in &planes[i + 1..] {
+            if let Some(c) = unit(cross_unit(*a, *b)) {
+                let w = c.scale(S::dot(v, c));
+                if clear(w) {
+                    return keep(w);
+                }
+            }
+        }
+    }
+    zero
+}
+
+/// The cross product of two unit vectors, each component rounded once.
+fn cross_unit<S: Scalar>(a: Vec3<S>, b: Vec3<S>) -> Vec3<S> {
+    let z = S::ZERO;
+    let d = |p: S, q: S, r: S, s: S| S::dot(Vec3::new(p, -q, z), Vec3::new(r, s, z));
+    Vec3::new(
+        d(a.y, a.z, b.z, b.y),
+        d(a.z, a.x, b.x, b.z),
+        d(a.x, a.y, b.y, b.x),
+    )
 }

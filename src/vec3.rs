@@ -1,5 +1,6 @@
 //! A three-component vector with public fields, generic over its component type.
 
+use crate::Scalar;
 use core::ops::{Add, Mul, Neg, Sub};
 
 /// A point or direction in 3-space: a plain `Copy` struct with no invariant.
@@ -74,6 +75,24 @@ impl<T: Mul<Output = T> + Copy> Mul<T> for Vec3<T> {
     type Output = Self;
     fn mul(self, s: T) -> Self {
         Self::new(self.x * s, self.y * s, self.z * s)
+    }
+}
+
+impl<S: Scalar> Vec3<S> {
+    /// Every component times `s`, each rounded to nearest through the scalar
+    /// ([`Scalar::mul`]): unlike `*` on fixed-point types, which rounds towards −∞, this has no
+    /// bias that could accumulate over many steps.
+    ///
+    /// ```
+    /// use ballcast::Vec3;
+    /// use fixed::types::I16F16;
+    /// let tiny = I16F16::from_bits(1); // 2^-16
+    /// let v = Vec3::new(tiny, -tiny, tiny).scale(I16F16::from_num(0.5));
+    /// // Half a step rounds away from zero in both directions, symmetrically.
+    /// assert_eq!(v, Vec3::new(tiny, -tiny, tiny));
+    /// ```
+    pub fn scale(self, s: S) -> Self {
+        self.map(|c| c.mul(s))
     }
 }
 

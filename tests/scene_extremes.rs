@@ -121,9 +121,16 @@ fn ball_starting_in_contact<S: Tolerance>() {
 
 fn zero_length_sweep<S: Tolerance>() {
     let scene = floor::<S>([0.0; 3]);
+    // A ball overlapping the floor that does not move away is touching it at alpha 0, pushed
+    // straight up; one clear of it touches nothing.
     let p = v::<S>([1.0, 0.25, 1.0]);
+    let hit = scene
+        .cast(&Sweep::new(p, p, S::from_f64(0.5)).unwrap())
+        .unwrap();
+    assert_eq!((hit.alpha, hit.normal), (S::ZERO, v::<S>([0.0, 1.0, 0.0])));
+    let clear = v::<S>([1.0, 0.75, 1.0]);
     assert_eq!(
-        scene.cast(&Sweep::new(p, p, S::from_f64(0.5)).unwrap()),
+        scene.cast(&Sweep::new(clear, clear, S::from_f64(0.5)).unwrap()),
         None
     );
     let z = v::<S>([0.0; 3]);

@@ -13,13 +13,13 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         ),
         axes: [
             Vec3::new(
-                I2F30::from_bits(747657840),
+                I2F30::from_bits(747657839),
                 I2F30::from_bits(186914460),
-                I2F30::from_bits(747657840),
+                I2F30::from_bits(747657839),
             ),
             Vec3::new(
                 I2F30::from_bits(-132168482),
-                I2F30::from_bits(1057347857),
+                I2F30::from_bits(1057347856),
                 I2F30::from_bits(-132168482),
             ),
             Vec3::new(
@@ -40,8 +40,8 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         ),
         edges: [
             Edge {
-                dir: [I2F30::from_bits(765064154), I2F30::from_bits(753391231)],
-                len: I16F16::from_bits(66045),
+                dir: [I2F30::from_bits(765064153), I2F30::from_bits(753391230)],
+                len: I16F16::from_bits(66046),
             },
             Edge {
                 dir: [I2F30::from_bits(765072157), I2F30::from_bits(-753383103)],
@@ -63,19 +63,19 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         ),
         axes: [
             Vec3::new(
-                I2F30::from_bits(1065450259),
+                I2F30::from_bits(1065450257),
                 I2F30::from_bits(133181282),
                 I2F30::from_bits(0),
             ),
             Vec3::new(
                 I2F30::from_bits(-132168482),
-                I2F30::from_bits(1057347857),
-                I2F30::from_bits(-132168483),
+                I2F30::from_bits(1057347856),
+                I2F30::from_bits(-132168482),
             ),
             Vec3::new(
                 I2F30::from_bits(-16393483),
                 I2F30::from_bits(131147861),
-                I2F30::from_bits(1065576369),
+                I2F30::from_bits(1065576368),
             ),
         ],
         shape: [
@@ -90,12 +90,12 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         ),
         edges: [
             Edge {
-                dir: [I2F30::from_bits(765068747), I2F30::from_bits(753386567)],
-                len: I16F16::from_bits(94118),
+                dir: [I2F30::from_bits(765068746), I2F30::from_bits(753386566)],
+                len: I16F16::from_bits(94119),
             },
             Edge {
-                dir: [I2F30::from_bits(-16517651), I2F30::from_bits(-1073614770)],
-                len: I16F16::from_bits(66045),
+                dir: [I2F30::from_bits(-16517651), I2F30::from_bits(-1073614768)],
+                len: I16F16::from_bits(66046),
             },
             Edge {
                 dir: [I2F30::from_bits(-1073741824), I2F30::from_bits(0)],
@@ -113,13 +113,13 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         ),
         axes: [
             Vec3::new(
-                I2F30::from_bits(747657840),
+                I2F30::from_bits(747657839),
                 I2F30::from_bits(186914460),
-                I2F30::from_bits(747657840),
+                I2F30::from_bits(747657839),
             ),
             Vec3::new(
                 I2F30::from_bits(-132168482),
-                I2F30::from_bits(1057347857),
+                I2F30::from_bits(1057347856),
                 I2F30::from_bits(-132168482),
             ),
             Vec3::new(
@@ -140,8 +140,8 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         ),
         edges: [
             Edge {
-                dir: [I2F30::from_bits(765064154), I2F30::from_bits(753391231)],
-                len: I16F16::from_bits(66045),
+                dir: [I2F30::from_bits(765064153), I2F30::from_bits(753391230)],
+                len: I16F16::from_bits(66046),
             },
             Edge {
                 dir: [I2F30::from_bits(765072157), I2F30::from_bits(-753383103)],
@@ -163,19 +163,19 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         ),
         axes: [
             Vec3::new(
-                I2F30::from_bits(1065450259),
+                I2F30::from_bits(1065450257),
                 I2F30::from_bits(133181282),
                 I2F30::from_bits(0),
             ),
             Vec3::new(
                 I2F30::from_bits(-132168482),
-                I2F30::from_bits(1057347857),
-                I2F30::from_bits(-132168483),
+                I2F30::from_bits(1057347856),
+                I2F30::from_bits(-132168482),
             ),
             Vec3::new(
                 I2F30::from_bits(-16393483),
                 I2F30::from_bits(131147861),
-                I2F30::from_bits(1065576369),
+                I2F30::from_bits(1065576368),
             ),
         ],
         shape: [
@@ -190,12 +190,12 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         ),
         edges: [
             Edge {
-                dir: [I2F30::from_bits(765068747), I2F30::from_bits(753386567)],
-                len: I16F16::from_bits(94118),
+                dir: [I2F30::from_bits(765068746), I2F30::from_bits(753386566)],
+                len: I16F16::from_bits(94119),
             },
             Edge {
-                dir: [I2F30::from_bits(-16517651), I2F30::from_bits(-1073614770)],
-                len: I16F16::from_bits(66045),
+                dir: [I2F30::from_bits(-16517651), I2F30::from_bits(-1073614768)],
+                len: I16F16::from_bits(66046),
             },
             Edge {
                 dir: [I2F30::from_bits(-1073741824), I2F30::from_bits(0)],
@@ -213,13 +213,13 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         ),
         axes: [
             Vec3::new(
-                I2F30::from_bits(747657840),
+                I2F30::from_bits(747657839),
                 I2F30::from_bits(186914460),
-                I2F30::from_bits(747657840),
+                I2F30::from_bits(747657839),
             ),
             Vec3::new(
                 I2F30::from_bits(-132168482),
-                I2F30::from_bits(1057347857),
+                I2F30::from_bits(1057347856),
                 I2F30::from_bits(-132168482),
             ),
             Vec3::new(
@@ -240,8 +240,8 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         ),
         edges: [
             Edge {
-                dir: [I2F30::from_bits(765064154), I2F30::from_bits(753391231)],
-                len: I16F16::from_bits(66045),
+                dir: [I2F30::from_bits(765064153), I2F30::from_bits(753391230)],
+                len: I16F16::from_bits(66046),
             },
             Edge {
                 dir: [I2F30::from_bits(765072157), I2F30::from_bits(-753383103)],
@@ -263,19 +263,19 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         ),
         axes: [
             Vec3::new(
-                I2F30::from_bits(1065450259),
+                I2F30::from_bits(1065450257),
                 I2F30::from_bits(133181282),
                 I2F30::from_bits(0),
             ),
             Vec3::new(
                 I2F30::from_bits(-132168482),
-                I2F30::from_bits(1057347857),
-                I2F30::from_bits(-132168483),
+                I2F30::from_bits(1057347856),
+                I2F30::from_bits(-132168482),
             ),
             Vec3::new(
                 I2F30::from_bits(-16393483),
                 I2F30::from_bits(131147861),
-                I2F30::from_bits(1065576369),
+                I2F30::from_bits(1065576368),
             ),
         ],
         shape: [
@@ -290,12 +290,12 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         ),
         edges: [
             Edge {
-                dir: [I2F30::from_bits(765068747), I2F30::from_bits(753386567)],
-                len: I16F16::from_bits(94118),
+                dir: [I2F30::from_bits(765068746), I2F30::from_bits(753386566)],
+                len: I16F16::from_bits(94119),
             },
             Edge {
-                dir: [I2F30::from_bits(-16517651), I2F30::from_bits(-1073614770)],
-                len: I16F16::from_bits(66045),
+                dir: [I2F30::from_bits(-16517651), I2F30::from_bits(-1073614768)],
+                len: I16F16::from_bits(66046),
             },
             Edge {
                 dir: [I2F30::from_bits(-1073741824), I2F30::from_bits(0)],
@@ -313,13 +313,13 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         ),
         axes: [
             Vec3::new(
-                I2F30::from_bits(747657840),
+                I2F30::from_bits(747657839),
                 I2F30::from_bits(186914460),
-                I2F30::from_bits(747657840),
+                I2F30::from_bits(747657839),
             ),
             Vec3::new(
                 I2F30::from_bits(-132168482),
-                I2F30::from_bits(1057347857),
+                I2F30::from_bits(1057347856),
                 I2F30::from_bits(-132168482),
             ),
             Vec3::new(
@@ -340,8 +340,8 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         ),
         edges: [
             Edge {
-                dir: [I2F30::from_bits(765064154), I2F30::from_bits(753391231)],
-                len: I16F16::from_bits(66045),
+                dir: [I2F30::from_bits(765064153), I2F30::from_bits(753391230)],
+                len: I16F16::from_bits(66046),
             },
             Edge {
                 dir: [I2F30::from_bits(765072157), I2F30::from_bits(-753383103)],
@@ -363,19 +363,19 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         ),
         axes: [
             Vec3::new(
-                I2F30::from_bits(1065450259),
+                I2F30::from_bits(1065450257),
                 I2F30::from_bits(133181282),
                 I2F30::from_bits(0),
             ),
             Vec3::new(
                 I2F30::from_bits(-132168482),
-                I2F30::from_bits(1057347857),
-                I2F30::from_bits(-132168483),
+                I2F30::from_bits(1057347856),
+                I2F30::from_bits(-132168482),
             ),
             Vec3::new(
                 I2F30::from_bits(-16393483),
                 I2F30::from_bits(131147861),
-                I2F30::from_bits(1065576369),
+                I2F30::from_bits(1065576368),
             ),
         ],
         shape: [
@@ -390,12 +390,12 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         ),
         edges: [
             Edge {
-                dir: [I2F30::from_bits(765068747), I2F30::from_bits(753386567)],
-                len: I16F16::from_bits(94118),
+                dir: [I2F30::from_bits(765068746), I2F30::from_bits(753386566)],
+                len: I16F16::from_bits(94119),
             },
             Edge {
-                dir: [I2F30::from_bits(-16517651), I2F30::from_bits(-1073614770)],
-                len: I16F16::from_bits(66045),
+                dir: [I2F30::from_bits(-16517651), I2F30::from_bits(-1073614768)],
+                len: I16F16::from_bits(66046),
             },
             Edge {
                 dir: [I2F30::from_bits(-1073741824), I2F30::from_bits(0)],
@@ -413,13 +413,13 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         ),
         axes: [
             Vec3::new(
-                I2F30::from_bits(747657840),
+                I2F30::from_bits(747657839),
                 I2F30::from_bits(186914460),
-                I2F30::from_bits(747657840),
+                I2F30::from_bits(747657839),
             ),
             Vec3::new(
                 I2F30::from_bits(-132168482),
-                I2F30::from_bits(1057347857),
+                I2F30::from_bits(1057347856),
                 I2F30::from_bits(-132168482),
             ),
             Vec3::new(
@@ -440,8 +440,8 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         ),
         edges: [
             Edge {
-                dir: [I2F30::from_bits(765064154), I2F30::from_bits(753391231)],
-                len: I16F16::from_bits(66045),
+                dir: [I2F30::from_bits(765064153), I2F30::from_bits(753391230)],
+                len: I16F16::from_bits(66046),
             },
             Edge {
                 dir: [I2F30::from_bits(765072157), I2F30::from_bits(-753383103)],
@@ -463,19 +463,19 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         ),
         axes: [
             Vec3::new(
-                I2F30::from_bits(1065450259),
+                I2F30::from_bits(1065450257),
                 I2F30::from_bits(133181282),
                 I2F30::from_bits(0),
             ),
             Vec3::new(
                 I2F30::from_bits(-132168482),
-                I2F30::from_bits(1057347857),
-                I2F30::from_bits(-132168483),
+                I2F30::from_bits(1057347856),
+                I2F30::from_bits(-132168482),
             ),
             Vec3::new(
                 I2F30::from_bits(-16393483),
                 I2F30::from_bits(131147861),
-                I2F30::from_bits(1065576369),
+                I2F30::from_bits(1065576368),
             ),
         ],
         shape: [
@@ -490,12 +490,12 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         ),
         edges: [
             Edge {
-                dir: [I2F30::from_bits(765068747), I2F30::from_bits(753386567)],
-                len: I16F16::from_bits(94118),
+                dir: [I2F30::from_bits(765068746), I2F30::from_bits(753386566)],
+                len: I16F16::from_bits(94119),
             },
             Edge {
-                dir: [I2F30::from_bits(-16517651), I2F30::from_bits(-1073614770)],
-                len: I16F16::from_bits(66045),
+                dir: [I2F30::from_bits(-16517651), I2F30::from_bits(-1073614768)],
+                len: I16F16::from_bits(66046),
             },
             Edge {
                 dir: [I2F30::from_bits(-1073741824), I2F30::from_bits(0)],
@@ -513,13 +513,13 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         ),
         axes: [
             Vec3::new(
-                I2F30::from_bits(747657840),
+                I2F30::from_bits(747657839),
                 I2F30::from_bits(186914460),
-                I2F30::from_bits(747657840),
+                I2F30::from_bits(747657839),
             ),
             Vec3::new(
                 I2F30::from_bits(-132168482),
-                I2F30::from_bits(1057347857),
+                I2F30::from_bits(1057347856),
                 I2F30::from_bits(-132168482),
             ),
             Vec3::new(
@@ -540,8 +540,8 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         ),
         edges: [
             Edge {
-                dir: [I2F30::from_bits(765064154), I2F30::from_bits(753391231)],
-                len: I16F16::from_bits(66045),
+                dir: [I2F30::from_bits(765064153), I2F30::from_bits(753391230)],
+                len: I16F16::from_bits(66046),
             },
             Edge {
                 dir: [I2F30::from_bits(765072157), I2F30::from_bits(-753383103)],
@@ -563,19 +563,19 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         ),
         axes: [
             Vec3::new(
-                I2F30::from_bits(1065450259),
+                I2F30::from_bits(1065450257),
                 I2F30::from_bits(133181282),
                 I2F30::from_bits(0),
             ),
             Vec3::new(
                 I2F30::from_bits(-132168482),
-                I2F30::from_bits(1057347857),
-                I2F30::from_bits(-132168483),
+                I2F30::from_bits(1057347856),
+                I2F30::from_bits(-132168482),
             ),
             Vec3::new(
                 I2F30::from_bits(-16393483),
                 I2F30::from_bits(131147861),
-                I2F30::from_bits(1065576369),
+                I2F30::from_bits(1065576368),
             ),
         ],
         shape: [
@@ -590,12 +590,12 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         ),
         edges: [
             Edge {
-                dir: [I2F30::from_bits(765068747), I2F30::from_bits(753386567)],
-                len: I16F16::from_bits(94118),
+                dir: [I2F30::from_bits(765068746), I2F30::from_bits(753386566)],
+                len: I16F16::from_bits(94119),
             },
             Edge {
-                dir: [I2F30::from_bits(-16517651), I2F30::from_bits(-1073614770)],
-                len: I16F16::from_bits(66045),
+                dir: [I2F30::from_bits(-16517651), I2F30::from_bits(-1073614768)],
+                len: I16F16::from_bits(66046),
             },
             Edge {
                 dir: [I2F30::from_bits(-1073741824), I2F30::from_bits(0)],
@@ -613,13 +613,13 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         ),
         axes: [
             Vec3::new(
-                I2F30::from_bits(747657840),
+                I2F30::from_bits(747657839),
                 I2F30::from_bits(186914460),
-                I2F30::from_bits(747657840),
+                I2F30::from_bits(747657839),
             ),
             Vec3::new(
                 I2F30::from_bits(-132168482),
-                I2F30::from_bits(1057347857),
+                I2F30::from_bits(1057347856),
                 I2F30::from_bits(-132168482),
             ),
             Vec3::new(
@@ -640,8 +640,8 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         ),
         edges: [
             Edge {
-                dir: [I2F30::from_bits(765064154), I2F30::from_bits(753391231)],
-                len: I16F16::from_bits(66045),
+                dir: [I2F30::from_bits(765064153), I2F30::from_bits(753391230)],
+                len: I16F16::from_bits(66046),
             },
             Edge {
                 dir: [I2F30::from_bits(765072157), I2F30::from_bits(-753383103)],
@@ -663,19 +663,19 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         ),
         axes: [
             Vec3::new(
-                I2F30::from_bits(1065450259),
+                I2F30::from_bits(1065450257),
                 I2F30::from_bits(133181282),
                 I2F30::from_bits(0),
             ),
             Vec3::new(
                 I2F30::from_bits(-132168482),
-                I2F30::from_bits(1057347857),
-                I2F30::from_bits(-132168483),
+                I2F30::from_bits(1057347856),
+                I2F30::from_bits(-132168482),
             ),
             Vec3::new(
                 I2F30::from_bits(-16393483),
                 I2F30::from_bits(131147861),
-                I2F30::from_bits(1065576369),
+                I2F30::from_bits(1065576368),
             ),
         ],
         shape: [
@@ -690,12 +690,12 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         ),
         edges: [
             Edge {
-                dir: [I2F30::from_bits(765068747), I2F30::from_bits(753386567)],
-                len: I16F16::from_bits(94118),
+                dir: [I2F30::from_bits(765068746), I2F30::from_bits(753386566)],
+                len: I16F16::from_bits(94119),
             },
             Edge {
-                dir: [I2F30::from_bits(-16517651), I2F30::from_bits(-1073614770)],
-                len: I16F16::from_bits(66045),
+                dir: [I2F30::from_bits(-16517651), I2F30::from_bits(-1073614768)],
+                len: I16F16::from_bits(66046),
             },
             Edge {
                 dir: [I2F30::from_bits(-1073741824), I2F30::from_bits(0)],
@@ -713,13 +713,13 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         ),
         axes: [
             Vec3::new(
-                I2F30::from_bits(747657840),
+                I2F30::from_bits(747657839),
                 I2F30::from_bits(186914460),
-                I2F30::from_bits(747657840),
+                I2F30::from_bits(747657839),
             ),
             Vec3::new(
                 I2F30::from_bits(-132168482),
-                I2F30::from_bits(1057347857),
+                I2F30::from_bits(1057347856),
                 I2F30::from_bits(-132168482),
             ),
             Vec3::new(
@@ -740,8 +740,8 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         ),
         edges: [
             Edge {
-                dir: [I2F30::from_bits(765064154), I2F30::from_bits(753391231)],
-                len: I16F16::from_bits(66045),
+                dir: [I2F30::from_bits(765064153), I2F30::from_bits(753391230)],
+                len: I16F16::from_bits(66046),
             },
             Edge {
                 dir: [I2F30::from_bits(765072157), I2F30::from_bits(-753383103)],
@@ -763,19 +763,19 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         ),
         axes: [
             Vec3::new(
-                I2F30::from_bits(1065450259),
+                I2F30::from_bits(1065450257),
                 I2F30::from_bits(133181282),
                 I2F30::from_bits(0),
             ),
             Vec3::new(
                 I2F30::from_bits(-132168482),
-                I2F30::from_bits(1057347857),
-                I2F30::from_bits(-132168483),
+                I2F30::from_bits(1057347856),
+                I2F30::from_bits(-132168482),
             ),
             Vec3::new(
                 I2F30::from_bits(-16393483),
                 I2F30::from_bits(131147861),
-                I2F30::from_bits(1065576369),
+                I2F30::from_bits(1065576368),
             ),
         ],
         shape: [
@@ -790,12 +790,12 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         ),
         edges: [
             Edge {
-                dir: [I2F30::from_bits(765068747), I2F30::from_bits(753386567)],
-                len: I16F16::from_bits(94118),
+                dir: [I2F30::from_bits(765068746), I2F30::from_bits(753386566)],
+                len: I16F16::from_bits(94119),
             },
             Edge {
-                dir: [I2F30::from_bits(-16517651), I2F30::from_bits(-1073614770)],
-                len: I16F16::from_bits(66045),
+                dir: [I2F30::from_bits(-16517651), I2F30::from_bits(-1073614768)],
+                len: I16F16::from_bits(66046),
             },
             Edge {
                 dir: [I2F30::from_bits(-1073741824), I2F30::from_bits(0)],
@@ -813,13 +813,13 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         ),
         axes: [
             Vec3::new(
-                I2F30::from_bits(747657840),
+                I2F30::from_bits(747657839),
                 I2F30::from_bits(186914460),
-                I2F30::from_bits(747657840),
+                I2F30::from_bits(747657839),
             ),
             Vec3::new(
                 I2F30::from_bits(-132168482),
-                I2F30::from_bits(1057347857),
+                I2F30::from_bits(1057347856),
                 I2F30::from_bits(-132168482),
             ),
             Vec3::new(
@@ -840,8 +840,8 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         ),
         edges: [
             Edge {
-                dir: [I2F30::from_bits(765064154), I2F30::from_bits(753391231)],
-                len: I16F16::from_bits(66045),
+                dir: [I2F30::from_bits(765064153), I2F30::from_bits(753391230)],
+                len: I16F16::from_bits(66046),
             },
             Edge {
                 dir: [I2F30::from_bits(765072157), I2F30::from_bits(-753383103)],
@@ -863,19 +863,19 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         ),
         axes: [
             Vec3::new(
-                I2F30::from_bits(1065450259),
+                I2F30::from_bits(1065450257),
                 I2F30::from_bits(133181282),
                 I2F30::from_bits(0),
             ),
             Vec3::new(
                 I2F30::from_bits(-132168482),
-                I2F30::from_bits(1057347857),
-                I2F30::from_bits(-132168483),
+                I2F30::from_bits(1057347856),
+                I2F30::from_bits(-132168482),
             ),
             Vec3::new(
                 I2F30::from_bits(-16393483),
                 I2F30::from_bits(131147861),
-                I2F30::from_bits(1065576369),
+                I2F30::from_bits(1065576368),
             ),
         ],
         shape: [
@@ -890,12 +890,12 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         ),
         edges: [
             Edge {
-                dir: [I2F30::from_bits(765068747), I2F30::from_bits(753386567)],
-                len: I16F16::from_bits(94118),
+                dir: [I2F30::from_bits(765068746), I2F30::from_bits(753386566)],
+                len: I16F16::from_bits(94119),
             },
             Edge {
-                dir: [I2F30::from_bits(-16517651), I2F30::from_bits(-1073614770)],
-                len: I16F16::from_bits(66045),
+                dir: [I2F30::from_bits(-16517651), I2F30::from_bits(-1073614768)],
+                len: I16F16::from_bits(66046),
             },
             Edge {
                 dir: [I2F30::from_bits(-1073741824), I2F30::from_bits(0)],
@@ -913,13 +913,13 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         ),
         axes: [
             Vec3::new(
-                I2F30::from_bits(747657840),
+                I2F30::from_bits(747657839),
                 I2F30::from_bits(186914460),
-                I2F30::from_bits(747657840),
+                I2F30::from_bits(747657839),
             ),
             Vec3::new(
                 I2F30::from_bits(-132168482),
-                I2F30::from_bits(1057347857),
+                I2F30::from_bits(1057347856),
                 I2F30::from_bits(-132168482),
             ),
             Vec3::new(
@@ -940,8 +940,8 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         ),
         edges: [
             Edge {
-                dir: [I2F30::from_bits(765064154), I2F30::from_bits(753391231)],
-                len: I16F16::from_bits(66045),
+                dir: [I2F30::from_bits(765064153), I2F30::from_bits(753391230)],
+                len: I16F16::from_bits(66046),
             },
             Edge {
                 dir: [I2F30::from_bits(765072157), I2F30::from_bits(-753383103)],
@@ -963,19 +963,19 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         ),
         axes: [
             Vec3::new(
-                I2F30::from_bits(1065450259),
+                I2F30::from_bits(1065450257),
                 I2F30::from_bits(133181282),
                 I2F30::from_bits(0),
             ),
             Vec3::new(
                 I2F30::from_bits(-132168482),
-                I2F30::from_bits(1057347857),
-                I2F30::from_bits(-132168483),
+                I2F30::from_bits(1057347856),
+                I2F30::from_bits(-132168482),
             ),
             Vec3::new(
                 I2F30::from_bits(-16393483),
                 I2F30::from_bits(131147861),
-                I2F30::from_bits(1065576369),
+                I2F30::from_bits(1065576368),
             ),
         ],
         shape: [
@@ -990,12 +990,12 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         ),
         edges: [
             Edge {
-                dir: [I2F30::from_bits(765068747), I2F30::from_bits(753386567)],
-                len: I16F16::from_bits(94118),
+                dir: [I2F30::from_bits(765068746), I2F30::from_bits(753386566)],
+                len: I16F16::from_bits(94119),
             },
             Edge {
-                dir: [I2F30::from_bits(-16517651), I2F30::from_bits(-1073614770)],
-                len: I16F16::from_bits(66045),
+                dir: [I2F30::from_bits(-16517651), I2F30::from_bits(-1073614768)],
+                len: I16F16::from_bits(66046),
             },
             Edge {
                 dir: [I2F30::from_bits(-1073741824), I2F30::from_bits(0)],
@@ -1013,13 +1013,13 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         ),
         axes: [
             Vec3::new(
-                I2F30::from_bits(747657840),
+                I2F30::from_bits(747657839),
                 I2F30::from_bits(186914460),
-                I2F30::from_bits(747657840),
+                I2F30::from_bits(747657839),
             ),
             Vec3::new(
                 I2F30::from_bits(-132168482),
-                I2F30::from_bits(1057347857),
+                I2F30::from_bits(1057347856),
                 I2F30::from_bits(-132168482),
             ),
             Vec3::new(
@@ -1040,8 +1040,8 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         ),
         edges: [
             Edge {
-                dir: [I2F30::from_bits(765064154), I2F30::from_bits(753391231)],
-                len: I16F16::from_bits(66045),
+                dir: [I2F30::from_bits(765064153), I2F30::from_bits(753391230)],
+                len: I16F16::from_bits(66046),
             },
             Edge {
                 dir: [I2F30::from_bits(765072157), I2F30::from_bits(-753383103)],
@@ -1063,19 +1063,19 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         ),
         axes: [
             Vec3::new(
-                I2F30::from_bits(1065450259),
+                I2F30::from_bits(1065450257),
                 I2F30::from_bits(133181282),
                 I2F30::from_bits(0),
             ),
             Vec3::new(
                 I2F30::from_bits(-132168482),
-                I2F30::from_bits(1057347857),
-                I2F30::from_bits(-132168483),
+                I2F30::from_bits(1057347856),
+                I2F30::from_bits(-132168482),
             ),
             Vec3::new(
                 I2F30::from_bits(-16393483),
                 I2F30::from_bits(131147861),
-                I2F30::from_bits(1065576369),
+                I2F30::from_bits(1065576368),
             ),
         ],
         shape: [
@@ -1090,12 +1090,12 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         ),
         edges: [
             Edge {
-                dir: [I2F30::from_bits(765068747), I2F30::from_bits(753386567)],
-                len: I16F16::from_bits(94118),
+                dir: [I2F30::from_bits(765068746), I2F30::from_bits(753386566)],
+                len: I16F16::from_bits(94119),
             },
             Edge {
-                dir: [I2F30::from_bits(-16517651), I2F30::from_bits(-1073614770)],
-                len: I16F16::from_bits(66045),
+                dir: [I2F30::from_bits(-16517651), I2F30::from_bits(-1073614768)],
+                len: I16F16::from_bits(66046),
             },
             Edge {
                 dir: [I2F30::from_bits(-1073741824), I2F30::from_bits(0)],
@@ -1113,13 +1113,13 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         ),
         axes: [
             Vec3::new(
-                I2F30::from_bits(747657840),
+                I2F30::from_bits(747657839),
                 I2F30::from_bits(186914460),
-                I2F30::from_bits(747657840),
+                I2F30::from_bits(747657839),
             ),
             Vec3::new(
                 I2F30::from_bits(-132168482),
-                I2F30::from_bits(1057347857),
+                I2F30::from_bits(1057347856),
                 I2F30::from_bits(-132168482),
             ),
             Vec3::new(
@@ -1140,8 +1140,8 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         ),
         edges: [
             Edge {
-                dir: [I2F30::from_bits(765064154), I2F30::from_bits(753391231)],
-                len: I16F16::from_bits(66045),
+                dir: [I2F30::from_bits(765064153), I2F30::from_bits(753391230)],
+                len: I16F16::from_bits(66046),
             },
             Edge {
                 dir: [I2F30::from_bits(765072157), I2F30::from_bits(-753383103)],
@@ -1163,19 +1163,19 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         ),
         axes: [
             Vec3::new(
-                I2F30::from_bits(1065450259),
+                I2F30::from_bits(1065450257),
                 I2F30::from_bits(133181282),
                 I2F30::from_bits(0),
             ),
             Vec3::new(
                 I2F30::from_bits(-132168482),
-                I2F30::from_bits(1057347857),
-                I2F30::from_bits(-132168483),
+                I2F30::from_bits(1057347856),
+                I2F30::from_bits(-132168482),
             ),
             Vec3::new(
                 I2F30::from_bits(-16393483),
                 I2F30::from_bits(131147861),
-                I2F30::from_bits(1065576369),
+                I2F30::from_bits(1065576368),
             ),
         ],
         shape: [
@@ -1190,12 +1190,12 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         ),
         edges: [
             Edge {
-                dir: [I2F30::from_bits(765068747), I2F30::from_bits(753386567)],
-                len: I16F16::from_bits(94118),
+                dir: [I2F30::from_bits(765068746), I2F30::from_bits(753386566)],
+                len: I16F16::from_bits(94119),
             },
             Edge {
-                dir: [I2F30::from_bits(-16517651), I2F30::from_bits(-1073614770)],
-                len: I16F16::from_bits(66045),
+                dir: [I2F30::from_bits(-16517651), I2F30::from_bits(-1073614768)],
+                len: I16F16::from_bits(66046),
             },
             Edge {
                 dir: [I2F30::from_bits(-1073741824), I2F30::from_bits(0)],
@@ -1218,14 +1218,14 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
                 I2F30::from_bits(670761200),
             ),
             Vec3::new(
-                I2F30::from_bits(-565911630),
-                I2F30::from_bits(905458609),
-                I2F30::from_bits(-113182326),
+                I2F30::from_bits(-565911631),
+                I2F30::from_bits(905458608),
+                I2F30::from_bits(-113182325),
             ),
             Vec3::new(
-                I2F30::from_bits(-618663838),
+                I2F30::from_bits(-618663837),
                 I2F30::from_bits(-282817755),
-                I2F30::from_bits(830777154),
+                I2F30::from_bits(830777153),
             ),
         ],
         shape: [
@@ -1240,12 +1240,12 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         ),
         edges: [
             Edge {
-                dir: [I2F30::from_bits(727977596), I2F30::from_bits(789284566)],
+                dir: [I2F30::from_bits(727977595), I2F30::from_bits(789284565)],
                 len: I16F16::from_bits(66046),
             },
             Edge {
                 dir: [I2F30::from_bits(835432562), I2F30::from_bits(-674517561)],
-                len: I16F16::from_bits(77283),
+                len: I16F16::from_bits(77284),
             },
             Edge {
                 dir: [I2F30::from_bits(-1073741824), I2F30::from_bits(0)],
@@ -1263,18 +1263,18 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         ),
         axes: [
             Vec3::new(
-                I2F30::from_bits(910531247),
-                I2F30::from_bits(569082029),
+                I2F30::from_bits(910531245),
+                I2F30::from_bits(569082028),
                 I2F30::from_bits(0),
             ),
             Vec3::new(
-                I2F30::from_bits(-565911630),
+                I2F30::from_bits(-565911631),
                 I2F30::from_bits(905458609),
-                I2F30::from_bits(-113182327),
+                I2F30::from_bits(-113182326),
             ),
             Vec3::new(
                 I2F30::from_bits(-59986513),
-                I2F30::from_bits(95978421),
+                I2F30::from_bits(95978420),
                 I2F30::from_bits(1067759929),
             ),
         ],
@@ -1291,11 +1291,11 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         edges: [
             Edge {
                 dir: [I2F30::from_bits(835432465), I2F30::from_bits(674517681)],
-                len: I16F16::from_bits(104908),
+                len: I16F16::from_bits(104909),
             },
             Edge {
-                dir: [I2F30::from_bits(-70590125), I2F30::from_bits(-1071418938)],
-                len: I16F16::from_bits(66045),
+                dir: [I2F30::from_bits(-70590125), I2F30::from_bits(-1071418936)],
+                len: I16F16::from_bits(66046),
             },
             Edge {
                 dir: [I2F30::from_bits(-1073741824), I2F30::from_bits(0)],
@@ -1318,14 +1318,14 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
                 I2F30::from_bits(670761200),
             ),
             Vec3::new(
-                I2F30::from_bits(-565911630),
-                I2F30::from_bits(905458609),
-                I2F30::from_bits(-113182326),
+                I2F30::from_bits(-565911631),
+                I2F30::from_bits(905458608),
+                I2F30::from_bits(-113182325),
             ),
             Vec3::new(
-                I2F30::from_bits(-618663838),
+                I2F30::from_bits(-618663837),
                 I2F30::from_bits(-282817755),
-                I2F30::from_bits(830777154),
+                I2F30::from_bits(830777153),
             ),
         ],
         shape: [
@@ -1340,12 +1340,12 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         ),
         edges: [
             Edge {
-                dir: [I2F30::from_bits(727977596), I2F30::from_bits(789284566)],
+                dir: [I2F30::from_bits(727977595), I2F30::from_bits(789284565)],
                 len: I16F16::from_bits(66046),
             },
             Edge {
                 dir: [I2F30::from_bits(835432562), I2F30::from_bits(-674517561)],
-                len: I16F16::from_bits(77283),
+                len: I16F16::from_bits(77284),
             },
             Edge {
                 dir: [I2F30::from_bits(-1073741824), I2F30::from_bits(0)],
@@ -1363,18 +1363,18 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         ),
         axes: [
             Vec3::new(
-                I2F30::from_bits(910531247),
-                I2F30::from_bits(569082029),
+                I2F30::from_bits(910531245),
+                I2F30::from_bits(569082028),
                 I2F30::from_bits(0),
             ),
             Vec3::new(
-                I2F30::from_bits(-565911630),
+                I2F30::from_bits(-565911631),
                 I2F30::from_bits(905458609),
-                I2F30::from_bits(-113182327),
+                I2F30::from_bits(-113182326),
             ),
             Vec3::new(
                 I2F30::from_bits(-59986513),
-                I2F30::from_bits(95978421),
+                I2F30::from_bits(95978420),
                 I2F30::from_bits(1067759929),
             ),
         ],
@@ -1391,11 +1391,11 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         edges: [
             Edge {
                 dir: [I2F30::from_bits(835432465), I2F30::from_bits(674517681)],
-                len: I16F16::from_bits(104908),
+                len: I16F16::from_bits(104909),
             },
             Edge {
-                dir: [I2F30::from_bits(-70590125), I2F30::from_bits(-1071418938)],
-                len: I16F16::from_bits(66045),
+                dir: [I2F30::from_bits(-70590125), I2F30::from_bits(-1071418936)],
+                len: I16F16::from_bits(66046),
             },
             Edge {
                 dir: [I2F30::from_bits(-1073741824), I2F30::from_bits(0)],
@@ -1418,14 +1418,14 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
                 I2F30::from_bits(670761200),
             ),
             Vec3::new(
-                I2F30::from_bits(-565911630),
-                I2F30::from_bits(905458609),
-                I2F30::from_bits(-113182326),
+                I2F30::from_bits(-565911631),
+                I2F30::from_bits(905458608),
+                I2F30::from_bits(-113182325),
             ),
             Vec3::new(
-                I2F30::from_bits(-618663838),
+                I2F30::from_bits(-618663837),
                 I2F30::from_bits(-282817755),
-                I2F30::from_bits(830777154),
+                I2F30::from_bits(830777153),
             ),
         ],
         shape: [
@@ -1440,12 +1440,12 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         ),
         edges: [
             Edge {
-                dir: [I2F30::from_bits(727977596), I2F30::from_bits(789284566)],
+                dir: [I2F30::from_bits(727977595), I2F30::from_bits(789284565)],
                 len: I16F16::from_bits(66046),
             },
             Edge {
                 dir: [I2F30::from_bits(835432562), I2F30::from_bits(-674517561)],
-                len: I16F16::from_bits(77283),
+                len: I16F16::from_bits(77284),
             },
             Edge {
                 dir: [I2F30::from_bits(-1073741824), I2F30::from_bits(0)],
@@ -1463,18 +1463,18 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         ),
         axes: [
             Vec3::new(
-                I2F30::from_bits(910531247),
-                I2F30::from_bits(569082029),
+                I2F30::from_bits(910531245),
+                I2F30::from_bits(569082028),
                 I2F30::from_bits(0),
             ),
             Vec3::new(
-                I2F30::from_bits(-565911630),
+                I2F30::from_bits(-565911631),
                 I2F30::from_bits(905458609),
-                I2F30::from_bits(-113182327),
+                I2F30::from_bits(-113182326),
             ),
             Vec3::new(
                 I2F30::from_bits(-59986513),
-                I2F30::from_bits(95978421),
+                I2F30::from_bits(95978420),
                 I2F30::from_bits(1067759929),
             ),
         ],
@@ -1491,11 +1491,11 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         edges: [
             Edge {
                 dir: [I2F30::from_bits(835432465), I2F30::from_bits(674517681)],
-                len: I16F16::from_bits(104908),
+                len: I16F16::from_bits(104909),
             },
             Edge {
-                dir: [I2F30::from_bits(-70590125), I2F30::from_bits(-1071418938)],
-                len: I16F16::from_bits(66045),
+                dir: [I2F30::from_bits(-70590125), I2F30::from_bits(-1071418936)],
+                len: I16F16::from_bits(66046),
             },
             Edge {
                 dir: [I2F30::from_bits(-1073741824), I2F30::from_bits(0)],
@@ -1518,14 +1518,14 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
                 I2F30::from_bits(670761200),
             ),
             Vec3::new(
-                I2F30::from_bits(-565911630),
-                I2F30::from_bits(905458609),
-                I2F30::from_bits(-113182326),
+                I2F30::from_bits(-565911631),
+                I2F30::from_bits(905458608),
+                I2F30::from_bits(-113182325),
             ),
             Vec3::new(
-                I2F30::from_bits(-618663838),
+                I2F30::from_bits(-618663837),
                 I2F30::from_bits(-282817755),
-                I2F30::from_bits(830777154),
+                I2F30::from_bits(830777153),
             ),
         ],
         shape: [
@@ -1540,12 +1540,12 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         ),
         edges: [
             Edge {
-                dir: [I2F30::from_bits(727977596), I2F30::from_bits(789284566)],
+                dir: [I2F30::from_bits(727977595), I2F30::from_bits(789284565)],
                 len: I16F16::from_bits(66046),
             },
             Edge {
                 dir: [I2F30::from_bits(835432562), I2F30::from_bits(-674517561)],
-                len: I16F16::from_bits(77283),
+                len: I16F16::from_bits(77284),
             },
             Edge {
                 dir: [I2F30::from_bits(-1073741824), I2F30::from_bits(0)],
@@ -1563,18 +1563,18 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         ),
         axes: [
             Vec3::new(
-                I2F30::from_bits(910531247),
-                I2F30::from_bits(569082029),
+                I2F30::from_bits(910531245),
+                I2F30::from_bits(569082028),
                 I2F30::from_bits(0),
             ),
             Vec3::new(
-                I2F30::from_bits(-565911630),
+                I2F30::from_bits(-565911631),
                 I2F30::from_bits(905458609),
-                I2F30::from_bits(-113182327),
+                I2F30::from_bits(-113182326),
             ),
             Vec3::new(
                 I2F30::from_bits(-59986513),
-                I2F30::from_bits(95978421),
+                I2F30::from_bits(95978420),
                 I2F30::from_bits(1067759929),
             ),
         ],
@@ -1591,11 +1591,11 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         edges: [
             Edge {
                 dir: [I2F30::from_bits(835432465), I2F30::from_bits(674517681)],
-                len: I16F16::from_bits(104908),
+                len: I16F16::from_bits(104909),
             },
             Edge {
-                dir: [I2F30::from_bits(-70590125), I2F30::from_bits(-1071418938)],
-                len: I16F16::from_bits(66045),
+                dir: [I2F30::from_bits(-70590125), I2F30::from_bits(-1071418936)],
+                len: I16F16::from_bits(66046),
             },
             Edge {
                 dir: [I2F30::from_bits(-1073741824), I2F30::from_bits(0)],
@@ -1618,14 +1618,14 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
                 I2F30::from_bits(670761200),
             ),
             Vec3::new(
-                I2F30::from_bits(-565911630),
-                I2F30::from_bits(905458609),
-                I2F30::from_bits(-113182326),
+                I2F30::from_bits(-565911631),
+                I2F30::from_bits(905458608),
+                I2F30::from_bits(-113182325),
             ),
             Vec3::new(
-                I2F30::from_bits(-618663838),
+                I2F30::from_bits(-618663837),
                 I2F30::from_bits(-282817755),
-                I2F30::from_bits(830777154),
+                I2F30::from_bits(830777153),
             ),
         ],
         shape: [
@@ -1640,12 +1640,12 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         ),
         edges: [
             Edge {
-                dir: [I2F30::from_bits(727977596), I2F30::from_bits(789284566)],
+                dir: [I2F30::from_bits(727977595), I2F30::from_bits(789284565)],
                 len: I16F16::from_bits(66046),
             },
             Edge {
                 dir: [I2F30::from_bits(835432562), I2F30::from_bits(-674517561)],
-                len: I16F16::from_bits(77283),
+                len: I16F16::from_bits(77284),
             },
             Edge {
                 dir: [I2F30::from_bits(-1073741824), I2F30::from_bits(0)],
@@ -1663,18 +1663,18 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         ),
         axes: [
             Vec3::new(
-                I2F30::from_bits(910531247),
-                I2F30::from_bits(569082029),
+                I2F30::from_bits(910531245),
+                I2F30::from_bits(569082028),
                 I2F30::from_bits(0),
             ),
             Vec3::new(
-                I2F30::from_bits(-565911630),
+                I2F30::from_bits(-565911631),
                 I2F30::from_bits(905458609),
-                I2F30::from_bits(-113182327),
+                I2F30::from_bits(-113182326),
             ),
             Vec3::new(
                 I2F30::from_bits(-59986513),
-                I2F30::from_bits(95978421),
+                I2F30::from_bits(95978420),
                 I2F30::from_bits(1067759929),
             ),
         ],
@@ -1691,11 +1691,11 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         edges: [
             Edge {
                 dir: [I2F30::from_bits(835432465), I2F30::from_bits(674517681)],
-                len: I16F16::from_bits(104908),
+                len: I16F16::from_bits(104909),
             },
             Edge {
-                dir: [I2F30::from_bits(-70590125), I2F30::from_bits(-1071418938)],
-                len: I16F16::from_bits(66045),
+                dir: [I2F30::from_bits(-70590125), I2F30::from_bits(-1071418936)],
+                len: I16F16::from_bits(66046),
             },
             Edge {
                 dir: [I2F30::from_bits(-1073741824), I2F30::from_bits(0)],
@@ -1718,14 +1718,14 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
                 I2F30::from_bits(670761200),
             ),
             Vec3::new(
-                I2F30::from_bits(-565911630),
-                I2F30::from_bits(905458609),
-                I2F30::from_bits(-113182326),
+                I2F30::from_bits(-565911631),
+                I2F30::from_bits(905458608),
+                I2F30::from_bits(-113182325),
             ),
             Vec3::new(
-                I2F30::from_bits(-618663838),
+                I2F30::from_bits(-618663837),
                 I2F30::from_bits(-282817755),
-                I2F30::from_bits(830777154),
+                I2F30::from_bits(830777153),
             ),
         ],
         shape: [
@@ -1740,12 +1740,12 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         ),
         edges: [
             Edge {
-                dir: [I2F30::from_bits(727977596), I2F30::from_bits(789284566)],
+                dir: [I2F30::from_bits(727977595), I2F30::from_bits(789284565)],
                 len: I16F16::from_bits(66046),
             },
             Edge {
                 dir: [I2F30::from_bits(835432562), I2F30::from_bits(-674517561)],
-                len: I16F16::from_bits(77283),
+                len: I16F16::from_bits(77284),
             },
             Edge {
                 dir: [I2F30::from_bits(-1073741824), I2F30::from_bits(0)],
@@ -1763,18 +1763,18 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         ),
         axes: [
             Vec3::new(
-                I2F30::from_bits(910531247),
-                I2F30::from_bits(569082029),
+                I2F30::from_bits(910531245),
+                I2F30::from_bits(569082028),
                 I2F30::from_bits(0),
             ),
             Vec3::new(
-                I2F30::from_bits(-565911630),
+                I2F30::from_bits(-565911631),
                 I2F30::from_bits(905458609),
-                I2F30::from_bits(-113182327),
+                I2F30::from_bits(-113182326),
             ),
             Vec3::new(
                 I2F30::from_bits(-59986513),
-                I2F30::from_bits(95978421),
+                I2F30::from_bits(95978420),
                 I2F30::from_bits(1067759929),
             ),
         ],
@@ -1791,11 +1791,11 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         edges: [
             Edge {
                 dir: [I2F30::from_bits(835432465), I2F30::from_bits(674517681)],
-                len: I16F16::from_bits(104908),
+                len: I16F16::from_bits(104909),
             },
             Edge {
-                dir: [I2F30::from_bits(-70590125), I2F30::from_bits(-1071418938)],
-                len: I16F16::from_bits(66045),
+                dir: [I2F30::from_bits(-70590125), I2F30::from_bits(-1071418936)],
+                len: I16F16::from_bits(66046),
             },
             Edge {
                 dir: [I2F30::from_bits(-1073741824), I2F30::from_bits(0)],
@@ -1818,14 +1818,14 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
                 I2F30::from_bits(670761200),
             ),
             Vec3::new(
-                I2F30::from_bits(-565911630),
-                I2F30::from_bits(905458609),
-                I2F30::from_bits(-113182326),
+                I2F30::from_bits(-565911631),
+                I2F30::from_bits(905458608),
+                I2F30::from_bits(-113182325),
             ),
             Vec3::new(
-                I2F30::from_bits(-618663838),
+                I2F30::from_bits(-618663837),
                 I2F30::from_bits(-282817755),
-                I2F30::from_bits(830777154),
+                I2F30::from_bits(830777153),
             ),
         ],
         shape: [
@@ -1840,12 +1840,12 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         ),
         edges: [
             Edge {
-                dir: [I2F30::from_bits(727977596), I2F30::from_bits(789284566)],
+                dir: [I2F30::from_bits(727977595), I2F30::from_bits(789284565)],
                 len: I16F16::from_bits(66046),
             },
             Edge {
                 dir: [I2F30::from_bits(835432562), I2F30::from_bits(-674517561)],
-                len: I16F16::from_bits(77283),
+                len: I16F16::from_bits(77284),
             },
             Edge {
                 dir: [I2F30::from_bits(-1073741824), I2F30::from_bits(0)],
@@ -1863,18 +1863,18 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         ),
         axes: [
             Vec3::new(
-                I2F30::from_bits(910531247),
-                I2F30::from_bits(569082029),
+                I2F30::from_bits(910531245),
+                I2F30::from_bits(569082028),
                 I2F30::from_bits(0),
             ),
             Vec3::new(
-                I2F30::from_bits(-565911630),
+                I2F30::from_bits(-565911631),
                 I2F30::from_bits(905458609),
-                I2F30::from_bits(-113182327),
+                I2F30::from_bits(-113182326),
             ),
             Vec3::new(
                 I2F30::from_bits(-59986513),
-                I2F30::from_bits(95978421),
+                I2F30::from_bits(95978420),
                 I2F30::from_bits(1067759929),
             ),
         ],
@@ -1891,11 +1891,11 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         edges: [
             Edge {
                 dir: [I2F30::from_bits(835432465), I2F30::from_bits(674517681)],
-                len: I16F16::from_bits(104908),
+                len: I16F16::from_bits(104909),
             },
             Edge {
-                dir: [I2F30::from_bits(-70590125), I2F30::from_bits(-1071418938)],
-                len: I16F16::from_bits(66045),
+                dir: [I2F30::from_bits(-70590125), I2F30::from_bits(-1071418936)],
+                len: I16F16::from_bits(66046),
             },
             Edge {
                 dir: [I2F30::from_bits(-1073741824), I2F30::from_bits(0)],
@@ -1918,14 +1918,14 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
                 I2F30::from_bits(670761200),
             ),
             Vec3::new(
-                I2F30::from_bits(-565911630),
-                I2F30::from_bits(905458609),
-                I2F30::from_bits(-113182326),
+                I2F30::from_bits(-565911631),
+                I2F30::from_bits(905458608),
+                I2F30::from_bits(-113182325),
             ),
             Vec3::new(
-                I2F30::from_bits(-618663838),
+                I2F30::from_bits(-618663837),
                 I2F30::from_bits(-282817755),
-                I2F30::from_bits(830777154),
+                I2F30::from_bits(830777153),
             ),
         ],
         shape: [
@@ -1940,12 +1940,12 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         ),
         edges: [
             Edge {
-                dir: [I2F30::from_bits(727977596), I2F30::from_bits(789284566)],
+                dir: [I2F30::from_bits(727977595), I2F30::from_bits(789284565)],
                 len: I16F16::from_bits(66046),
             },
             Edge {
                 dir: [I2F30::from_bits(835432562), I2F30::from_bits(-674517561)],
-                len: I16F16::from_bits(77283),
+                len: I16F16::from_bits(77284),
             },
             Edge {
                 dir: [I2F30::from_bits(-1073741824), I2F30::from_bits(0)],
@@ -1963,18 +1963,18 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         ),
         axes: [
             Vec3::new(
-                I2F30::from_bits(910531247),
-                I2F30::from_bits(569082029),
+                I2F30::from_bits(910531245),
+                I2F30::from_bits(569082028),
                 I2F30::from_bits(0),
             ),
             Vec3::new(
-                I2F30::from_bits(-565911630),
+                I2F30::from_bits(-565911631),
                 I2F30::from_bits(905458609),
-                I2F30::from_bits(-113182327),
+                I2F30::from_bits(-113182326),
             ),
             Vec3::new(
                 I2F30::from_bits(-59986513),
-                I2F30::from_bits(95978421),
+                I2F30::from_bits(95978420),
                 I2F30::from_bits(1067759929),
             ),
         ],
@@ -1991,11 +1991,11 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         edges: [
             Edge {
                 dir: [I2F30::from_bits(835432465), I2F30::from_bits(674517681)],
-                len: I16F16::from_bits(104908),
+                len: I16F16::from_bits(104909),
             },
             Edge {
-                dir: [I2F30::from_bits(-70590125), I2F30::from_bits(-1071418938)],
-                len: I16F16::from_bits(66045),
+                dir: [I2F30::from_bits(-70590125), I2F30::from_bits(-1071418936)],
+                len: I16F16::from_bits(66046),
             },
             Edge {
                 dir: [I2F30::from_bits(-1073741824), I2F30::from_bits(0)],
@@ -2018,14 +2018,14 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
                 I2F30::from_bits(670761200),
             ),
             Vec3::new(
-                I2F30::from_bits(-565911630),
-                I2F30::from_bits(905458609),
-                I2F30::from_bits(-113182326),
+                I2F30::from_bits(-565911631),
+                I2F30::from_bits(905458608),
+                I2F30::from_bits(-113182325),
             ),
             Vec3::new(
-                I2F30::from_bits(-618663838),
+                I2F30::from_bits(-618663837),
                 I2F30::from_bits(-282817755),
-                I2F30::from_bits(830777154),
+                I2F30::from_bits(830777153),
             ),
         ],
         shape: [
@@ -2040,12 +2040,12 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         ),
         edges: [
             Edge {
-                dir: [I2F30::from_bits(727977596), I2F30::from_bits(789284566)],
+                dir: [I2F30::from_bits(727977595), I2F30::from_bits(789284565)],
                 len: I16F16::from_bits(66046),
             },
             Edge {
                 dir: [I2F30::from_bits(835432562), I2F30::from_bits(-674517561)],
-                len: I16F16::from_bits(77283),
+                len: I16F16::from_bits(77284),
             },
             Edge {
                 dir: [I2F30::from_bits(-1073741824), I2F30::from_bits(0)],
@@ -2063,18 +2063,18 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         ),
         axes: [
             Vec3::new(
-                I2F30::from_bits(910531247),
-                I2F30::from_bits(569082029),
+                I2F30::from_bits(910531245),
+                I2F30::from_bits(569082028),
                 I2F30::from_bits(0),
             ),
             Vec3::new(
-                I2F30::from_bits(-565911630),
+                I2F30::from_bits(-565911631),
                 I2F30::from_bits(905458609),
-                I2F30::from_bits(-113182327),
+                I2F30::from_bits(-113182326),
             ),
             Vec3::new(
                 I2F30::from_bits(-59986513),
-                I2F30::from_bits(95978421),
+                I2F30::from_bits(95978420),
                 I2F30::from_bits(1067759929),
             ),
         ],
@@ -2091,11 +2091,11 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         edges: [
             Edge {
                 dir: [I2F30::from_bits(835432465), I2F30::from_bits(674517681)],
-                len: I16F16::from_bits(104908),
+                len: I16F16::from_bits(104909),
             },
             Edge {
-                dir: [I2F30::from_bits(-70590125), I2F30::from_bits(-1071418938)],
-                len: I16F16::from_bits(66045),
+                dir: [I2F30::from_bits(-70590125), I2F30::from_bits(-1071418936)],
+                len: I16F16::from_bits(66046),
             },
             Edge {
                 dir: [I2F30::from_bits(-1073741824), I2F30::from_bits(0)],
@@ -2118,14 +2118,14 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
                 I2F30::from_bits(670761200),
             ),
             Vec3::new(
-                I2F30::from_bits(-565911630),
-                I2F30::from_bits(905458609),
-                I2F30::from_bits(-113182326),
+                I2F30::from_bits(-565911631),
+                I2F30::from_bits(905458608),
+                I2F30::from_bits(-113182325),
             ),
             Vec3::new(
-                I2F30::from_bits(-618663838),
+                I2F30::from_bits(-618663837),
                 I2F30::from_bits(-282817755),
-                I2F30::from_bits(830777154),
+                I2F30::from_bits(830777153),
             ),
         ],
         shape: [
@@ -2140,12 +2140,12 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         ),
         edges: [
             Edge {
-                dir: [I2F30::from_bits(727977596), I2F30::from_bits(789284566)],
+                dir: [I2F30::from_bits(727977595), I2F30::from_bits(789284565)],
                 len: I16F16::from_bits(66046),
             },
             Edge {
                 dir: [I2F30::from_bits(835432562), I2F30::from_bits(-674517561)],
-                len: I16F16::from_bits(77283),
+                len: I16F16::from_bits(77284),
             },
             Edge {
                 dir: [I2F30::from_bits(-1073741824), I2F30::from_bits(0)],
@@ -2163,18 +2163,18 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         ),
         axes: [
             Vec3::new(
-                I2F30::from_bits(910531247),
-                I2F30::from_bits(569082029),
+                I2F30::from_bits(910531245),
+                I2F30::from_bits(569082028),
                 I2F30::from_bits(0),
             ),
             Vec3::new(
-                I2F30::from_bits(-565911630),
+                I2F30::from_bits(-565911631),
                 I2F30::from_bits(905458609),
-                I2F30::from_bits(-113182327),
+                I2F30::from_bits(-113182326),
             ),
             Vec3::new(
                 I2F30::from_bits(-59986513),
-                I2F30::from_bits(95978421),
+                I2F30::from_bits(95978420),
                 I2F30::from_bits(1067759929),
             ),
         ],
@@ -2191,11 +2191,11 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         edges: [
             Edge {
                 dir: [I2F30::from_bits(835432465), I2F30::from_bits(674517681)],
-                len: I16F16::from_bits(104908),
+                len: I16F16::from_bits(104909),
             },
             Edge {
-                dir: [I2F30::from_bits(-70590125), I2F30::from_bits(-1071418938)],
-                len: I16F16::from_bits(66045),
+                dir: [I2F30::from_bits(-70590125), I2F30::from_bits(-1071418936)],
+                len: I16F16::from_bits(66046),
             },
             Edge {
                 dir: [I2F30::from_bits(-1073741824), I2F30::from_bits(0)],
@@ -2218,14 +2218,14 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
                 I2F30::from_bits(670761200),
             ),
             Vec3::new(
-                I2F30::from_bits(-565911630),
-                I2F30::from_bits(905458609),
-                I2F30::from_bits(-113182326),
+                I2F30::from_bits(-565911631),
+                I2F30::from_bits(905458608),
+                I2F30::from_bits(-113182325),
             ),
             Vec3::new(
-                I2F30::from_bits(-618663838),
+                I2F30::from_bits(-618663837),
                 I2F30::from_bits(-282817755),
-                I2F30::from_bits(830777154),
+                I2F30::from_bits(830777153),
             ),
         ],
         shape: [
@@ -2240,12 +2240,12 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         ),
         edges: [
             Edge {
-                dir: [I2F30::from_bits(727977596), I2F30::from_bits(789284566)],
+                dir: [I2F30::from_bits(727977595), I2F30::from_bits(789284565)],
                 len: I16F16::from_bits(66046),
             },
             Edge {
                 dir: [I2F30::from_bits(835432562), I2F30::from_bits(-674517561)],
-                len: I16F16::from_bits(77283),
+                len: I16F16::from_bits(77284),
             },
             Edge {
                 dir: [I2F30::from_bits(-1073741824), I2F30::from_bits(0)],
@@ -2263,18 +2263,18 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         ),
         axes: [
             Vec3::new(
-                I2F30::from_bits(910531247),
-                I2F30::from_bits(569082029),
+                I2F30::from_bits(910531245),
+                I2F30::from_bits(569082028),
                 I2F30::from_bits(0),
             ),
             Vec3::new(
-                I2F30::from_bits(-565911630),
+                I2F30::from_bits(-565911631),
                 I2F30::from_bits(905458609),
-                I2F30::from_bits(-113182327),
+                I2F30::from_bits(-113182326),
             ),
             Vec3::new(
                 I2F30::from_bits(-59986513),
-                I2F30::from_bits(95978421),
+                I2F30::from_bits(95978420),
                 I2F30::from_bits(1067759929),
             ),
         ],
@@ -2291,11 +2291,11 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         edges: [
             Edge {
                 dir: [I2F30::from_bits(835432465), I2F30::from_bits(674517681)],
-                len: I16F16::from_bits(104908),
+                len: I16F16::from_bits(104909),
             },
             Edge {
-                dir: [I2F30::from_bits(-70590125), I2F30::from_bits(-1071418938)],
-                len: I16F16::from_bits(66045),
+                dir: [I2F30::from_bits(-70590125), I2F30::from_bits(-1071418936)],
+                len: I16F16::from_bits(66046),
             },
             Edge {
                 dir: [I2F30::from_bits(-1073741824), I2F30::from_bits(0)],
@@ -2318,14 +2318,14 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
                 I2F30::from_bits(670761200),
             ),
             Vec3::new(
-                I2F30::from_bits(-565911630),
-                I2F30::from_bits(905458609),
-                I2F30::from_bits(-113182326),
+                I2F30::from_bits(-565911631),
+                I2F30::from_bits(905458608),
+                I2F30::from_bits(-113182325),
             ),
             Vec3::new(
-                I2F30::from_bits(-618663838),
+                I2F30::from_bits(-618663837),
                 I2F30::from_bits(-282817755),
-                I2F30::from_bits(830777154),
+                I2F30::from_bits(830777153),
             ),
         ],
         shape: [
@@ -2340,12 +2340,12 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         ),
         edges: [
             Edge {
-                dir: [I2F30::from_bits(727977596), I2F30::from_bits(789284566)],
+                dir: [I2F30::from_bits(727977595), I2F30::from_bits(789284565)],
                 len: I16F16::from_bits(66046),
             },
             Edge {
                 dir: [I2F30::from_bits(835432562), I2F30::from_bits(-674517561)],
-                len: I16F16::from_bits(77283),
+                len: I16F16::from_bits(77284),
             },
             Edge {
                 dir: [I2F30::from_bits(-1073741824), I2F30::from_bits(0)],
@@ -2363,18 +2363,18 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         ),
         axes: [
             Vec3::new(
-                I2F30::from_bits(910531247),
-                I2F30::from_bits(569082029),
+                I2F30::from_bits(910531245),
+                I2F30::from_bits(569082028),
                 I2F30::from_bits(0),
             ),
             Vec3::new(
-                I2F30::from_bits(-565911630),
+                I2F30::from_bits(-565911631),
                 I2F30::from_bits(905458609),
-                I2F30::from_bits(-113182327),
+                I2F30::from_bits(-113182326),
             ),
             Vec3::new(
                 I2F30::from_bits(-59986513),
-                I2F30::from_bits(95978421),
+                I2F30::from_bits(95978420),
                 I2F30::from_bits(1067759929),
             ),
         ],
@@ -2391,11 +2391,11 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         edges: [
             Edge {
                 dir: [I2F30::from_bits(835432465), I2F30::from_bits(674517681)],
-                len: I16F16::from_bits(104908),
+                len: I16F16::from_bits(104909),
             },
             Edge {
-                dir: [I2F30::from_bits(-70590125), I2F30::from_bits(-1071418938)],
-                len: I16F16::from_bits(66045),
+                dir: [I2F30::from_bits(-70590125), I2F30::from_bits(-1071418936)],
+                len: I16F16::from_bits(66046),
             },
             Edge {
                 dir: [I2F30::from_bits(-1073741824), I2F30::from_bits(0)],
@@ -2418,14 +2418,14 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
                 I2F30::from_bits(670761200),
             ),
             Vec3::new(
-                I2F30::from_bits(-565911630),
-                I2F30::from_bits(905458609),
-                I2F30::from_bits(-113182326),
+                I2F30::from_bits(-565911631),
+                I2F30::from_bits(905458608),
+                I2F30::from_bits(-113182325),
             ),
             Vec3::new(
-                I2F30::from_bits(-618663838),
+                I2F30::from_bits(-618663837),
                 I2F30::from_bits(-282817755),
-                I2F30::from_bits(830777154),
+                I2F30::from_bits(830777153),
             ),
         ],
         shape: [
@@ -2440,12 +2440,12 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         ),
         edges: [
             Edge {
-                dir: [I2F30::from_bits(727977596), I2F30::from_bits(789284566)],
+                dir: [I2F30::from_bits(727977595), I2F30::from_bits(789284565)],
                 len: I16F16::from_bits(66046),
             },
             Edge {
                 dir: [I2F30::from_bits(835432562), I2F30::from_bits(-674517561)],
-                len: I16F16::from_bits(77283),
+                len: I16F16::from_bits(77284),
             },
             Edge {
                 dir: [I2F30::from_bits(-1073741824), I2F30::from_bits(0)],
@@ -2463,18 +2463,18 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         ),
         axes: [
             Vec3::new(
-                I2F30::from_bits(910531247),
-                I2F30::from_bits(569082029),
+                I2F30::from_bits(910531245),
+                I2F30::from_bits(569082028),
                 I2F30::from_bits(0),
             ),
             Vec3::new(
-                I2F30::from_bits(-565911630),
+                I2F30::from_bits(-565911631),
                 I2F30::from_bits(905458609),
-                I2F30::from_bits(-113182327),
+                I2F30::from_bits(-113182326),
             ),
             Vec3::new(
                 I2F30::from_bits(-59986513),
-                I2F30::from_bits(95978421),
+                I2F30::from_bits(95978420),
                 I2F30::from_bits(1067759929),
             ),
         ],
@@ -2491,11 +2491,11 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         edges: [
             Edge {
                 dir: [I2F30::from_bits(835432465), I2F30::from_bits(674517681)],
-                len: I16F16::from_bits(104908),
+                len: I16F16::from_bits(104909),
             },
             Edge {
-                dir: [I2F30::from_bits(-70590125), I2F30::from_bits(-1071418938)],
-                len: I16F16::from_bits(66045),
+                dir: [I2F30::from_bits(-70590125), I2F30::from_bits(-1071418936)],
+                len: I16F16::from_bits(66046),
             },
             Edge {
                 dir: [I2F30::from_bits(-1073741824), I2F30::from_bits(0)],
@@ -2518,14 +2518,14 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
                 I2F30::from_bits(670761200),
             ),
             Vec3::new(
-                I2F30::from_bits(-565911630),
-                I2F30::from_bits(905458609),
-                I2F30::from_bits(-113182326),
+                I2F30::from_bits(-565911631),
+                I2F30::from_bits(905458608),
+                I2F30::from_bits(-113182325),
             ),
             Vec3::new(
-                I2F30::from_bits(-618663838),
+                I2F30::from_bits(-618663837),
                 I2F30::from_bits(-282817755),
-                I2F30::from_bits(830777154),
+                I2F30::from_bits(830777153),
             ),
         ],
         shape: [
@@ -2540,12 +2540,12 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         ),
         edges: [
             Edge {
-                dir: [I2F30::from_bits(727977596), I2F30::from_bits(789284566)],
+                dir: [I2F30::from_bits(727977595), I2F30::from_bits(789284565)],
                 len: I16F16::from_bits(66046),
             },
             Edge {
                 dir: [I2F30::from_bits(835432562), I2F30::from_bits(-674517561)],
-                len: I16F16::from_bits(77283),
+                len: I16F16::from_bits(77284),
             },
             Edge {
                 dir: [I2F30::from_bits(-1073741824), I2F30::from_bits(0)],
@@ -2563,18 +2563,18 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         ),
         axes: [
             Vec3::new(
-                I2F30::from_bits(910531247),
-                I2F30::from_bits(569082029),
+                I2F30::from_bits(910531245),
+                I2F30::from_bits(569082028),
                 I2F30::from_bits(0),
             ),
             Vec3::new(
-                I2F30::from_bits(-565911630),
+                I2F30::from_bits(-565911631),
                 I2F30::from_bits(905458609),
-                I2F30::from_bits(-113182327),
+                I2F30::from_bits(-113182326),
             ),
             Vec3::new(
                 I2F30::from_bits(-59986513),
-                I2F30::from_bits(95978421),
+                I2F30::from_bits(95978420),
                 I2F30::from_bits(1067759929),
             ),
         ],
@@ -2591,11 +2591,11 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         edges: [
             Edge {
                 dir: [I2F30::from_bits(835432465), I2F30::from_bits(674517681)],
-                len: I16F16::from_bits(104908),
+                len: I16F16::from_bits(104909),
             },
             Edge {
-                dir: [I2F30::from_bits(-70590125), I2F30::from_bits(-1071418938)],
-                len: I16F16::from_bits(66045),
+                dir: [I2F30::from_bits(-70590125), I2F30::from_bits(-1071418936)],
+                len: I16F16::from_bits(66046),
             },
             Edge {
                 dir: [I2F30::from_bits(-1073741824), I2F30::from_bits(0)],
@@ -2618,14 +2618,14 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
                 I2F30::from_bits(670761200),
             ),
             Vec3::new(
-                I2F30::from_bits(-565911630),
-                I2F30::from_bits(905458609),
-                I2F30::from_bits(-113182326),
+                I2F30::from_bits(-565911631),
+                I2F30::from_bits(905458608),
+                I2F30::from_bits(-113182325),
             ),
             Vec3::new(
-                I2F30::from_bits(-618663838),
+                I2F30::from_bits(-618663837),
                 I2F30::from_bits(-282817755),
-                I2F30::from_bits(830777154),
+                I2F30::from_bits(830777153),
             ),
         ],
         shape: [
@@ -2640,12 +2640,12 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         ),
         edges: [
             Edge {
-                dir: [I2F30::from_bits(727977596), I2F30::from_bits(789284566)],
+                dir: [I2F30::from_bits(727977595), I2F30::from_bits(789284565)],
                 len: I16F16::from_bits(66046),
             },
             Edge {
                 dir: [I2F30::from_bits(835432562), I2F30::from_bits(-674517561)],
-                len: I16F16::from_bits(77283),
+                len: I16F16::from_bits(77284),
             },
             Edge {
                 dir: [I2F30::from_bits(-1073741824), I2F30::from_bits(0)],
@@ -2663,18 +2663,18 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         ),
         axes: [
             Vec3::new(
-                I2F30::from_bits(910531247),
-                I2F30::from_bits(569082029),
+                I2F30::from_bits(910531245),
+                I2F30::from_bits(569082028),
                 I2F30::from_bits(0),
             ),
             Vec3::new(
-                I2F30::from_bits(-565911630),
+                I2F30::from_bits(-565911631),
                 I2F30::from_bits(905458609),
-                I2F30::from_bits(-113182327),
+                I2F30::from_bits(-113182326),
             ),
             Vec3::new(
                 I2F30::from_bits(-59986513),
-                I2F30::from_bits(95978421),
+                I2F30::from_bits(95978420),
                 I2F30::from_bits(1067759929),
             ),
         ],
@@ -2691,11 +2691,11 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         edges: [
             Edge {
                 dir: [I2F30::from_bits(835432465), I2F30::from_bits(674517681)],
-                len: I16F16::from_bits(104908),
+                len: I16F16::from_bits(104909),
             },
             Edge {
-                dir: [I2F30::from_bits(-70590125), I2F30::from_bits(-1071418938)],
-                len: I16F16::from_bits(66045),
+                dir: [I2F30::from_bits(-70590125), I2F30::from_bits(-1071418936)],
+                len: I16F16::from_bits(66046),
             },
             Edge {
                 dir: [I2F30::from_bits(-1073741824), I2F30::from_bits(0)],
@@ -2718,14 +2718,14 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
                 I2F30::from_bits(670761200),
             ),
             Vec3::new(
-                I2F30::from_bits(-565911630),
-                I2F30::from_bits(905458609),
-                I2F30::from_bits(-113182326),
+                I2F30::from_bits(-565911631),
+                I2F30::from_bits(905458608),
+                I2F30::from_bits(-113182325),
             ),
             Vec3::new(
-                I2F30::from_bits(-618663838),
+                I2F30::from_bits(-618663837),
                 I2F30::from_bits(-282817755),
-                I2F30::from_bits(830777154),
+                I2F30::from_bits(830777153),
             ),
         ],
         shape: [
@@ -2740,12 +2740,12 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         ),
         edges: [
             Edge {
-                dir: [I2F30::from_bits(727977596), I2F30::from_bits(789284566)],
+                dir: [I2F30::from_bits(727977595), I2F30::from_bits(789284565)],
                 len: I16F16::from_bits(66046),
             },
             Edge {
                 dir: [I2F30::from_bits(835432562), I2F30::from_bits(-674517561)],
-                len: I16F16::from_bits(77283),
+                len: I16F16::from_bits(77284),
             },
             Edge {
                 dir: [I2F30::from_bits(-1073741824), I2F30::from_bits(0)],
@@ -2763,18 +2763,18 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         ),
         axes: [
             Vec3::new(
-                I2F30::from_bits(910531247),
-                I2F30::from_bits(569082029),
+                I2F30::from_bits(910531245),
+                I2F30::from_bits(569082028),
                 I2F30::from_bits(0),
             ),
             Vec3::new(
-                I2F30::from_bits(-565911630),
+                I2F30::from_bits(-565911631),
                 I2F30::from_bits(905458609),
-                I2F30::from_bits(-113182327),
+                I2F30::from_bits(-113182326),
             ),
             Vec3::new(
                 I2F30::from_bits(-59986513),
-                I2F30::from_bits(95978421),
+                I2F30::from_bits(95978420),
                 I2F30::from_bits(1067759929),
             ),
         ],
@@ -2791,11 +2791,11 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         edges: [
             Edge {
                 dir: [I2F30::from_bits(835432465), I2F30::from_bits(674517681)],
-                len: I16F16::from_bits(104908),
+                len: I16F16::from_bits(104909),
             },
             Edge {
-                dir: [I2F30::from_bits(-70590125), I2F30::from_bits(-1071418938)],
-                len: I16F16::from_bits(66045),
+                dir: [I2F30::from_bits(-70590125), I2F30::from_bits(-1071418936)],
+                len: I16F16::from_bits(66046),
             },
             Edge {
                 dir: [I2F30::from_bits(-1073741824), I2F30::from_bits(0)],
@@ -2818,14 +2818,14 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
                 I2F30::from_bits(670761200),
             ),
             Vec3::new(
-                I2F30::from_bits(-565911630),
-                I2F30::from_bits(905458609),
-                I2F30::from_bits(-113182326),
+                I2F30::from_bits(-565911631),
+                I2F30::from_bits(905458608),
+                I2F30::from_bits(-113182325),
             ),
             Vec3::new(
-                I2F30::from_bits(-618663838),
+                I2F30::from_bits(-618663837),
                 I2F30::from_bits(-282817755),
-                I2F30::from_bits(830777154),
+                I2F30::from_bits(830777153),
             ),
         ],
         shape: [
@@ -2840,12 +2840,12 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         ),
         edges: [
             Edge {
-                dir: [I2F30::from_bits(727977596), I2F30::from_bits(789284566)],
+                dir: [I2F30::from_bits(727977595), I2F30::from_bits(789284565)],
                 len: I16F16::from_bits(66046),
             },
             Edge {
                 dir: [I2F30::from_bits(835432562), I2F30::from_bits(-674517561)],
-                len: I16F16::from_bits(77283),
+                len: I16F16::from_bits(77284),
             },
             Edge {
                 dir: [I2F30::from_bits(-1073741824), I2F30::from_bits(0)],
@@ -2863,18 +2863,18 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         ),
         axes: [
             Vec3::new(
-                I2F30::from_bits(910531247),
-                I2F30::from_bits(569082029),
+                I2F30::from_bits(910531245),
+                I2F30::from_bits(569082028),
                 I2F30::from_bits(0),
             ),
             Vec3::new(
-                I2F30::from_bits(-565911630),
+                I2F30::from_bits(-565911631),
                 I2F30::from_bits(905458609),
-                I2F30::from_bits(-113182327),
+                I2F30::from_bits(-113182326),
             ),
             Vec3::new(
                 I2F30::from_bits(-59986513),
-                I2F30::from_bits(95978421),
+                I2F30::from_bits(95978420),
                 I2F30::from_bits(1067759929),
             ),
         ],
@@ -2891,11 +2891,11 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         edges: [
             Edge {
                 dir: [I2F30::from_bits(835432465), I2F30::from_bits(674517681)],
-                len: I16F16::from_bits(104908),
+                len: I16F16::from_bits(104909),
             },
             Edge {
-                dir: [I2F30::from_bits(-70590125), I2F30::from_bits(-1071418938)],
-                len: I16F16::from_bits(66045),
+                dir: [I2F30::from_bits(-70590125), I2F30::from_bits(-1071418936)],
+                len: I16F16::from_bits(66046),
             },
             Edge {
                 dir: [I2F30::from_bits(-1073741824), I2F30::from_bits(0)],
@@ -2918,14 +2918,14 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
                 I2F30::from_bits(670761200),
             ),
             Vec3::new(
-                I2F30::from_bits(-565911630),
-                I2F30::from_bits(905458609),
-                I2F30::from_bits(-113182326),
+                I2F30::from_bits(-565911631),
+                I2F30::from_bits(905458608),
+                I2F30::from_bits(-113182325),
             ),
             Vec3::new(
-                I2F30::from_bits(-618663838),
+                I2F30::from_bits(-618663837),
                 I2F30::from_bits(-282817755),
-                I2F30::from_bits(830777154),
+                I2F30::from_bits(830777153),
             ),
         ],
         shape: [
@@ -2940,12 +2940,12 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         ),
         edges: [
             Edge {
-                dir: [I2F30::from_bits(727977596), I2F30::from_bits(789284566)],
+                dir: [I2F30::from_bits(727977595), I2F30::from_bits(789284565)],
                 len: I16F16::from_bits(66046),
             },
             Edge {
                 dir: [I2F30::from_bits(835432562), I2F30::from_bits(-674517561)],
-                len: I16F16::from_bits(77283),
+                len: I16F16::from_bits(77284),
             },
             Edge {
                 dir: [I2F30::from_bits(-1073741824), I2F30::from_bits(0)],
@@ -2963,18 +2963,18 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         ),
         axes: [
             Vec3::new(
-                I2F30::from_bits(910531247),
-                I2F30::from_bits(569082029),
+                I2F30::from_bits(910531245),
+                I2F30::from_bits(569082028),
                 I2F30::from_bits(0),
             ),
             Vec3::new(
-                I2F30::from_bits(-565911630),
+                I2F30::from_bits(-565911631),
                 I2F30::from_bits(905458609),
-                I2F30::from_bits(-113182327),
+                I2F30::from_bits(-113182326),
             ),
             Vec3::new(
                 I2F30::from_bits(-59986513),
-                I2F30::from_bits(95978421),
+                I2F30::from_bits(95978420),
                 I2F30::from_bits(1067759929),
             ),
         ],
@@ -2991,11 +2991,11 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         edges: [
             Edge {
                 dir: [I2F30::from_bits(835432465), I2F30::from_bits(674517681)],
-                len: I16F16::from_bits(104908),
+                len: I16F16::from_bits(104909),
             },
             Edge {
-                dir: [I2F30::from_bits(-70590125), I2F30::from_bits(-1071418938)],
-                len: I16F16::from_bits(66045),
+                dir: [I2F30::from_bits(-70590125), I2F30::from_bits(-1071418936)],
+                len: I16F16::from_bits(66046),
             },
             Edge {
                 dir: [I2F30::from_bits(-1073741824), I2F30::from_bits(0)],
@@ -3018,14 +3018,14 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
                 I2F30::from_bits(670761200),
             ),
             Vec3::new(
-                I2F30::from_bits(-565911630),
-                I2F30::from_bits(905458609),
-                I2F30::from_bits(-113182326),
+                I2F30::from_bits(-565911631),
+                I2F30::from_bits(905458608),
+                I2F30::from_bits(-113182325),
             ),
             Vec3::new(
-                I2F30::from_bits(-618663838),
+                I2F30::from_bits(-618663837),
                 I2F30::from_bits(-282817755),
-                I2F30::from_bits(830777154),
+                I2F30::from_bits(830777153),
             ),
         ],
         shape: [
@@ -3040,12 +3040,12 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         ),
         edges: [
             Edge {
-                dir: [I2F30::from_bits(727977596), I2F30::from_bits(789284566)],
+                dir: [I2F30::from_bits(727977595), I2F30::from_bits(789284565)],
                 len: I16F16::from_bits(66046),
             },
             Edge {
                 dir: [I2F30::from_bits(835432562), I2F30::from_bits(-674517561)],
-                len: I16F16::from_bits(77283),
+                len: I16F16::from_bits(77284),
             },
             Edge {
                 dir: [I2F30::from_bits(-1073741824), I2F30::from_bits(0)],
@@ -3063,18 +3063,18 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         ),
         axes: [
             Vec3::new(
-                I2F30::from_bits(910531247),
-                I2F30::from_bits(569082029),
+                I2F30::from_bits(910531245),
+                I2F30::from_bits(569082028),
                 I2F30::from_bits(0),
             ),
             Vec3::new(
-                I2F30::from_bits(-565911630),
+                I2F30::from_bits(-565911631),
                 I2F30::from_bits(905458609),
-                I2F30::from_bits(-113182327),
+                I2F30::from_bits(-113182326),
             ),
             Vec3::new(
                 I2F30::from_bits(-59986513),
-                I2F30::from_bits(95978421),
+                I2F30::from_bits(95978420),
                 I2F30::from_bits(1067759929),
             ),
         ],
@@ -3091,11 +3091,11 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         edges: [
             Edge {
                 dir: [I2F30::from_bits(835432465), I2F30::from_bits(674517681)],
-                len: I16F16::from_bits(104908),
+                len: I16F16::from_bits(104909),
             },
             Edge {
-                dir: [I2F30::from_bits(-70590125), I2F30::from_bits(-1071418938)],
-                len: I16F16::from_bits(66045),
+                dir: [I2F30::from_bits(-70590125), I2F30::from_bits(-1071418936)],
+                len: I16F16::from_bits(66046),
             },
             Edge {
                 dir: [I2F30::from_bits(-1073741824), I2F30::from_bits(0)],
@@ -3118,14 +3118,14 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
                 I2F30::from_bits(670761200),
             ),
             Vec3::new(
-                I2F30::from_bits(-565911630),
-                I2F30::from_bits(905458609),
-                I2F30::from_bits(-113182326),
+                I2F30::from_bits(-565911631),
+                I2F30::from_bits(905458608),
+                I2F30::from_bits(-113182325),
             ),
             Vec3::new(
-                I2F30::from_bits(-618663838),
+                I2F30::from_bits(-618663837),
                 I2F30::from_bits(-282817755),
-                I2F30::from_bits(830777154),
+                I2F30::from_bits(830777153),
             ),
         ],
         shape: [
@@ -3140,12 +3140,12 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         ),
         edges: [
             Edge {
-                dir: [I2F30::from_bits(727977596), I2F30::from_bits(789284566)],
+                dir: [I2F30::from_bits(727977595), I2F30::from_bits(789284565)],
                 len: I16F16::from_bits(66046),
             },
             Edge {
                 dir: [I2F30::from_bits(835432562), I2F30::from_bits(-674517561)],
-                len: I16F16::from_bits(77283),
+                len: I16F16::from_bits(77284),
             },
             Edge {
                 dir: [I2F30::from_bits(-1073741824), I2F30::from_bits(0)],
@@ -3163,18 +3163,18 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         ),
         axes: [
             Vec3::new(
-                I2F30::from_bits(910531247),
-                I2F30::from_bits(569082029),
+                I2F30::from_bits(910531245),
+                I2F30::from_bits(569082028),
                 I2F30::from_bits(0),
             ),
             Vec3::new(
-                I2F30::from_bits(-565911630),
+                I2F30::from_bits(-565911631),
                 I2F30::from_bits(905458609),
-                I2F30::from_bits(-113182327),
+                I2F30::from_bits(-113182326),
             ),
             Vec3::new(
                 I2F30::from_bits(-59986513),
-                I2F30::from_bits(95978421),
+                I2F30::from_bits(95978420),
                 I2F30::from_bits(1067759929),
             ),
         ],
@@ -3191,11 +3191,11 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         edges: [
             Edge {
                 dir: [I2F30::from_bits(835432465), I2F30::from_bits(674517681)],
-                len: I16F16::from_bits(104908),
+                len: I16F16::from_bits(104909),
             },
             Edge {
-                dir: [I2F30::from_bits(-70590125), I2F30::from_bits(-1071418938)],
-                len: I16F16::from_bits(66045),
+                dir: [I2F30::from_bits(-70590125), I2F30::from_bits(-1071418936)],
+                len: I16F16::from_bits(66046),
             },
             Edge {
                 dir: [I2F30::from_bits(-1073741824), I2F30::from_bits(0)],
@@ -3218,14 +3218,14 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
                 I2F30::from_bits(670761200),
             ),
             Vec3::new(
-                I2F30::from_bits(-565911630),
-                I2F30::from_bits(905458609),
-                I2F30::from_bits(-113182326),
+                I2F30::from_bits(-565911631),
+                I2F30::from_bits(905458608),
+                I2F30::from_bits(-113182325),
             ),
             Vec3::new(
-                I2F30::from_bits(-618663838),
+                I2F30::from_bits(-618663837),
                 I2F30::from_bits(-282817755),
-                I2F30::from_bits(830777154),
+                I2F30::from_bits(830777153),
             ),
         ],
         shape: [
@@ -3240,12 +3240,12 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         ),
         edges: [
             Edge {
-                dir: [I2F30::from_bits(727977596), I2F30::from_bits(789284566)],
+                dir: [I2F30::from_bits(727977595), I2F30::from_bits(789284565)],
                 len: I16F16::from_bits(66046),
             },
             Edge {
                 dir: [I2F30::from_bits(835432562), I2F30::from_bits(-674517561)],
-                len: I16F16::from_bits(77283),
+                len: I16F16::from_bits(77284),
             },
             Edge {
                 dir: [I2F30::from_bits(-1073741824), I2F30::from_bits(0)],
@@ -3263,18 +3263,18 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         ),
         axes: [
             Vec3::new(
-                I2F30::from_bits(910531247),
-                I2F30::from_bits(569082029),
+                I2F30::from_bits(910531245),
+                I2F30::from_bits(569082028),
                 I2F30::from_bits(0),
             ),
             Vec3::new(
-                I2F30::from_bits(-565911630),
+                I2F30::from_bits(-565911631),
                 I2F30::from_bits(905458609),
-                I2F30::from_bits(-113182327),
+                I2F30::from_bits(-113182326),
             ),
             Vec3::new(
                 I2F30::from_bits(-59986513),
-                I2F30::from_bits(95978421),
+                I2F30::from_bits(95978420),
                 I2F30::from_bits(1067759929),
             ),
         ],
@@ -3291,11 +3291,11 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         edges: [
             Edge {
                 dir: [I2F30::from_bits(835432465), I2F30::from_bits(674517681)],
-                len: I16F16::from_bits(104908),
+                len: I16F16::from_bits(104909),
             },
             Edge {
-                dir: [I2F30::from_bits(-70590125), I2F30::from_bits(-1071418938)],
-                len: I16F16::from_bits(66045),
+                dir: [I2F30::from_bits(-70590125), I2F30::from_bits(-1071418936)],
+                len: I16F16::from_bits(66046),
             },
             Edge {
                 dir: [I2F30::from_bits(-1073741824), I2F30::from_bits(0)],
@@ -3318,14 +3318,14 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
                 I2F30::from_bits(670761200),
             ),
             Vec3::new(
-                I2F30::from_bits(-565911630),
-                I2F30::from_bits(905458609),
-                I2F30::from_bits(-113182326),
+                I2F30::from_bits(-565911631),
+                I2F30::from_bits(905458608),
+                I2F30::from_bits(-113182325),
             ),
             Vec3::new(
-                I2F30::from_bits(-618663838),
+                I2F30::from_bits(-618663837),
                 I2F30::from_bits(-282817755),
-                I2F30::from_bits(830777154),
+                I2F30::from_bits(830777153),
             ),
         ],
         shape: [
@@ -3340,12 +3340,12 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         ),
         edges: [
             Edge {
-                dir: [I2F30::from_bits(727977596), I2F30::from_bits(789284566)],
+                dir: [I2F30::from_bits(727977595), I2F30::from_bits(789284565)],
                 len: I16F16::from_bits(66046),
             },
             Edge {
                 dir: [I2F30::from_bits(835432562), I2F30::from_bits(-674517561)],
-                len: I16F16::from_bits(77283),
+                len: I16F16::from_bits(77284),
             },
             Edge {
                 dir: [I2F30::from_bits(-1073741824), I2F30::from_bits(0)],
@@ -3363,18 +3363,18 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         ),
         axes: [
             Vec3::new(
-                I2F30::from_bits(910531247),
-                I2F30::from_bits(569082029),
+                I2F30::from_bits(910531245),
+                I2F30::from_bits(569082028),
                 I2F30::from_bits(0),
             ),
             Vec3::new(
-                I2F30::from_bits(-565911630),
+                I2F30::from_bits(-565911631),
                 I2F30::from_bits(905458609),
-                I2F30::from_bits(-113182327),
+                I2F30::from_bits(-113182326),
             ),
             Vec3::new(
                 I2F30::from_bits(-59986513),
-                I2F30::from_bits(95978421),
+                I2F30::from_bits(95978420),
                 I2F30::from_bits(1067759929),
             ),
         ],
@@ -3391,11 +3391,11 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         edges: [
             Edge {
                 dir: [I2F30::from_bits(835432465), I2F30::from_bits(674517681)],
-                len: I16F16::from_bits(104908),
+                len: I16F16::from_bits(104909),
             },
             Edge {
-                dir: [I2F30::from_bits(-70590125), I2F30::from_bits(-1071418938)],
-                len: I16F16::from_bits(66045),
+                dir: [I2F30::from_bits(-70590125), I2F30::from_bits(-1071418936)],
+                len: I16F16::from_bits(66046),
             },
             Edge {
                 dir: [I2F30::from_bits(-1073741824), I2F30::from_bits(0)],
@@ -3418,14 +3418,14 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
                 I2F30::from_bits(670761200),
             ),
             Vec3::new(
-                I2F30::from_bits(-565911630),
-                I2F30::from_bits(905458609),
-                I2F30::from_bits(-113182326),
+                I2F30::from_bits(-565911631),
+                I2F30::from_bits(905458608),
+                I2F30::from_bits(-113182325),
             ),
             Vec3::new(
-                I2F30::from_bits(-618663838),
+                I2F30::from_bits(-618663837),
                 I2F30::from_bits(-282817755),
-                I2F30::from_bits(830777154),
+                I2F30::from_bits(830777153),
             ),
         ],
         shape: [
@@ -3440,12 +3440,12 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         ),
         edges: [
             Edge {
-                dir: [I2F30::from_bits(727977596), I2F30::from_bits(789284566)],
+                dir: [I2F30::from_bits(727977595), I2F30::from_bits(789284565)],
                 len: I16F16::from_bits(66046),
             },
             Edge {
                 dir: [I2F30::from_bits(835432562), I2F30::from_bits(-674517561)],
-                len: I16F16::from_bits(77283),
+                len: I16F16::from_bits(77284),
             },
             Edge {
                 dir: [I2F30::from_bits(-1073741824), I2F30::from_bits(0)],
@@ -3463,18 +3463,18 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         ),
         axes: [
             Vec3::new(
-                I2F30::from_bits(910531247),
-                I2F30::from_bits(569082029),
+                I2F30::from_bits(910531245),
+                I2F30::from_bits(569082028),
                 I2F30::from_bits(0),
             ),
             Vec3::new(
-                I2F30::from_bits(-565911630),
+                I2F30::from_bits(-565911631),
                 I2F30::from_bits(905458609),
-                I2F30::from_bits(-113182327),
+                I2F30::from_bits(-113182326),
             ),
             Vec3::new(
                 I2F30::from_bits(-59986513),
-                I2F30::from_bits(95978421),
+                I2F30::from_bits(95978420),
                 I2F30::from_bits(1067759929),
             ),
         ],
@@ -3491,11 +3491,11 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         edges: [
             Edge {
                 dir: [I2F30::from_bits(835432465), I2F30::from_bits(674517681)],
-                len: I16F16::from_bits(104908),
+                len: I16F16::from_bits(104909),
             },
             Edge {
-                dir: [I2F30::from_bits(-70590125), I2F30::from_bits(-1071418938)],
-                len: I16F16::from_bits(66045),
+                dir: [I2F30::from_bits(-70590125), I2F30::from_bits(-1071418936)],
+                len: I16F16::from_bits(66046),
             },
             Edge {
                 dir: [I2F30::from_bits(-1073741824), I2F30::from_bits(0)],
@@ -3518,14 +3518,14 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
                 I2F30::from_bits(670761200),
             ),
             Vec3::new(
-                I2F30::from_bits(-565911630),
-                I2F30::from_bits(905458609),
-                I2F30::from_bits(-113182326),
+                I2F30::from_bits(-565911631),
+                I2F30::from_bits(905458608),
+                I2F30::from_bits(-113182325),
             ),
             Vec3::new(
-                I2F30::from_bits(-618663838),
+                I2F30::from_bits(-618663837),
                 I2F30::from_bits(-282817755),
-                I2F30::from_bits(830777154),
+                I2F30::from_bits(830777153),
             ),
         ],
         shape: [
@@ -3540,12 +3540,12 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         ),
         edges: [
             Edge {
-                dir: [I2F30::from_bits(727977596), I2F30::from_bits(789284566)],
+                dir: [I2F30::from_bits(727977595), I2F30::from_bits(789284565)],
                 len: I16F16::from_bits(66046),
             },
             Edge {
                 dir: [I2F30::from_bits(835432562), I2F30::from_bits(-674517561)],
-                len: I16F16::from_bits(77283),
+                len: I16F16::from_bits(77284),
             },
             Edge {
                 dir: [I2F30::from_bits(-1073741824), I2F30::from_bits(0)],
@@ -3563,18 +3563,18 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         ),
         axes: [
             Vec3::new(
-                I2F30::from_bits(910531247),
-                I2F30::from_bits(569082029),
+                I2F30::from_bits(910531245),
+                I2F30::from_bits(569082028),
                 I2F30::from_bits(0),
             ),
             Vec3::new(
-                I2F30::from_bits(-565911630),
+                I2F30::from_bits(-565911631),
                 I2F30::from_bits(905458609),
-                I2F30::from_bits(-113182327),
+                I2F30::from_bits(-113182326),
             ),
             Vec3::new(
                 I2F30::from_bits(-59986513),
-                I2F30::from_bits(95978421),
+                I2F30::from_bits(95978420),
                 I2F30::from_bits(1067759929),
             ),
         ],
@@ -3591,11 +3591,11 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         edges: [
             Edge {
                 dir: [I2F30::from_bits(835432465), I2F30::from_bits(674517681)],
-                len: I16F16::from_bits(104908),
+                len: I16F16::from_bits(104909),
             },
             Edge {
-                dir: [I2F30::from_bits(-70590125), I2F30::from_bits(-1071418938)],
-                len: I16F16::from_bits(66045),
+                dir: [I2F30::from_bits(-70590125), I2F30::from_bits(-1071418936)],
+                len: I16F16::from_bits(66046),
             },
             Edge {
                 dir: [I2F30::from_bits(-1073741824), I2F30::from_bits(0)],
@@ -3640,12 +3640,12 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         ),
         edges: [
             Edge {
-                dir: [I2F30::from_bits(1062950269), I2F30::from_bits(151849370)],
-                len: I16F16::from_bits(458751),
+                dir: [I2F30::from_bits(1062950268), I2F30::from_bits(151849370)],
+                len: I16F16::from_bits(458752),
             },
             Edge {
                 dir: [I2F30::from_bits(151863788), I2F30::from_bits(-1062948209)],
-                len: I16F16::from_bits(65535),
+                len: I16F16::from_bits(65536),
             },
             Edge {
                 dir: [I2F30::from_bits(-1073741824), I2F30::from_bits(0)],
@@ -3691,7 +3691,7 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         edges: [
             Edge {
                 dir: [I2F30::from_bits(151850025), I2F30::from_bits(1062950175)],
-                len: I16F16::from_bits(463409),
+                len: I16F16::from_bits(463410),
             },
             Edge {
                 dir: [I2F30::from_bits(0), I2F30::from_bits(-1073741824)],
@@ -3741,11 +3741,11 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         edges: [
             Edge {
                 dir: [I2F30::from_bits(151847731), I2F30::from_bits(1062950503)],
-                len: I16F16::from_bits(65535),
+                len: I16F16::from_bits(65536),
             },
             Edge {
                 dir: [I2F30::from_bits(1062950316), I2F30::from_bits(-151849042)],
-                len: I16F16::from_bits(458752),
+                len: I16F16::from_bits(458753),
             },
             Edge {
                 dir: [I2F30::from_bits(-1073741824), I2F30::from_bits(0)],
@@ -3791,7 +3791,7 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         edges: [
             Edge {
                 dir: [I2F30::from_bits(1062950175), I2F30::from_bits(151850025)],
-                len: I16F16::from_bits(463409),
+                len: I16F16::from_bits(463410),
             },
             Edge {
                 dir: [I2F30::from_bits(0), I2F30::from_bits(-1073741824)],
@@ -3840,12 +3840,12 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         ),
         edges: [
             Edge {
-                dir: [I2F30::from_bits(1062950269), I2F30::from_bits(151849370)],
-                len: I16F16::from_bits(458751),
+                dir: [I2F30::from_bits(1062950268), I2F30::from_bits(151849370)],
+                len: I16F16::from_bits(458752),
             },
             Edge {
                 dir: [I2F30::from_bits(151863788), I2F30::from_bits(-1062948209)],
-                len: I16F16::from_bits(65535),
+                len: I16F16::from_bits(65536),
             },
             Edge {
                 dir: [I2F30::from_bits(-1073741824), I2F30::from_bits(0)],
@@ -3891,7 +3891,7 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         edges: [
             Edge {
                 dir: [I2F30::from_bits(151850025), I2F30::from_bits(1062950175)],
-                len: I16F16::from_bits(463409),
+                len: I16F16::from_bits(463410),
             },
             Edge {
                 dir: [I2F30::from_bits(0), I2F30::from_bits(-1073741824)],
@@ -3941,11 +3941,11 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         edges: [
             Edge {
                 dir: [I2F30::from_bits(151847731), I2F30::from_bits(1062950503)],
-                len: I16F16::from_bits(65535),
+                len: I16F16::from_bits(65536),
             },
             Edge {
                 dir: [I2F30::from_bits(1062950316), I2F30::from_bits(-151849042)],
-                len: I16F16::from_bits(458752),
+                len: I16F16::from_bits(458753),
             },
             Edge {
                 dir: [I2F30::from_bits(-1073741824), I2F30::from_bits(0)],
@@ -3991,7 +3991,7 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         edges: [
             Edge {
                 dir: [I2F30::from_bits(1062950175), I2F30::from_bits(151850025)],
-                len: I16F16::from_bits(463409),
+                len: I16F16::from_bits(463410),
             },
             Edge {
                 dir: [I2F30::from_bits(0), I2F30::from_bits(-1073741824)],
@@ -4040,12 +4040,12 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         ),
         edges: [
             Edge {
-                dir: [I2F30::from_bits(1062950269), I2F30::from_bits(151849370)],
-                len: I16F16::from_bits(458751),
+                dir: [I2F30::from_bits(1062950268), I2F30::from_bits(151849370)],
+                len: I16F16::from_bits(458752),
             },
             Edge {
                 dir: [I2F30::from_bits(151863788), I2F30::from_bits(-1062948209)],
-                len: I16F16::from_bits(65535),
+                len: I16F16::from_bits(65536),
             },
             Edge {
                 dir: [I2F30::from_bits(-1073741824), I2F30::from_bits(0)],
@@ -4091,7 +4091,7 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         edges: [
             Edge {
                 dir: [I2F30::from_bits(151850025), I2F30::from_bits(1062950175)],
-                len: I16F16::from_bits(463409),
+                len: I16F16::from_bits(463410),
             },
             Edge {
                 dir: [I2F30::from_bits(0), I2F30::from_bits(-1073741824)],
@@ -4141,11 +4141,11 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         edges: [
             Edge {
                 dir: [I2F30::from_bits(151847731), I2F30::from_bits(1062950503)],
-                len: I16F16::from_bits(65535),
+                len: I16F16::from_bits(65536),
             },
             Edge {
                 dir: [I2F30::from_bits(1062950316), I2F30::from_bits(-151849042)],
-                len: I16F16::from_bits(458752),
+                len: I16F16::from_bits(458753),
             },
             Edge {
                 dir: [I2F30::from_bits(-1073741824), I2F30::from_bits(0)],
@@ -4191,7 +4191,7 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         edges: [
             Edge {
                 dir: [I2F30::from_bits(1062950175), I2F30::from_bits(151850025)],
-                len: I16F16::from_bits(463409),
+                len: I16F16::from_bits(463410),
             },
             Edge {
                 dir: [I2F30::from_bits(0), I2F30::from_bits(-1073741824)],
@@ -4240,12 +4240,12 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         ),
         edges: [
             Edge {
-                dir: [I2F30::from_bits(1062950269), I2F30::from_bits(151849370)],
-                len: I16F16::from_bits(458751),
+                dir: [I2F30::from_bits(1062950268), I2F30::from_bits(151849370)],
+                len: I16F16::from_bits(458752),
             },
             Edge {
                 dir: [I2F30::from_bits(151863788), I2F30::from_bits(-1062948209)],
-                len: I16F16::from_bits(65535),
+                len: I16F16::from_bits(65536),
             },
             Edge {
                 dir: [I2F30::from_bits(-1073741824), I2F30::from_bits(0)],
@@ -4291,7 +4291,7 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         edges: [
             Edge {
                 dir: [I2F30::from_bits(151850025), I2F30::from_bits(1062950175)],
-                len: I16F16::from_bits(463409),
+                len: I16F16::from_bits(463410),
             },
             Edge {
                 dir: [I2F30::from_bits(0), I2F30::from_bits(-1073741824)],
@@ -4341,11 +4341,11 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         edges: [
             Edge {
                 dir: [I2F30::from_bits(151847731), I2F30::from_bits(1062950503)],
-                len: I16F16::from_bits(65535),
+                len: I16F16::from_bits(65536),
             },
             Edge {
                 dir: [I2F30::from_bits(1062950316), I2F30::from_bits(-151849042)],
-                len: I16F16::from_bits(458752),
+                len: I16F16::from_bits(458753),
             },
             Edge {
                 dir: [I2F30::from_bits(-1073741824), I2F30::from_bits(0)],
@@ -4391,7 +4391,7 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         edges: [
             Edge {
                 dir: [I2F30::from_bits(1062950175), I2F30::from_bits(151850025)],
-                len: I16F16::from_bits(463409),
+                len: I16F16::from_bits(463410),
             },
             Edge {
                 dir: [I2F30::from_bits(0), I2F30::from_bits(-1073741824)],
@@ -4440,12 +4440,12 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         ),
         edges: [
             Edge {
-                dir: [I2F30::from_bits(1062950269), I2F30::from_bits(151849370)],
-                len: I16F16::from_bits(458751),
+                dir: [I2F30::from_bits(1062950268), I2F30::from_bits(151849370)],
+                len: I16F16::from_bits(458752),
             },
             Edge {
                 dir: [I2F30::from_bits(151863788), I2F30::from_bits(-1062948209)],
-                len: I16F16::from_bits(65535),
+                len: I16F16::from_bits(65536),
             },
             Edge {
                 dir: [I2F30::from_bits(-1073741824), I2F30::from_bits(0)],
@@ -4491,7 +4491,7 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         edges: [
             Edge {
                 dir: [I2F30::from_bits(151850025), I2F30::from_bits(1062950175)],
-                len: I16F16::from_bits(463409),
+                len: I16F16::from_bits(463410),
             },
             Edge {
                 dir: [I2F30::from_bits(0), I2F30::from_bits(-1073741824)],
@@ -4541,11 +4541,11 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         edges: [
             Edge {
                 dir: [I2F30::from_bits(151847731), I2F30::from_bits(1062950503)],
-                len: I16F16::from_bits(65535),
+                len: I16F16::from_bits(65536),
             },
             Edge {
                 dir: [I2F30::from_bits(1062950316), I2F30::from_bits(-151849042)],
-                len: I16F16::from_bits(458752),
+                len: I16F16::from_bits(458753),
             },
             Edge {
                 dir: [I2F30::from_bits(-1073741824), I2F30::from_bits(0)],
@@ -4591,7 +4591,7 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         edges: [
             Edge {
                 dir: [I2F30::from_bits(1062950175), I2F30::from_bits(151850025)],
-                len: I16F16::from_bits(463409),
+                len: I16F16::from_bits(463410),
             },
             Edge {
                 dir: [I2F30::from_bits(0), I2F30::from_bits(-1073741824)],
@@ -4640,12 +4640,12 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         ),
         edges: [
             Edge {
-                dir: [I2F30::from_bits(1062950269), I2F30::from_bits(151849370)],
-                len: I16F16::from_bits(458751),
+                dir: [I2F30::from_bits(1062950268), I2F30::from_bits(151849370)],
+                len: I16F16::from_bits(458752),
             },
             Edge {
                 dir: [I2F30::from_bits(151863788), I2F30::from_bits(-1062948209)],
-                len: I16F16::from_bits(65535),
+                len: I16F16::from_bits(65536),
             },
             Edge {
                 dir: [I2F30::from_bits(-1073741824), I2F30::from_bits(0)],
@@ -4691,7 +4691,7 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         edges: [
             Edge {
                 dir: [I2F30::from_bits(151850025), I2F30::from_bits(1062950175)],
-                len: I16F16::from_bits(463409),
+                len: I16F16::from_bits(463410),
             },
             Edge {
                 dir: [I2F30::from_bits(0), I2F30::from_bits(-1073741824)],
@@ -4741,11 +4741,11 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         edges: [
             Edge {
                 dir: [I2F30::from_bits(151847731), I2F30::from_bits(1062950503)],
-                len: I16F16::from_bits(65535),
+                len: I16F16::from_bits(65536),
             },
             Edge {
                 dir: [I2F30::from_bits(1062950316), I2F30::from_bits(-151849042)],
-                len: I16F16::from_bits(458752),
+                len: I16F16::from_bits(458753),
             },
             Edge {
                 dir: [I2F30::from_bits(-1073741824), I2F30::from_bits(0)],
@@ -4791,7 +4791,7 @@ pub static SCENE: [StandardTriangle<I16F16>; 96] = [
         edges: [
             Edge {
                 dir: [I2F30::from_bits(1062950175), I2F30::from_bits(151850025)],
-                len: I16F16::from_bits(463409),
+                len: I16F16::from_bits(463410),
             },
             Edge {
                 dir: [I2F30::from_bits(0), I2F30::from_bits(-1073741824)],

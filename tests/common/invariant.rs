@@ -210,11 +210,13 @@ fn justified<S: Scalar>(e: Error, xs: &[S], bound: S, r: Option<S>) {
             "OutOfRange for {xs:?} {r:?}"
         ),
         Error::NegativeRadius => assert!(r.is_some_and(|r| r < S::ZERO), "NegativeRadius, {r:?}"),
-        Error::Full => panic!("a constructor reported a full container"),
+        // Only containers and responses report these.
+        e @ (Error::Full | Error::RadiusTooSmall) => panic!("a constructor reported {e:?}"),
         Error::Degenerate => assert!(
             r.is_none() && xs.iter().all(|x| in_range(*x, bound)),
             "Degenerate for {xs:?}"
         ),
+        e => panic!("an error this invariant does not know: {e:?}"),
     }
 }
 

@@ -1,0 +1,221 @@
+//! The fixed-point implementations: unit vectors with more fractional bits than the
+//! coordinates, products taken into a double-width integer and rounded once to nearest (ties away
+//! from zero, so results mirror with the sign of their inputs), exact integer square roots
+//! rounded to nearest.
+
+use super::sealed::Kernel;
+use super::{Scalar, largest};
+use crate::vec3::Vec3;
+use core::cmp::Ordering;
+use fixed::types::{I2F30, I2F62, I16F16, I32F32};
+
+/// Rounds `v / 2^shift` to nearest, ties away from zero, for `shift >= 1`: `-v` rounds to
+/// exactly the negation of what `v` rounds to.
+macro_rules! round_shift {
+    ($v:expr, $shift:expr) => {{
+        let (v, half) = ($v, 1 << ($shift - 1));
+        if v < 0 {
+            -((half - v) >> $shift)
+        } else {
+            (v + half) >> $shift
+        }
+    }};
+}
+
+/// The integer square root rounded to nearest: `r + 1` when `x > r² + r`, i.e. when
+/// `sqrt(x) >= r + 1/2` (the two cannot be equal for integers).
+fn isqrt_nearest(x: u128) -> u128 {
+    let r = x.isqrt();
+    if x - r * r > r { r + 1 } else { r }
+}
+
+/// A wide integer clamped to the type's bits.
+macro_rules! saturate {
+    ($t:ty, $bits:ty, $wide:ty, $w:expr) => {
+        <$t>::from_bits(($w).clamp(<$bits>::MIN as $wide, <$bits>::MAX as $wide) as $bits)
+    };
+}
+
+macro_rules! fixed_scalar {
+    ($t:ty, $unit:ty, $bits:ty, $wide:ty, $uwide:ty, $frac:expr, $ufrac:expr, $limit_int:expr) => {
+        impl Scalar for $t {
+            const ZERO: Self = <$t>::ZERO;
+            const ONE: Self = <$t>::ONE;
+            const LIMIT: Self = <$t>::from_bits($limit_int << $frac);
+            const EPSILON: Self = <$t>::DELTA;
+            const PRECISION: crate::Precision = crate::Precision {
+                name: stringify!($t),
+                limit: $limit_int as f64,
+                epsilon: 1.0 / (1u64 << $frac) as f64,
+                relative: false,
+            };
+
+            #[inline]
+            fn from_f64(v: f64) -> Self {
+                if v.is_nan() {
+                    <$t>::MAX
+                } else {
+                    <$t>::saturating_from_num(v)
+                }
+            }
+            #[inline]
+            fn to_f64(self) -> f64 {
+                self.to_num::<f64>()
+            }
+            #[inline]
+            fn is_finite(self) -> bool {
+                true
+            }
+            #[inline]
+            fn abs(self) -> Self {
+                self.saturating_abs()
+            }
+            #[inline]
+            fn sqrt(self) -> Self {
+                let b = self.to_bits();
+                if b <= 0 {
+                    return <$t>::ZERO;
+                }
+                // sqrt(b / 2^F) * 2^F = sqrt(b * 2^F): an integer square root. Below the
+                // largest value the result is at most 2^(BITS/2 + F/2): rounding up cannot overflow.
+                let r = isqrt_nearest((b as $uwide as u128) << $frac);
+                <$t>::from_bits(r as $bits)
+            }
+            #[inline]
+            fn mul(self, o: Self) -> Self {
+                let p = self.to_bits() as $wide * o.to_bits() as $wide;
+                saturate!($t, $bits, $wide, round_shift!(p, $frac))
+            }
+            #[inline]
+            fn div(self, o: Self) -> Self {
+                let (n, d) = ((self.to_bits() as $wide) << $frac, o.to_bits() as $wide);
+                if d == 0 {
+                    return if n == 0 {
+                        <$t>::ZERO
+                    } else if n > 0 {
+                        <$t>::MAX
+                    } else {
+                        <$t>::MIN
+                    };
+                }
+                let (q, r) = (n / d, n % d);
+                let away = if (n < 0) == (d < 0) { 1 } else { -1 };
+                saturate!(
+                    $t,
+                    $bits,
+                    $wide,
+                    if 2 * r.unsigned_abs() >= d.unsigned_abs() {
+                        q + away
+                    } else {
+                        q
+                    }
+                )
+            }
+        }
+
+        impl Kernel for $t {
+            type Unit = $unit;
+            const UNIT_ZERO: $unit = <$unit>::ZERO;
+
+            #[inline]
+            fn dot_unit(d: Vec3<Self>, u: Vec3<$unit>) -> Self {
+                let p = |a: $t, b: $unit| a.to_bits() as $wide * b.to_bits() as $wide;
+                let sum = p(d.x, u.x) + p(d.y, u.y) + p(d.z, u.z);
+                <$t>::from_bits(round_shift!(sum, $ufrac) as $bits)
+            }
+            #[inline]
+            fn mul_cmp(a: Self, b: Self, c: Self, d: Self) -> Ordering {
+                let ab = a.to_bits() as $wide * b.to_bits() as $wide;
+                let cd = c.to_bits() as $wide * d.to_bits() as $wide;
+                ab.cmp(&cd)
+            }
+            fn scaled(v: Vec3<Self>) -> Option<Vec3<$unit>> {
+                let b = v.map(|c| c.to_bits() as $wide);
+                let m = largest(b.x.unsigned_abs(), b.y.unsigned_abs(), b.z.unsigned_abs());
+                if m == 0 {
+                    return None;
+                }
+                // A power-of-two scale is exact: shift the top bit of `m` to `2^(UFRAC-1)`.
+                let top = (<$wide>::BITS - 1 - m.leading_zeros()) as i32;
+                let k = ($ufrac - 1) - top;
+                Some(b.map(|c| {
+                    <$unit>::from_bits((if k >= 0 { c << k } else { round_shift!(c, -k) }) as _)
+                }))
+            }
+            fn unit_normalize(s: Vec3<$unit>) -> Vec3<$unit> {
+                let w = s.map(|c| c.to_bits() as $wide);
+                // Squares carry 2*UFRAC fractional bits; with |s| <= 1 their sum is below 3.
+                let len2 = w.x * w.x + w.y * w.y + w.z * w.z;
+                // Never zero for the inputs described, but a divisor the compiler cannot prove nonzero
+                // would leave a panic path in the binary.
+                let len = isqrt_nearest(len2 as u128).max(1) as $wide;
+                w.map(|c| {
+                    let num = c << $ufrac;
+                    let half = if num < 0 { -(len / 2) } else { len / 2 };
+                    <$unit>::from_bits(((num + half) / len) as _)
+                })
+            }
+            fn unit_cross(a: Vec3<$unit>, b: Vec3<$unit>) -> Option<Vec3<$unit>> {
+                let (a, b) = (
+                    a.map(|c| c.to_bits() as $wide),
+                    b.map(|c| c.to_bits() as $wide),
+                );
+                let c = crate::vec3::cross(a, b);
+                let m = largest(c.x.unsigned_abs(), c.y.unsigned_abs(), c.z.unsigned_abs());
+                // `c` carries 2*UFRAC fractional bits; 1024 units of roundoff is 2^(UFRAC+10).
+                if m < (1 << ($ufrac + 10)) {
+                    return None;
+                }
+                let shift = (<$wide>::BITS - m.leading_zeros()) as i32 - $ufrac;
+                Some(Self::unit_normalize(
+                    c.map(|x| <$unit>::from_bits(round_shift!(x, shift) as _)),
+                ))
+            }
+            #[inline]
+            fn div_pow2(v: Self, k: u32) -> Self {
+                <$t>::from_bits(round_shift!(v.to_bits(), k))
+            }
+            #[inline]
+            fn dot(a: Vec3<Self>, b: Vec3<Self>) -> Self {
+                let p = |a: $t, b: $t| a.to_bits() as $wide * b.to_bits() as $wide;
+                let sum = p(a.x, b.x) + p(a.y, b.y) + p(a.z, b.z);
+                saturate!($t, $bits, $wide, round_shift!(sum, $frac))
+            }
+            #[inline]
+            fn height_error(_: Self) -> Self {
+                <$t>::from_bits(8)
+            }
+            #[inline]
+            fn mul_unit(s: Self, u: $unit) -> Self {
+                let p = s.to_bits() as $wide * u.to_bits() as $wide;
+                <$t>::from_bits(round_shift!(p, $ufrac) as $bits)
+            }
+            fn direction(v: Vec3<Self>) -> Option<(Self, Vec3<$unit>)> {
+                // Components below 2^(BITS-1) square to below 2^(2 BITS - 2): three fit unsigned.
+                let u = v.map(|c| (c.to_bits() as $wide).unsigned_abs());
+                let len = isqrt_nearest((u.x * u.x + u.y * u.y + u.z * u.z) as u128);
+                Some((
+                    <$t>::from_bits(len as $bits),
+                    Self::unit_normalize(Self::scaled(v)?),
+                ))
+            }
+            fn chord(r: Self, c: Vec3<Self>) -> Option<Self> {
+                if c.x.abs() > r || c.y.abs() > r || c.z.abs() > r {
+                    return None;
+                }
+                // Every square is below r² <= LIMIT², exact with 2F fractional bits.
+                let sq = |a: $t| (a.to_bits() as $wide) * (a.to_bits() as $wide);
+                let k2 = sq(r) - sq(c.x) - sq(c.y) - sq(c.z);
+                (k2 >= 0)
+                    .then(|| <$t>::from_bits(isqrt_nearest(k2.unsigned_abs() as u128) as $bits))
+            }
+            #[inline]
+            fn unit_to_scalar(u: $unit) -> Self {
+                <$t>::from_bits(round_shift!(u.to_bits() as $wide, $ufrac - $frac) as $bits)
+            }
+        }
+    };
+}
+
+fixed_scalar!(I16F16, I2F30, i32, i64, u32, 16, 30, 4096);
+fixed_scalar!(I32F32, I2F62, i64, i128, u64, 32, 62, 268_435_456);

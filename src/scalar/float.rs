@@ -1,0 +1,133 @@
+//! The IEEE float implementations: libm's correctly rounded square root, unit vectors in the
+//! same type, every operation one IEEE basic operation rounded to nearest (ties to even).
+
+use super::sealed::Kernel;
+use super::{Scalar, largest};
+use crate::vec3::Vec3;
+use core::cmp::Ordering;
+
+macro_rules! float_scalar {
+    ($t:ty, $sqrt:path, $limit:expr) => {
+        impl Scalar for $t {
+            const ZERO: Self = 0.0;
+            const ONE: Self = 1.0;
+            const LIMIT: Self = $limit;
+            const EPSILON: Self = <$t>::EPSILON;
+            const PRECISION: crate::Precision = crate::Precision {
+                name: stringify!($t),
+                limit: $limit,
+                epsilon: <$t>::EPSILON as f64,
+                relative: true,
+            };
+
+            #[inline]
+            fn from_f64(v: f64) -> Self {
+                v as $t
+            }
+            #[inline]
+            fn to_f64(self) -> f64 {
+                self as f64
+            }
+            #[inline]
+            fn is_finite(self) -> bool {
+                <$t>::is_finite(self)
+            }
+            #[inline]
+            fn abs(self) -> Self {
+                <$t>::abs(self)
+            }
+            #[inline]
+            fn sqrt(self) -> Self {
+                $sqrt(self)
+            }
+            #[inline]
+            fn mul(self, o: Self) -> Self {
+                self * o
+            }
+            #[inline]
+            fn div(self, o: Self) -> Self {
+                self / o
+            }
+        }
+
+        impl Kernel for $t {
+            type Unit = $t;
+            const UNIT_ZERO: $t = 0.0;
+
+            #[inline]
+            fn dot_unit(d: Vec3<Self>, u: Vec3<Self>) -> Self {
+                d.dot(u)
+            }
+            #[inline]
+            fn mul_cmp(a: Self, b: Self, c: Self, d: Self) -> Ordering {
+                (a * b).partial_cmp(&(c * d)).unwrap_or(Ordering::Equal)
+            }
+            fn scaled(v: Vec3<Self>) -> Option<Vec3<Self>> {
+                let m = largest(v.x.abs(), v.y.abs(), v.z.abs());
+                if m.is_nan() || m <= 0.0 {
+                    return None;
+                }
+                Some(v.map(|c| c / m))
+            }
+            fn unit_normalize(s: Vec3<Self>) -> Vec3<Self> {
+                let len = $sqrt(s.dot(s));
+                s.map(|c| c / len)
+            }
+            fn unit_cross(a: Vec3<Self>, b: Vec3<Self>) -> Option<Vec3<Self>> {
+                let c = crate::vec3::cross(a, b);
+                let m = largest(c.x.abs(), c.y.abs(), c.z.abs());
+                if m.is_nan() || m < 1024.0 * <$t>::EPSILON {
+                    return None;
+                }
+                Some(Self::unit_normalize(c.map(|x| x / m)))
+            }
+            #[inline]
+            fn div_pow2(v: Self, k: u32) -> Self {
+                v / (1u64 << k) as $t
+            }
+            #[inline]
+            fn dot(a: Vec3<Self>, b: Vec3<Self>) -> Self {
+                a.dot(b)
+            }
+            #[inline]
+            fn height_error(m: Self) -> Self {
+                let m = if m > 1.0 { m } else { 1.0 };
+                4.0 * <$t>::EPSILON * m
+            }
+            #[inline]
+            fn mul_unit(s: Self, u: Self) -> Self {
+                s * u
+            }
+            #[inline]
+            fn direction(v: Vec3<Self>) -> Option<(Self, Vec3<Self>)> {
+                let n2 = v.dot(v);
+                // Squares that underflowed cost at most EPSILON of n2 above this threshold.
+                if n2 >= <$t>::MIN_POSITIVE / <$t>::EPSILON && n2.is_finite() {
+                    let len = $sqrt(n2);
+                    return Some((len, v * (1.0 / len)));
+                }
+                // Tiny vectors (a tiny radius makes tiny contact offsets): scale by the largest
+                // component first, dividing, since 1 / m overflows for a subnormal m.
+                let m = largest(v.x.abs(), v.y.abs(), v.z.abs());
+                if m.is_nan() || m <= 0.0 {
+                    return None;
+                }
+                let s = v.map(|c| c / m);
+                let len = $sqrt(s.dot(s));
+                Some((m * len, s * (1.0 / len)))
+            }
+            #[inline]
+            fn chord(r: Self, c: Vec3<Self>) -> Option<Self> {
+                let k2 = r * r - c.dot(c);
+                (k2 >= 0.0).then(|| $sqrt(k2))
+            }
+            #[inline]
+            fn unit_to_scalar(u: Self) -> Self {
+                u
+            }
+        }
+    };
+}
+
+float_scalar!(f32, libm::sqrtf, 16_777_216.0);
+float_scalar!(f64, libm::sqrt, 9_007_199_254_740_992.0);

@@ -1,0 +1,148 @@
+//! The [`Scalar`] trait and its four implementations: `f32`, `f64`, `I16F16` and `I32F32`.
+//!
+//! Everything an algorithm needs to know about a number type lives here, so the algorithms are
+//! written once. Two families implement it: IEEE floats ([`float`]: libm square root, unit
+//! vectors in the same type) and fixed-point ([`fixed`](mod@fixed): exact integer square root,
+//! unit vectors with more fractional bits than the coordinates, products taken into a
+//! double-width integer before rounding once).
+//!
+//! Rounding is decided here, not by operators. The trait has no `*` or `/`: the fixed-point
+//! types' operators round towards −∞ (`*`) or zero (`/`), a bias that feeds back into positions
+//! step after step (a ball resting on a tilted floor creeps downhill). Every product, quotient,
+//! dot product and square root the algorithms form goes through a kernel that rounds to
+//! nearest, with ties away from zero for fixed-point, so results mirror with their inputs'
+//! signs, and ties to even for floats (IEEE).
+
+mod fixed;
+mod float;
+
+use crate::vec3::Vec3;
+use core::cmp::Ordering;
+use core::fmt::Debug;
+use core::ops::{Add, Neg, Sub};
+
+/// A number type the crate computes in: `f32`, `f64`, [`I16F16`] or [`I32F32`].
+///
+/// The trait is sealed: its kernels (widening dot products, scale-safe normalisation, exact
+/// product comparison) carry preconditions that only the crate's validated types guarantee.
+/// What a user needs is public: constants, conversions, `abs`, `sqrt` and the safe range.
+///
+/// | scalar | `LIMIT` (largest accepted coordinate or radius) | unit-vector components |
+/// |---|---|---|
+/// | `f32` | 2^24 = 16 777 216 | `f32` |
+/// | `f64` | 2^53 | `f64` |
+/// | `I16F16` | 4096 | `I2F30` (30 fractional bits) |
+/// | `I32F32` | 2^28 = 268 435 456 | `I2F62` (62 fractional bits) |
+///
+/// ```
+/// use ballcast::Scalar;
+/// use fixed::types::I16F16;
+/// assert_eq!(I16F16::from_f64(1.5).to_f64(), 1.5);
+/// assert_eq!(I16F16::LIMIT.to_f64(), 4096.0);
+/// // Conversions saturate; NaN maps to the largest value, which every constructor rejects.
+/// assert!(I16F16::from_f64(f64::NAN) > I16F16::LIMIT);
+/// ```
+pub trait Scalar:
+    sealed::Kernel
+    + Copy
+    + Debug
+    + PartialEq
+    + PartialOrd
+    + Add<Output = Self>
+    + Sub<Output = Self>
+    + Neg<Output = Self>
+{
+    /// Zero.
+    const ZERO: Self;
+    /// One.
+    const ONE: Self;
+    /// The largest magnitude accepted for a world coordinate or a radius.
+    ///
+    /// Inside this range no intermediate value of any algorithm can overflow: differences of two
+    /// points stay below `2 * LIMIT` per component, coordinates in a triangle's standard frame
+    /// below `3.5 * LIMIT`, and differences of those below `7 * LIMIT`, all representable.
+    const LIMIT: Self;
+    /// The spacing of representable values near one (machine epsilon; one LSB for fixed-point).
+    const EPSILON: Self;
+    /// The same facts as plain numbers, for the precision planner ([`crate::plan()`]).
+    const PRECISION: crate::Precision;
+
+    /// Converts from `f64`, rounding to nearest. Fixed-point saturates, and maps NaN to the
+    /// largest value so that constructors reject it as out of range rather than read it as zero.
+    fn from_f64(v: f64) -> Self;
+    /// Converts to `f64`: exact for `f32`, `f64` and `I16F16`; `I32F32` values with more than 53
+    /// significant bits round to nearest.
+    fn to_f64(self) -> f64;
+    /// False for NaN and infinities; fixed-point values are always finite.
+    fn is_finite(self) -> bool;
+    /// The absolute value (fixed-point saturates at the most negative value).
+    fn abs(self) -> Self;
+    /// The square root, correctly rounded: to nearest for fixed-point (exact integer square
+    /// root) and by libm for floats. Negative inputs give zero for fixed-point and NaN for floats.
+    fn sqrt(self) -> Self;
+    /// `self * o`, rounded to nearest. Fixed-point: ties away from zero; the product must be
+    /// representable (it saturates otherwise, in every build).
+    fn mul(self, o: Self) -> Self;
+    /// `self / o`, rounded to nearest. Fixed-point: ties away from zero; a zero divisor or a
+    /// quotient beyond the type's range saturates (never panics).
+    fn div(self, o: Self) -> Self;
+}
+
+pub(crate) mod sealed {
+    use super::*;
+
+    /// The per-type kernels the algorithms are written against. Preconditions are stated per
+    /// method; callers inside the crate meet them through validated types.
+    pub trait Kernel: Sized {
+        /// The component type of unit vectors (more fractional bits than `Self` for fixed-point).
+        type Unit: Copy + Debug + PartialEq + Neg<Output = Self::Unit>;
+        /// Zero as a unit-vector component.
+        const UNIT_ZERO: Self::Unit;
+
+        /// `d · u` rounded once. Needs components of `d` within `2 * LIMIT`.
+        fn dot_unit(d: Vec3<Self>, u: Vec3<Self::Unit>) -> Self;
+        /// Orders `a * b` against `c * d`, exactly for fixed-point. Needs operands below `8 * LIMIT`.
+        fn mul_cmp(a: Self, b: Self, c: Self, d: Self) -> Ordering;
+        /// `v` scaled by a positive factor so its largest component has magnitude in `[1/2, 1]`;
+        /// `None` for the zero vector. Nothing is squared, so nothing can overflow.
+        fn scaled(v: Vec3<Self>) -> Option<Vec3<Self::Unit>>;
+        /// Normalises a vector whose largest component has magnitude in `[1/2, 1]`.
+        fn unit_normalize(s: Vec3<Self::Unit>) -> Vec3<Self::Unit>;
+        /// The normalised cross product of two vectors with components in `[-1, 1]`, or `None`
+        /// when its direction is uncertain: the cross product's largest component is below
+        /// 1024 units of roundoff of `Unit`, so the direction error would exceed about 1e-3 rad.
+        fn unit_cross(a: Vec3<Self::Unit>, b: Vec3<Self::Unit>) -> Option<Vec3<Self::Unit>>;
+        /// `v / 2^k` rounded to nearest (exact for floats short of underflow), `1 <= k < 32`.
+        fn div_pow2(v: Self, k: u32) -> Self;
+        /// `a · b` rounded once. Needs components within `2 * LIMIT` and a result in range.
+        fn dot(a: Vec3<Self>, b: Vec3<Self>) -> Self;
+        /// A bound on the rounding of a height (a coordinate in a triangle's frame) for points
+        /// within `±m`: four steps of the spacing at `m` for floats, eight steps for fixed-point
+        /// (the planner's model, [`crate::Precision::distance_error`]). Needs `m` within `LIMIT`.
+        fn height_error(m: Self) -> Self;
+        /// `s * u` rounded once.
+        fn mul_unit(s: Self, u: Self::Unit) -> Self;
+        /// The length of `v` and its unit direction; `None` for the zero vector. Needs
+        /// components within `8 * LIMIT` (fixed-point: the length is the exact integer square root
+        /// of the exact sum of squares, rounded to nearest).
+        fn direction(v: Vec3<Self>) -> Option<(Self, Vec3<Self::Unit>)>;
+        /// `sqrt(r² - |c|²)`, the half chord at distance `|c|` from a sphere's centre, or `None`
+        /// when `|c| > r`. Needs `r` within `LIMIT` and `c` within `8 * LIMIT`; fixed-point
+        /// forms the squares exactly in the wide type.
+        fn chord(r: Self, c: Vec3<Self>) -> Option<Self>;
+        /// A unit-vector component rounded to `Self`.
+        fn unit_to_scalar(u: Self::Unit) -> Self;
+    }
+}
+
+/// Four steps of the scalar's resolution: contacts whose alphas differ by no more are taken to
+/// arrive together (their order is rounding).
+pub(crate) fn tie<S: Scalar>() -> S {
+    S::EPSILON + S::EPSILON + S::EPSILON + S::EPSILON
+}
+
+/// The largest of three values: with magnitudes, a vector length that needs no squaring.
+pub(crate) fn largest<T: PartialOrd + Copy>(a: T, b: T, c: T) -> T {
+    let ab = if b > a { b } else { a };
+    if c > ab { c } else { ab }
+}
