@@ -275,7 +275,7 @@ impl<S: Scalar> StandardTriangle<S> {
     }
 
     /// Vertex `i` in the standard frame.
-    fn corner(&self, i: usize) -> Vec3<S> {
+    pub(crate) fn corner(&self, i: usize) -> Vec3<S> {
         let (x1, z1, x2) = self.shape();
         let z = S::ZERO;
         match i {

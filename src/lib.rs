@@ -54,6 +54,7 @@
 
 mod check;
 pub mod contact;
+mod cover;
 pub mod error;
 pub mod face;
 pub mod hit;

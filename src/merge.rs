@@ -12,7 +12,7 @@
 
 use crate::contact::unit;
 use crate::scalar::tie;
-use crate::{Hit, Scalar, SceneHit, Vec3};
+use crate::{Contact, Hit, Scalar, SceneHit, Vec3};
 use heapless::Vec;
 
 /// How many tied contacts are kept (by smallest index): a vertex where eight triangles meet.
@@ -88,20 +88,31 @@ impl<S: Scalar> Earliest<S> {
                 contact,
             },
         ) = self.best?;
+        // An edge or vertex in the plane of a face touched at the same moment adds nothing but
+        // its rounding (a ghost bump, e.g. an open edge where neighbours meet in a T-junction):
+        // the face speaks for it.
+        let face_has = |n: Vec3<S>| {
+            self.ties
+                .iter()
+                .any(|(_, h)| h.contact == Contact::Face && same_plane(h.normal, n))
+        };
         let mut planes = [None; PLANES];
-        let mut sum = Vec3::new(S::ZERO, S::ZERO, S::ZERO);
+        let (mut sum, mut count, mut only) = (Vec3::new(S::ZERO, S::ZERO, S::ZERO), 0, normal);
         for (_, h) in &self.ties {
-            sum = sum + h.normal;
+            if h.contact != Contact::Face && face_has(h.normal) {
+                continue;
+            }
+            (sum, count, only) = (sum + h.normal, count + 1, h.normal);
             if !planes.iter().flatten().any(|p| same_plane(*p, h.normal))
                 && let Some(slot) = planes.iter_mut().find(|p| p.is_none())
             {
                 *slot = Some(h.normal);
             }
         }
-        let normal = if self.ties.len() > 1 {
-            unit(sum).unwrap_or(normal)
+        let normal = if count > 1 {
+            unit(sum).unwrap_or(only)
         } else {
-            normal
+            only
         };
         Some(SceneHit {
             alpha,
@@ -116,7 +127,7 @@ impl<S: Scalar> Earliest<S> {
 /// Whether two unit normals agree within about 1e-3 rad per component: one plane for a response.
 pub(crate) fn same_plane<S: Scalar>(a: Vec3<S>, b: Vec3<S>) -> bool {
     let d = a - b;
-    let tol = S::from_f64(1.0 / 1024.0);
+    let tol = S::div_pow2(S::ONE, 10);
     d.x.abs() <= tol && d.y.abs() <= tol && d.z.abs() <= tol
 }
 

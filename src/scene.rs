@@ -1,6 +1,7 @@
 //! Many triangles at once: [`Scene`], a fixed-capacity set of prepared triangles with active
 //! edges computed from adjacency, and its earliest-contact query.
 
+use crate::cover::{covered, interval};
 use crate::merge::{PLANES, earliest};
 use crate::{Contact, Error, Scalar, StandardTriangle, Sweep, Triangle, Vec3};
 use heapless::Vec;
@@ -159,7 +160,29 @@ impl<S: Scalar, const N: usize> Scene<S, N> {
         for other in 0..index {
             self.link(index, other);
         }
+        self.cover(index);
         Ok(index)
+    }
+
+    /// Switches off edges that flat neighbours cover without sharing a vertex pair
+    /// (T-junctions): those of the new triangle `t`, and those of earlier triangles that one of
+    /// `t`'s edges runs along.
+    fn cover(&mut self, t: usize) {
+        let v = self.sources[t].vertices();
+        for j in 0..self.triangles.len() {
+            for k in 0..3 {
+                let (tj, tt) = (&self.triangles[j], &self.triangles[t]);
+                if !tj.features().edge(k) {
+                    continue;
+                }
+                let near =
+                    j == t || (0..3).any(|e| interval(tj, k, tt, (v[e], v[(e + 1) % 3])).is_some());
+                let all = self.triangles.iter().zip(self.sources.iter());
+                if near && covered(tj, k, all) {
+                    self.deactivate(j, k);
+                }
+            }
+        }
     }
 
     /// Switches off the edges `a` and `b` share where the surface is flat or a valley there.
