@@ -110,7 +110,9 @@ pub fn min_radius<S: Scalar>(extent: S) -> S {
 /// let out = move_and_slide(&s, v(0.0, 1.0, 0.0), v(2.0, -2.0, 0.0), 0.5)?;
 /// assert_eq!(out.position.x, 2.0);
 /// assert!((out.position.y - 0.5 - skin(0.5, 2.0)).abs() < 1e-12);
-/// assert_eq!(out.blocked, v(0.0, -1.5, 0.0));
+/// // What the floor took away: the 1.5 below it, and the skin.
+/// assert_eq!((out.blocked.x, out.blocked.z), (0.0, 0.0));
+/// assert!((out.blocked.y + 1.5 + skin(0.5, 2.0)).abs() < 1e-12);
 /// # Ok::<(), ballcast::Error>(())
 /// ```
 pub fn move_and_slide<S: Scalar, G: Geometry<S> + ?Sized>(
@@ -149,14 +151,34 @@ pub fn move_and_slide<S: Scalar, G: Geometry<S> + ?Sized>(
             break;
         };
         *slot = Some(hit);
-        out.position = out.position + rest.scale(hit.alpha) + hit.normal.scale(skin);
-        let left = rest.scale(S::ONE - hit.alpha);
+        let (alpha, lift) = stand_off(&hit, rest, skin);
+        out.position = out.position + rest.scale(alpha) + lift;
+        let left = rest.scale(S::ONE - alpha);
         add_planes(&mut planes, &hit);
         rest = constrain(left, &planes, displacement);
         out.blocked = out.blocked + (left - rest);
     }
     out.blocked = out.blocked + rest;
     Ok(out)
+}
+
+/// Where to stop short of a contact met along `rest`, as a fraction of it, and a lift to add.
+/// A ball that travelled stops a skin short, measured along the normal, by backing off along
+/// its own path (never behind its start), so stopping adds no sideways motion and a ball pushed
+/// into a corner settles at a skin from both walls instead of being levered from one to the
+/// other. One met at once (already touching or overlapping) is lifted by a skin instead.
+fn stand_off<S: Scalar>(hit: &SceneHit<S>, rest: Vec3<S>, skin: S) -> (S, Vec3<S>) {
+    let into = S::dot(rest, hit.normal);
+    if hit.alpha > S::ZERO && into < S::ZERO {
+        let back = S::div(skin, -into);
+        let alpha = if back < hit.alpha {
+            hit.alpha - back
+        } else {
+            S::ZERO
+        };
+        return (alpha, Vec3::new(S::ZERO, S::ZERO, S::ZERO));
+    }
+    (hit.alpha, hit.normal.scale(skin))
 }
 
 /// The largest coordinate magnitude of a point.
