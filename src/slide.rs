@@ -198,12 +198,23 @@ fn add_planes<S: Scalar>(planes: &mut Planes<S>, hit: &SceneHit<S>) {
 
 /// `v` constrained by every plane (unit normals): unchanged if it moves into none; else the
 /// first of: `v` without its part into one plane, along the crease of two, that moves into
-/// no other plane (beyond rounding); else zero. Zero too if the result runs against `primal`.
+/// no other plane (beyond rounding); else zero. Zero too if the result runs against `primal`,
+/// or is no larger than the rounding of the normals times `v`.
 fn constrain<S: Scalar>(v: Vec3<S>, planes: &[Vec3<S>], primal: Vec3<S>) -> Vec3<S> {
     let zero = Vec3::new(S::ZERO, S::ZERO, S::ZERO);
     let slack = -S::height_error(magnitude(v));
     let clear = |w: Vec3<S>| planes.iter().all(|n| S::dot(w, *n) >= slack);
-    let keep = |w: Vec3<S>| if S::dot(w, primal) > S::ZERO { w } else { zero };
+    // What is left after removing a large push into a plane carries the normal's rounding
+    // times the push (four steps of resolution of it at most): the same each call, so it would
+    // add up to a drift. Less than that is not motion.
+    let noise = S::mul(magnitude(v), crate::scalar::tie::<S>());
+    let keep = |w: Vec3<S>| {
+        if magnitude(w) > noise && S::dot(w, primal) > S::ZERO {
+            w
+        } else {
+            zero
+        }
+    };
     if clear(v) {
         return v;
     }

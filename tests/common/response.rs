@@ -91,6 +91,8 @@ pub struct World<S: Scalar> {
     pub m: Rigid,
     /// The spacing of `S` at the scene's largest coordinate: one step of resolution.
     pub res: f64,
+    /// The scene's largest coordinate.
+    pub extent: f64,
 }
 
 impl<S: Tolerance> World<S> {
@@ -117,6 +119,7 @@ impl<S: Tolerance> World<S> {
             normals,
             m,
             res: S::spacing(extent),
+            extent,
         }
     }
     /// Signed height of `p` above triangle `i`'s plane.
@@ -168,7 +171,8 @@ pub fn hit_normals<S: Scalar>(h: &SceneHit<S>) -> Vec<P> {
 /// Measures one run step by step and keeps its maxima and first failures.
 ///
 /// Allowances, all from the scalar's resolution `res` (its spacing at the scene's largest
-/// coordinate) and the response's documented skin `r / 1024 + 4 res`:
+/// coordinate) and the response's documented skin (`ballcast::slide::skin` at the scene's
+/// largest coordinate):
 /// - depth: no triangle's overlap (front side only) may grow, within one call or since the
 ///   run's start, by more than one skin;
 /// - against the push: a call may move the centre back along its displacement by at most one
@@ -219,7 +223,7 @@ impl Monitor {
             label: format!("{} {label}", S::NAME),
             r,
             res: w.res,
-            skin: r / 1024.0 + 4.0 * w.res,
+            skin: ballcast::slide::skin(S::from_f64(r), S::from_f64(w.extent)).to_f64(),
             eps: S::EPSILON.to_f64(),
             path: 0.0,
             start: o.clone(),
