@@ -108,6 +108,24 @@ fn corners_from_60_to_170_degrees_come_to_rest() {
     assert_all(&all);
 }
 
+/// At the smallest radius the response accepts near (2048, -1843, 1946) (the planner's
+/// figure), every scalar holds the ball in its box without refusing; just below it, refuses.
+fn smallest_radius_holds<S: Tolerance>() {
+    let extent = 2100.0;
+    let r = S::PRECISION.min_radius(extent);
+    assert_all(&cases::small_balls::<S>(r, false, 300));
+    let (p, z) = (
+        common::v::<S>([extent, -1843.0, 1946.0]),
+        common::v::<S>([0.0; 3]),
+    );
+    let below = S::from_f64(0.9 * r);
+    let scene: ballcast::Scene<S, 1> = ballcast::Scene::new();
+    assert_eq!(
+        ballcast::move_and_slide(&scene, p, z, below).unwrap_err(),
+        ballcast::Error::RadiusTooSmall
+    );
+}
+
 #[test]
 fn tiny_ball_i16f16_near_range_edge_box() {
     let mut all = tiny_balls::<I16F16>(300);
@@ -244,6 +262,10 @@ macro_rules! per_scalar {
         #[test]
         fn pushed_up_and_down_stairs() {
             property(|s, k, _| stairs::<$t>(s, k, STEPS));
+        }
+        #[test]
+        fn smallest_radius_holds_near_the_range_edge() {
+            smallest_radius_holds::<$t>();
         }
         #[test]
         #[ignore = "10^5 steps per run: cargo test --release --test response -- --ignored --nocapture"]

@@ -170,19 +170,26 @@ pub fn corners_at<S: Tolerance>(angles: &[f64], floors: bool, steps: usize) -> V
     out
 }
 
-/// r = 0.001 in a closed box `2 half` wide near (2048, -1843, 1946), turned: pushed into it
-/// by `push` radii every step (or, with `push == 0`, rolling and kicked). Each run may end with
-/// the response refusing the radius, but the centre never gets behind a wall.
-pub fn tiny_ball<S: Tolerance>(seed: u64, half: f64, push: f64, steps: usize) -> Monitor {
+/// A ball of radius `r` in a closed box `2 half` wide near (2048, -1843, 1946), turned:
+/// pushed into it by `push` radii every step (or, with `push == 0`, rolling and kicked). A run
+/// may end with the response refusing the radius if `may_refuse`, but the centre never gets
+/// behind a wall.
+pub fn tiny_ball<S: Tolerance>(
+    seed: u64,
+    r: f64,
+    half: f64,
+    push: f64,
+    may_refuse: bool,
+    steps: usize,
+) -> Monitor {
     let mut g = rng(seed);
     let mut m = Rigid::random(&mut g, 0.0);
     m.shift = [2048.0, -1843.0, 1946.0];
     let w = World::<S>::new(&scenes::box_tris(half), m);
-    let r = 0.001;
     let start = back(v::<S>(m.point(g.point(half - 2.0 * r))));
-    let label = format!("tiny ball seed {seed} half {half} push {push}");
+    let label = format!("ball r {r:.3e} seed {seed} half {half:.3e} push {push}");
     let mut mon = Monitor::new(label, &w, start, r);
-    mon.may_refuse = true;
+    mon.may_refuse = may_refuse;
     if push > 0.0 {
         let d = scale(unit(g.point(1.0)), push * r);
         push_run(&w, &mut mon, start, d, steps, |m, _, p| {
@@ -206,10 +213,16 @@ pub fn tiny_ball<S: Tolerance>(seed: u64, half: f64, push: f64, steps: usize) ->
 }
 
 pub fn tiny_balls<S: Tolerance>(steps: usize) -> Vec<Monitor> {
+    small_balls::<S>(0.001, true, steps)
+}
+
+/// The same runs with balls of radius `r`, in boxes 3 and 10 radii wide; `may_refuse` says
+/// whether the response may refuse the radius.
+pub fn small_balls<S: Tolerance>(r: f64, may_refuse: bool, steps: usize) -> Vec<Monitor> {
     let mut out = Vec::new();
     for seed in TINY_SEEDS {
-        for (half, push) in [(0.003, 0.3), (0.01, 0.3), (0.003, 1.0), (0.01, 0.0)] {
-            out.push(tiny_ball::<S>(seed, half, push, steps));
+        for (half, push) in [(3.0, 0.3), (10.0, 0.3), (3.0, 1.0), (10.0, 0.0)] {
+            out.push(tiny_ball::<S>(seed, r, half * r, push, may_refuse, steps));
         }
     }
     out
