@@ -19,6 +19,10 @@
 //!   most 1.4e-5 (`f32`, p99 4.4e-6), 1.2e-8 (`I32F32`, p99 6.5e-9) and 7.6e-4 (`I16F16`,
 //!   p99 4.3e-4, mostly alpha's own 2^-16 step over long paths). [`plan()`] predicts these for
 //!   any scene size.
+//! - **A response that holds**: [`move_and_slide`] never carries a ball deeper into what it
+//!   overlaps, respects every plane touched at once (corners), comes to rest when pushed into a
+//!   corner, and rounds every product to nearest so a resting ball does not creep (long runs of
+//!   10^5 steps in `tests/response.rs`, every scalar).
 //!
 //! ## Map
 //! - [`scalar`] holds the [`Scalar`] trait and its implementations.
@@ -29,7 +33,9 @@
 //!   [`StandardTriangle::face_collision`].
 //! - [`contact`] holds edge and vertex contacts, [`StandardTriangle::cast`] and [`Features`].
 //! - [`scene`] holds [`Scene`], many triangles with active edges from adjacency, and [`SceneHit`].
-//! - [`slide`] holds [`move_and_slide`], the collision response, and [`Slide`].
+//! - [`slide`] holds [`move_and_slide`], the collision response (Quake's fly-move, constrained
+//!   by every plane touched), [`Slide`], and the [`skin`](slide::skin) and
+//!   [`min_radius`](slide::min_radius) it works with.
 //! - [`mod@plan`] holds the precision planner: which scalars fit a scene, and their expected error.
 //! - [`interop`] holds conversions for the `mint`, `glam` and `serde` features.
 //! - [`hit`] holds [`Hit`] and [`Contact`], what a query returns; [`error`] holds [`Error`].
@@ -76,7 +82,7 @@ pub use merge::PLANES;
 pub use plan::{Precision, Verdict, plan};
 pub use scalar::Scalar;
 pub use scene::{Geometry, Scene, SceneHit};
-pub use slide::{MAX_SLIDES, Slide, move_and_slide};
+pub use slide::{MAX_SLIDES, Slide, SlideContact, Slider, move_and_slide};
 pub use sweep::{StandardSweep, Sweep};
 pub use triangle::{Edge, Parts, StandardTriangle, Triangle};
 pub use vec3::Vec3;

@@ -127,7 +127,7 @@ fn no_ghost_bumps<S: Tolerance>() -> usize {
         }
         for _ in 0..36 {
             let out = move_and_slide(&scene, p, v(*dir), r).unwrap();
-            for hit in out.contacts.iter().flatten() {
+            for hit in out.contacts.iter().flatten().map(|c| c.hit) {
                 assert_eq!(hit.contact, Contact::Face, "{}: ghost {hit:?}", S::NAME);
                 let tilt = common::angle(back(hit.normal), [0.0, 1.0, 0.0]);
                 assert!(tilt <= S::ANGLE, "{}: normal {:?}", S::NAME, hit.normal);

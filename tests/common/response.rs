@@ -154,13 +154,13 @@ impl<S: Tolerance> World<S> {
     }
 }
 
-/// Every normal a call met, in f64: the one place to adapt if `SceneHit` grows a list of
-/// simultaneous contacts (then: all of them).
+/// Every plane a call met, simultaneous contacts included, in f64.
 pub fn contact_normals<S: Scalar>(s: &Slide<S>) -> Vec<P> {
     s.contacts
         .iter()
         .flatten()
-        .map(|h| back(h.normal))
+        .flat_map(|c| c.hit.planes.into_iter().flatten())
+        .map(back)
         .collect()
 }
 /// The normals one scene hit reports (see [`contact_normals`]).

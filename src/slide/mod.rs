@@ -15,9 +15,11 @@
 //! Every product and quotient rounds to nearest through the [`Scalar`] trait, so a resting ball
 //! pushed into a floor does not creep along it.
 
-use crate::merge::{PLANES, same_plane};
-use crate::{Error, Geometry, Scalar, SceneHit, Sweep, Vec3, check, contact::unit};
+mod rules;
+
+use crate::{Error, Geometry, Scalar, SceneHit, Sweep, Vec3, check};
 use heapless::Vec;
+use rules::{Planes, add_planes, constrain, magnitude, stand_off};
 
 /// At most this many sweeps per call: each contact costs one, and a ball pressed into a corner
 /// of three planes has nowhere left to go after three.
@@ -31,7 +33,23 @@ pub struct Slide<S> {
     /// The part of the requested displacement not travelled: what the contacts took away.
     pub blocked: Vec3<S>,
     /// The contacts met, in order (at most [`MAX_SLIDES`]).
-    pub contacts: [Option<SceneHit<S>>; MAX_SLIDES],
+    pub contacts: [Option<SlideContact<S>>; MAX_SLIDES],
+}
+
+/// A contact met by [`move_and_slide`], with where and when it happened.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SlideContact<S> {
+    /// What the sweep met. Its `alpha` is a fraction of that sweep (what was left of the
+    /// motion at the time), not of the call: see [`time`](Self::time).
+    pub hit: SceneHit<S>,
+    /// The ball's centre at the moment of contact.
+    pub center: Vec3<S>,
+    /// The touched point: `center - normal * radius`, with the contact's (merged) normal.
+    pub point: Vec3<S>,
+    /// The fraction of the call's time step elapsed at contact, in `[0, 1)`: the call's
+    /// displacement is taken as travelled at constant speed over the step, and each sweep
+    /// covers what is left of it (Quake's `time_left`).
+    pub time: S,
 }
 
 impl<S: Scalar> Slide<S> {
@@ -44,15 +62,108 @@ impl<S: Scalar> Slide<S> {
     pub fn clip(&self, velocity: Vec3<S>) -> Result<Vec3<S>, Error> {
         let v = check::point(velocity, S::LIMIT)?;
         let mut planes: Planes<S> = Vec::new();
-        for hit in self.contacts.iter().flatten() {
-            add_planes(&mut planes, hit);
+        for c in self.contacts.iter().flatten() {
+            add_planes(&mut planes, &c.hit);
         }
         Ok(constrain(v, &planes, v))
     }
+
+    /// The last contact that counts as floor: one whose normal lies within a slope limit of
+    /// `up` (a unit vector), i.e. `normal · up >= min_cos` with `min_cos` the cosine of the
+    /// steepest walkable slope (`FRAC_1_SQRT_2` for 45°). The character controllers of engines call a
+    /// ball with such a contact *grounded* (Unity's `isGrounded`, Godot's `is_on_floor`).
+    ///
+    /// ```
+    /// use ballcast::{Scene, Triangle, Vec3, move_and_slide};
+    /// let v = Vec3::new;
+    /// let mut s: Scene<f32, 2> = Scene::new();
+    /// s.push(Triangle::new(v(-9.0, 0.0, -9.0), v(-9.0, 0.0, 9.0), v(9.0, 0.0, 0.0)))?;
+    /// let out = move_and_slide(&s, v(0.0, 0.6, 0.0), v(0.1, -0.2, 0.0), 0.5)?;
+    /// let floor = out.floor(v(0.0, 1.0, 0.0), core::f32::consts::FRAC_1_SQRT_2).expect("landed");
+    /// assert!((floor.time - 0.5).abs() < 1e-3); // half-way through the step
+    /// assert!((floor.point.y).abs() < 1e-6); // touching the floor's surface
+    /// # Ok::<(), ballcast::Error>(())
+    /// ```
+    pub fn floor(&self, up: Vec3<S>, min_cos: S) -> Option<&SlideContact<S>> {
+        self.contacts
+            .iter()
+            .flatten()
+            .filter(|c| S::dot(c.hit.normal, up) >= min_cos)
+            .last()
+    }
 }
 
-/// The planes a call has touched: up to [`PLANES`] per contact.
-type Planes<S> = Vec<Vec3<S>, { MAX_SLIDES * PLANES }>;
+/// A ball's settings for [`Slider::slide`]: its radius and, optionally, its own skin.
+///
+/// ```
+/// use ballcast::{Scene, Triangle, Vec3, slide::Slider};
+/// let v = Vec3::new;
+/// let mut s: Scene<f32, 2> = Scene::new();
+/// s.push(Triangle::new(v(-9.0, 0.0, -9.0), v(-9.0, 0.0, 9.0), v(9.0, 0.0, 0.0)))?;
+/// let ball = Slider::new(0.5)?.with_skin(0.01)?;
+/// let out = ball.slide(&s, v(0.0, 1.0, 0.0), v(0.0, -1.0, 0.0))?;
+/// assert!((out.position.y - 0.51).abs() < 1e-6);
+/// # Ok::<(), ballcast::Error>(())
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Slider<S> {
+    radius: S,
+    skin: Option<S>,
+}
+
+impl<S: Scalar> Slider<S> {
+    /// A ball of `radius` with the default [`skin`].
+    ///
+    /// Errors: [`Error::NonFinite`], [`Error::OutOfRange`], [`Error::NegativeRadius`].
+    pub fn new(radius: S) -> Result<Self, Error> {
+        Ok(Self {
+            radius: check::radius(radius)?,
+            skin: None,
+        })
+    }
+
+    /// The same ball keeping a gap of `skin` from what it touches, for a ground probe sized to
+    /// match, say. It is never less than the rounding term of the default [`skin`] (twice the
+    /// rounding of a height at the ball's coordinates), which keeps the response exact.
+    ///
+    /// Errors: [`Error::NonFinite`], or [`Error::OutOfRange`] for a skin below zero or above
+    /// the radius.
+    pub fn with_skin(self, skin: S) -> Result<Self, Error> {
+        let skin = check::value(skin, self.radius)?;
+        if skin < S::ZERO {
+            return Err(Error::OutOfRange);
+        }
+        Ok(Self {
+            skin: Some(skin),
+            ..self
+        })
+    }
+
+    /// The radius.
+    pub fn radius(&self) -> S {
+        self.radius
+    }
+
+    /// The skin used for centres within `±extent`.
+    pub fn skin(&self, extent: S) -> S {
+        let floor = skin(S::ZERO, extent);
+        match self.skin {
+            Some(s) if s > floor => s,
+            Some(_) => floor,
+            None => skin(self.radius, extent),
+        }
+    }
+
+    /// [`move_and_slide`] with this ball.
+    pub fn slide<G: Geometry<S> + ?Sized>(
+        &self,
+        scene: &G,
+        position: Vec3<S>,
+        displacement: Vec3<S>,
+    ) -> Result<Slide<S>, Error> {
+        run(self, scene, position, displacement)
+    }
+}
 
 /// The gap kept between a ball of `radius` and what it touched, for centres within `±extent`:
 /// `radius / 1024` plus twice the rounding of a height there, so that the next sweep does not
@@ -121,24 +232,33 @@ pub fn move_and_slide<S: Scalar, G: Geometry<S> + ?Sized>(
     displacement: Vec3<S>,
     radius: S,
 ) -> Result<Slide<S>, Error> {
+    Slider::new(radius)?.slide(scene, position, displacement)
+}
+
+fn run<S: Scalar, G: Geometry<S> + ?Sized>(
+    ball: &Slider<S>,
+    scene: &G,
+    position: Vec3<S>,
+    displacement: Vec3<S>,
+) -> Result<Slide<S>, Error> {
+    let radius = ball.radius;
     // Inside these ranges `position + displacement` stays within 2 * LIMIT: no overflow.
     check::point(position, S::LIMIT)?;
     check::point(displacement, S::LIMIT)?;
-    check::radius(radius)?;
     let target = check::point(position + displacement, S::LIMIT)?;
     let (a, b) = (magnitude(position), magnitude(target));
     let extent = if a > b { a } else { b };
     if radius < min_radius(extent) {
         return Err(Error::RadiusTooSmall);
     }
-    let skin = skin(radius, extent);
+    let skin = ball.skin(extent);
     let zero = Vec3::new(S::ZERO, S::ZERO, S::ZERO);
     let mut out = Slide {
         position,
         blocked: zero,
         contacts: [None; MAX_SLIDES],
     };
-    let mut rest = displacement;
+    let (mut rest, mut elapsed) = (displacement, S::ZERO);
     let mut planes: Planes<S> = Vec::new();
     for slot in out.contacts.iter_mut() {
         if rest == zero {
@@ -150,7 +270,14 @@ pub fn move_and_slide<S: Scalar, G: Geometry<S> + ?Sized>(
             rest = zero;
             break;
         };
-        *slot = Some(hit);
+        let center = out.position + rest.scale(hit.alpha);
+        elapsed = elapsed + (S::ONE - elapsed).mul(hit.alpha);
+        *slot = Some(SlideContact {
+            hit,
+            center,
+            point: center - hit.normal.scale(radius),
+            time: elapsed,
+        });
         let (alpha, lift) = stand_off(&hit, rest, skin);
         out.position = out.position + rest.scale(alpha) + lift;
         let left = rest.scale(S::ONE - alpha);
@@ -160,91 +287,4 @@ pub fn move_and_slide<S: Scalar, G: Geometry<S> + ?Sized>(
     }
     out.blocked = out.blocked + rest;
     Ok(out)
-}
-
-/// Where to stop short of a contact met along `rest`, as a fraction of it, and a lift to add.
-/// A ball that travelled stops a skin short, measured along the normal, by backing off along
-/// its own path (never behind its start), so stopping adds no sideways motion and a ball pushed
-/// into a corner settles at a skin from both walls instead of being levered from one to the
-/// other. One met at once (already touching or overlapping) is lifted by a skin instead.
-fn stand_off<S: Scalar>(hit: &SceneHit<S>, rest: Vec3<S>, skin: S) -> (S, Vec3<S>) {
-    let into = S::dot(rest, hit.normal);
-    if hit.alpha > S::ZERO && into < S::ZERO {
-        let back = S::div(skin, -into);
-        let alpha = if back < hit.alpha {
-            hit.alpha - back
-        } else {
-            S::ZERO
-        };
-        return (alpha, Vec3::new(S::ZERO, S::ZERO, S::ZERO));
-    }
-    (hit.alpha, hit.normal.scale(skin))
-}
-
-/// The largest coordinate magnitude of a point.
-fn magnitude<S: Scalar>(p: Vec3<S>) -> S {
-    crate::scalar::largest(p.x.abs(), p.y.abs(), p.z.abs())
-}
-
-/// Adds a contact's planes to those already touched, each distinct plane once.
-fn add_planes<S: Scalar>(planes: &mut Planes<S>, hit: &SceneHit<S>) {
-    for n in hit.planes.iter().flatten() {
-        if !planes.iter().any(|p| same_plane(*p, *n)) {
-            // Room for every plane of every contact: cannot fail.
-            let _ = planes.push(*n);
-        }
-    }
-}
-
-/// `v` constrained by every plane (unit normals): unchanged if it moves into none; else the
-/// first of: `v` without its part into one plane, along the crease of two, that moves into
-/// no other plane (beyond rounding); else zero. Zero too if the result runs against `primal`,
-/// or is no larger than the rounding of the normals times `v`.
-fn constrain<S: Scalar>(v: Vec3<S>, planes: &[Vec3<S>], primal: Vec3<S>) -> Vec3<S> {
-    let zero = Vec3::new(S::ZERO, S::ZERO, S::ZERO);
-    let slack = -S::height_error(magnitude(v));
-    let clear = |w: Vec3<S>| planes.iter().all(|n| S::dot(w, *n) >= slack);
-    // What is left after removing a large push into a plane carries the normal's rounding
-    // times the push (four steps of resolution of it at most): the same each call, so it would
-    // add up to a drift. Less than that is not motion.
-    let noise = S::mul(magnitude(v), crate::scalar::tie::<S>());
-    let keep = |w: Vec3<S>| {
-        if magnitude(w) > noise && S::dot(w, primal) > S::ZERO {
-            w
-        } else {
-            zero
-        }
-    };
-    if clear(v) {
-        return v;
-    }
-    for n in planes {
-        let into = S::dot(v, *n);
-        let w = if into < S::ZERO { v - n.scale(into) } else { v };
-        if clear(w) {
-            return keep(w);
-        }
-    }
-    for (i, a) in planes.iter().enumerate() {
-        for b in &planes[i + 1..] {
-            if let Some(c) = unit(cross_unit(*a, *b)) {
-                let w = c.scale(S::dot(v, c));
-                if clear(w) {
-                    return keep(w);
-                }
-            }
-        }
-    }
-    zero
-}
-
-/// The cross product of two unit vectors, each component rounded once.
-fn cross_unit<S: Scalar>(a: Vec3<S>, b: Vec3<S>) -> Vec3<S> {
-    let z = S::ZERO;
-    let d = |p: S, q: S, r: S, s: S| S::dot(Vec3::new(p, -q, z), Vec3::new(r, s, z));
-    Vec3::new(
-        d(a.y, a.z, b.z, b.y),
-        d(a.z, a.x, b.x, b.z),
-        d(a.x, a.y, b.y, b.x),
-    )
 }

@@ -1,0 +1,98 @@
+//! The response's rules: how far to stop short of a contact, and how what is left of the motion
+//! is constrained by the planes touched.
+
+use crate::merge::{PLANES, same_plane};
+use crate::{Scalar, SceneHit, Vec3, contact::unit};
+use heapless::Vec;
+
+use super::MAX_SLIDES;
+
+/// The planes a call has touched: up to [`PLANES`] per contact.
+pub(super) type Planes<S> = Vec<Vec3<S>, { MAX_SLIDES * PLANES }>;
+
+/// Where to stop short of a contact met along `rest`, as a fraction of it, and a lift to add.
+/// A ball that travelled stops a skin short, measured along the normal, by backing off along
+/// its own path (never behind its start), so stopping adds no sideways motion and a ball pushed
+/// into a corner settles at a skin from both walls instead of being levered from one to the
+/// other. One met at once (already touching or overlapping) is lifted by a skin instead.
+pub(super) fn stand_off<S: Scalar>(hit: &SceneHit<S>, rest: Vec3<S>, skin: S) -> (S, Vec3<S>) {
+    let into = S::dot(rest, hit.normal);
+    if hit.alpha > S::ZERO && into < S::ZERO {
+        let back = S::div(skin, -into);
+        let alpha = if back < hit.alpha {
+            hit.alpha - back
+        } else {
+            S::ZERO
+        };
+        return (alpha, Vec3::new(S::ZERO, S::ZERO, S::ZERO));
+    }
+    (hit.alpha, hit.normal.scale(skin))
+}
+
+/// The largest coordinate magnitude of a point.
+pub(super) fn magnitude<S: Scalar>(p: Vec3<S>) -> S {
+    crate::scalar::largest(p.x.abs(), p.y.abs(), p.z.abs())
+}
+
+/// Adds a contact's planes to those already touched, each distinct plane once.
+pub(super) fn add_planes<S: Scalar>(planes: &mut Planes<S>, hit: &SceneHit<S>) {
+    for n in hit.planes.iter().flatten() {
+        if !planes.iter().any(|p| same_plane(*p, *n)) {
+            // Room for every plane of every contact: cannot fail.
+            let _ = planes.push(*n);
+        }
+    }
+}
+
+/// `v` constrained by every plane (unit normals): unchanged if it moves into none; else the
+/// first of: `v` without its part into one plane, along the crease of two, that moves into
+/// no other plane (beyond rounding); else zero. Zero too if the result runs against `primal`,
+/// or is no larger than the rounding of the normals times `v`.
+pub(super) fn constrain<S: Scalar>(v: Vec3<S>, planes: &[Vec3<S>], primal: Vec3<S>) -> Vec3<S> {
+    let zero = Vec3::new(S::ZERO, S::ZERO, S::ZERO);
+    let slack = -S::height_error(magnitude(v));
+    let clear = |w: Vec3<S>| planes.iter().all(|n| S::dot(w, *n) >= slack);
+    // What is left after removing a large push into a plane carries the normal's rounding
+    // times the push (four steps of resolution of it at most): the same each call, so it would
+    // add up to a drift. Less than that is not motion.
+    let noise = S::mul(magnitude(v), crate::scalar::tie::<S>());
+    let keep = |w: Vec3<S>| {
+        if magnitude(w) > noise && S::dot(w, primal) > S::ZERO {
+            w
+        } else {
+            zero
+        }
+    };
+    if clear(v) {
+        return v;
+    }
+    for n in planes {
+        let into = S::dot(v, *n);
+        let w = if into < S::ZERO { v - n.scale(into) } else { v };
+        if clear(w) {
+            return keep(w);
+        }
+    }
+    for (i, a) in planes.iter().enumerate() {
+        for b in &planes[i + 1..] {
+            if let Some(c) = unit(cross_unit(*a, *b)) {
+                let w = c.scale(S::dot(v, c));
+                if clear(w) {
+                    return keep(w);
+                }
+            }
+        }
+    }
+    zero
+}
+
+/// The cross product of two unit vectors, each component rounded once.
+fn cross_unit<S: Scalar>(a: Vec3<S>, b: Vec3<S>) -> Vec3<S> {
+    let z = S::ZERO;
+    let d = |p: S, q: S, r: S, s: S| S::dot(Vec3::new(p, -q, z), Vec3::new(r, s, z));
+    Vec3::new(
+        d(a.y, a.z, b.z, b.y),
+        d(a.z, a.x, b.x, b.z),
+        d(a.x, a.y, b.y, b.x),
+    )
+}

@@ -1,0 +1,215 @@
+//! The character loop a game runs every frame: gravity, `move_and_slide`, `Slide::clip` of the
+//! velocity, grounded, jumping. Where and when each contact happened, the floor's slope limit,
+//! and a ball's own skin. Every property in every scalar; expected values worked by hand.
+
+mod common;
+
+use ballcast::{Error, Scalar, Scene, Triangle, move_and_slide, slide::Slider};
+use common::{Tolerance, back, v};
+use fixed::types::{I16F16, I32F32};
+
+/// A 20 × 20 floor at y = 0 facing +y, two triangles.
+fn floor<S: Scalar>() -> Scene<S, 8> {
+    let mut s = Scene::new();
+    let c = [
+        [-10.0, 0.0, -10.0],
+        [-10.0, 0.0, 10.0],
+        [10.0, 0.0, 10.0],
+        [10.0, 0.0, -10.0],
+    ];
+    s.push(Triangle::new(v(c[0]), v(c[1]), v(c[2]))).unwrap();
+    s.push(Triangle::new(v(c[0]), v(c[2]), v(c[3]))).unwrap();
+    s
+}
+
+/// A plane through the origin with unit normal `n`, as two large triangles.
+fn slope<S: Scalar>(n: [f64; 3]) -> Scene<S, 8> {
+    // Two directions in the plane: a = n × z (or n × x), b = n × a, both unit.
+    let helper = if n[2].abs() < 0.9 {
+        [0.0, 0.0, 1.0]
+    } else {
+        [1.0, 0.0, 0.0]
+    };
+    let a = common::cross(n, helper);
+    let a = common::scale(a, 1.0 / common::norm(a));
+    let b = common::cross(n, a);
+    let p = |i: f64, j: f64| common::add(common::scale(a, 8.0 * i), common::scale(b, 8.0 * j));
+    let (p0, p1, p2, p3) = (p(-1.0, -1.0), p(1.0, -1.0), p(1.0, 1.0), p(-1.0, 1.0));
+    let mut s = Scene::new();
+    // Counter-clockwise seen from n: (p1 - p0) × (p2 - p0) points along a × b = n.
+    s.push(Triangle::new(v(p0), v(p1), v(p2))).unwrap();
+    s.push(Triangle::new(v(p0), v(p2), v(p3))).unwrap();
+    s
+}
+
+fn contact_time_and_point_are_where_the_ball_touched<S: Tolerance>() {
+    let scene = floor::<S>();
+    // Falling 1 from y = 1 with r = 0.5 and moving 1 in x: touches half-way through the step,
+    // centre at (0.5, 0.5, 0), touching the floor at (0.5, 0, 0).
+    let out = move_and_slide(
+        &scene,
+        v([0.0, 1.0, 0.0]),
+        v([1.0, -1.0, 0.0]),
+        S::from_f64(0.5),
+    );
+    let c = out.unwrap().contacts[0].expect("lands");
+    let tol = 1e-3; // alpha's step (2^-16) over paths of length ~1, with room
+    assert!(
+        (c.time.to_f64() - 0.5).abs() < tol,
+        "{}: time {:?}",
+        S::NAME,
+        c.time
+    );
+    let (center, point) = (back(c.center), back(c.point));
+    for (got, want) in [(center, [0.5, 0.5, 0.0]), (point, [0.5, 0.0, 0.0])] {
+        assert!(
+            common::norm(common::sub(got, want)) < tol,
+            "{}: {got:?}",
+            S::NAME
+        );
+    }
+    // Against a wall and then the floor: contact times increase within the step.
+    let mut s = floor::<S>();
+    // A wall at x = 2 facing -x.
+    s.push(Triangle::new(
+        v([2.0, -1.0, -5.0]),
+        v([2.0, -1.0, 5.0]),
+        v([2.0, 5.0, -5.0]),
+    ))
+    .unwrap();
+    let out = move_and_slide(
+        &s,
+        v([0.0, 2.0, 0.0]),
+        v([3.0, -2.0, 0.0]),
+        S::from_f64(0.5),
+    );
+    let times: Vec<f64> = out
+        .unwrap()
+        .contacts
+        .iter()
+        .flatten()
+        .map(|c| c.time.to_f64())
+        .collect();
+    assert_eq!(times.len(), 2, "{}: {times:?}", S::NAME);
+    // The centre reaches x = 1.5 half-way; then, sliding straight down at the same vertical
+    // speed, y = 0.5 three quarters of the way.
+    assert!(
+        (times[0] - 0.5).abs() < tol && (times[1] - 0.75).abs() < tol,
+        "{times:?}"
+    );
+}
+
+fn grounded_only_on_walkable_slopes<S: Tolerance>() {
+    let up = v::<S>([0.0, 1.0, 0.0]);
+    let cos45 = S::from_f64(std::f64::consts::FRAC_1_SQRT_2);
+    // Slopes of 0°, 30°, 60° and 90° from the floor, the ball dropped straight onto each.
+    for (deg, walkable) in [(0.0f64, true), (30.0, true), (60.0, false), (90.0, false)] {
+        let t = deg.to_radians();
+        let n = [t.sin(), t.cos(), 0.0];
+        let scene = slope::<S>(n);
+        let start = common::scale(n, 1.0);
+        let out = move_and_slide(&scene, v(start), v([-1.0, -1.0, 0.0]), S::from_f64(0.5));
+        let out = out.unwrap();
+        assert!(out.contacts[0].is_some(), "{}: {deg}° not touched", S::NAME);
+        assert_eq!(
+            out.floor(up, cos45).is_some(),
+            walkable,
+            "{}: {deg}°",
+            S::NAME
+        );
+    }
+}
+
+fn a_ball_keeps_its_own_skin<S: Tolerance>() {
+    let scene = floor::<S>();
+    let ball = Slider::new(S::from_f64(0.5)).unwrap();
+    let gap = |b: &Slider<S>| {
+        let out = b
+            .slide(&scene, v([0.0, 2.0, 0.0]), v([0.0, -3.0, 0.0]))
+            .unwrap();
+        out.position.y.to_f64() - 0.5
+    };
+    let wide = ball.with_skin(S::from_f64(0.0625)).unwrap();
+    assert!(
+        (gap(&wide) - 0.0625).abs() < 1e-4,
+        "{}: {}",
+        S::NAME,
+        gap(&wide)
+    );
+    // The default is r / 1024 and the rounding term.
+    assert!(
+        (gap(&ball) - 0.5 / 1024.0).abs() < 1e-3,
+        "{}: {}",
+        S::NAME,
+        gap(&ball)
+    );
+    // A skin below the rounding term is raised to it, never zero.
+    assert!(gap(&ball.with_skin(S::ZERO).unwrap()) > 0.0, "{}", S::NAME);
+    for bad in [-0.01, 0.51] {
+        let e = ball.with_skin(S::from_f64(bad)).unwrap_err();
+        assert_eq!(e, Error::OutOfRange, "{}: skin {bad}", S::NAME);
+    }
+}
+
+/// Throws a ball onto the floor, walks it, and jumps whenever it is grounded: it lands, leaves
+/// the floor on each jump, lands again, and never gets below it.
+fn the_character_loop_lands_walks_and_jumps<S: Tolerance>() {
+    let scene = floor::<S>();
+    let (r, dt) = (S::from_f64(0.5), S::from_f64(1.0 / 64.0));
+    let (up, walkable) = (
+        v::<S>([0.0, 1.0, 0.0]),
+        S::from_f64(std::f64::consts::FRAC_1_SQRT_2),
+    );
+    let gravity = v::<S>([0.0, -10.0, 0.0]);
+    let (mut p, mut vel) = (v::<S>([0.0, 3.0, 0.0]), v::<S>([1.0, 0.0, 0.0]));
+    let (mut jumps, mut airborne_after_jump) = (0, 0);
+    for _ in 0..600 {
+        vel = vel + gravity.scale(dt);
+        let out = move_and_slide(&scene, p, vel.scale(dt), r).unwrap();
+        p = out.position;
+        vel = out.clip(vel).unwrap();
+        assert!(
+            p.y.to_f64() >= 0.5 - 1e-3,
+            "{}: below the floor at {p:?}",
+            S::NAME
+        );
+        if out.floor(up, walkable).is_some() {
+            jumps += 1;
+            vel.y = S::from_f64(4.0);
+        } else if jumps > 0 {
+            airborne_after_jump += 1;
+        }
+    }
+    // A jump at 4 under gravity 10 lasts 0.8 s, 51 steps: 600 steps hold several.
+    assert!(jumps >= 5, "{}: {jumps} jumps", S::NAME);
+    assert!(
+        airborne_after_jump >= 5 * 45,
+        "{}: {airborne_after_jump}",
+        S::NAME
+    );
+    assert!(p.x.to_f64() > 5.0, "{}: did not walk: {p:?}", S::NAME);
+}
+
+macro_rules! per_scalar {
+    ($($m:ident: $t:ty),*) => {$(mod $m {
+        use super::*;
+        #[test]
+        fn contact_time_and_point() {
+            contact_time_and_point_are_where_the_ball_touched::<$t>();
+        }
+        #[test]
+        fn grounded_on_walkable_slopes() {
+            grounded_only_on_walkable_slopes::<$t>();
+        }
+        #[test]
+        fn own_skin() {
+            a_ball_keeps_its_own_skin::<$t>();
+        }
+        #[test]
+        fn character_loop() {
+            the_character_loop_lands_walks_and_jumps::<$t>();
+        }
+    })*};
+}
+
+per_scalar!(f64_: f64, f32_: f32, i32f32: I32F32, i16f16: I16F16);
