@@ -56,7 +56,7 @@ fn roll<S: Scalar>(tris: &[[P; 3]]) -> Result<(Vec<P>, usize), ballcast::Error> 
     for start in [[-3.0, 4.0, 1.0], [2.5, 3.0, -2.0], [0.5, 2.0, 3.0]] {
         let (mut p, mut v) = (v3(start), v3([0.0, 0.0, -1.0]));
         for _ in 0..STEPS {
-            v = v + g.scale(dt);
+            v += g.scale(dt);
             let out = move_and_slide(&scene, p, v.scale(dt), r)?;
             contacts += out.contacts.iter().flatten().count();
             p = out.position;

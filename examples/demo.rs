@@ -75,7 +75,7 @@ fn simulate<S: Scalar>(name: &'static str) -> Run {
         path: Vec::with_capacity(STEPS),
     };
     for _ in 0..STEPS {
-        v = v + gravity.scale(dt);
+        v += gravity.scale(dt);
         let out = move_and_slide(&scene, p, v.scale(dt), r).expect("the ball stays in range");
         run.contacts += out.contacts.iter().flatten().count();
         p = out.position;

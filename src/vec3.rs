@@ -1,7 +1,7 @@
 //! A three-component vector with public fields, generic over its component type.
 
 use crate::Scalar;
-use core::ops::{Add, Mul, Neg, Sub};
+use core::ops::{Add, AddAssign, Div, Mul, Neg, Sub, SubAssign};
 
 /// A point or direction in 3-space: a plain `Copy` struct with no invariant.
 ///
@@ -50,6 +50,129 @@ impl<T: Copy> Vec3<T> {
     }
 }
 
+impl<T> From<[T; 3]> for Vec3<T> {
+    fn from([x, y, z]: [T; 3]) -> Self {
+        Self::new(x, y, z)
+    }
+}
+
+impl<T> From<Vec3<T>> for [T; 3] {
+    fn from(v: Vec3<T>) -> Self {
+        [v.x, v.y, v.z]
+    }
+}
+
+impl<S: Scalar> Vec3<S> {
+    /// The zero vector.
+    pub const ZERO: Self = Self::new(S::ZERO, S::ZERO, S::ZERO);
+
+    /// Every component times `s`, each rounded to nearest through the scalar
+    /// ([`Scalar::mul`]): unlike `*` on fixed-point types, which rounds towards −∞, this has no
+    /// bias that could accumulate over many steps. The same as `self * s`.
+    ///
+    /// ```
+    /// use ballcast::Vec3;
+    /// use fixed::types::I16F16;
+    /// let tiny = I16F16::from_bits(1); // 2^-16
+    /// let v = Vec3::new(tiny, -tiny, tiny).scale(I16F16::from_num(0.5));
+    /// // Half a step rounds away from zero in both directions, symmetrically.
+    /// assert_eq!(v, Vec3::new(tiny, -tiny, tiny));
+    /// ```
+    pub fn scale(self, s: S) -> Self {
+        self.map(|c| c.mul(s))
+    }
+
+    /// The dot product, rounded once: fixed-point sums the exact products in a double-width
+    /// integer, so nothing overflows until the result itself leaves the type's range (it then
+    /// saturates).
+    ///
+    /// ```
+    /// use ballcast::Vec3;
+    /// use fixed::types::I16F16;
+    /// let big = Vec3::new(I16F16::from_num(100), I16F16::from_num(100), I16F16::ZERO);
+    /// let small = Vec3::new(I16F16::from_num(0.01), I16F16::from_num(-0.01), I16F16::ZERO);
+    /// // 100 × 100 alone overflows I16F16; the sum of the two products does not.
+    /// assert_eq!(big.dot(Vec3::new(big.x, -big.y, big.z)), I16F16::ZERO);
+    /// assert!(big.dot(small).abs() < I16F16::from_num(1e-3));
+    /// ```
+    pub fn dot(self, o: Self) -> S {
+        S::dot(self, o)
+    }
+
+    /// The cross product, each component a two-term dot product rounded once (fixed-point
+    /// saturates where a component leaves the type's range).
+    ///
+    /// ```
+    /// use ballcast::Vec3;
+    /// let (x, y) = (Vec3::new(1.0f32, 0.0, 0.0), Vec3::new(0.0, 1.0, 0.0));
+    /// assert_eq!(x.cross(y), Vec3::new(0.0, 0.0, 1.0));
+    /// ```
+    pub fn cross(self, o: Self) -> Self {
+        let (a, b, z) = (self, o, S::ZERO);
+        let d = |p: S, q: S, r: S, s: S| S::dot(Vec3::new(p, -q, z), Vec3::new(r, s, z));
+        Vec3::new(
+            d(a.y, a.z, b.z, b.y),
+            d(a.z, a.x, b.x, b.z),
+            d(a.x, a.y, b.y, b.x),
+        )
+    }
+
+    /// The length, without overflow or underflow for any finite vector (fixed-point: the exact
+    /// integer square root of the exact sum of squares, rounded to nearest; it saturates beyond
+    /// the type's range).
+    ///
+    /// ```
+    /// use ballcast::Vec3;
+    /// assert_eq!(Vec3::new(3.0f64, 4.0, 12.0).length(), 13.0);
+    /// assert_eq!(Vec3::new(3e30f32, 4e30, 0.0).length(), 5e30); // no overflow in the squares
+    /// ```
+    pub fn length(self) -> S {
+        if !self.is_finite() {
+            // Infinity, or NaN if any component is NaN.
+            return self.x.abs() + self.y.abs() + self.z.abs();
+        }
+        S::direction(self).map_or(S::ZERO, |(len, _)| len)
+    }
+
+    /// The unit vector in this direction, or `None` for the zero vector and non-finite ones.
+    ///
+    /// ```
+    /// use ballcast::Vec3;
+    /// assert_eq!(Vec3::new(0.0f32, -2.0, 0.0).try_normalize(), Some(Vec3::new(0.0, -1.0, 0.0)));
+    /// assert_eq!(Vec3::<f32>::ZERO.try_normalize(), None);
+    /// ```
+    pub fn try_normalize(self) -> Option<Self> {
+        if !self.is_finite() {
+            return None;
+        }
+        crate::contact::unit(self)
+    }
+
+    /// The unit vector in this direction, or zero where [`try_normalize`](Self::try_normalize)
+    /// gives `None`.
+    pub fn normalize_or_zero(self) -> Self {
+        self.try_normalize().unwrap_or(Self::ZERO)
+    }
+
+    /// Whether every component is finite (always, for fixed-point).
+    pub fn is_finite(self) -> bool {
+        self.x.is_finite() && self.y.is_finite() && self.z.is_finite()
+    }
+
+    /// The same vector in another scalar, each component rounded to nearest through `f64`
+    /// ([`Scalar::from_f64`]: fixed-point saturates, NaN becomes out of range).
+    ///
+    /// ```
+    /// use ballcast::Vec3;
+    /// use fixed::types::I16F16;
+    /// let v = Vec3::new(0.5f32, -2.25, 8.0).cast::<I16F16>();
+    /// assert_eq!(v, Vec3::new(I16F16::from_num(0.5), I16F16::from_num(-2.25), I16F16::from_num(8)));
+    /// ```
+    pub fn cast<T: Scalar>(self) -> Vec3<T> {
+        self.map(|c| T::from_f64(c.to_f64()))
+    }
+}
+
 impl<T: Add<Output = T>> Add for Vec3<T> {
     type Output = Self;
     fn add(self, o: Self) -> Self {
@@ -64,6 +187,18 @@ impl<T: Sub<Output = T>> Sub for Vec3<T> {
     }
 }
 
+impl<T: Add<Output = T> + Copy> AddAssign for Vec3<T> {
+    fn add_assign(&mut self, o: Self) {
+        *self = *self + o;
+    }
+}
+
+impl<T: Sub<Output = T> + Copy> SubAssign for Vec3<T> {
+    fn sub_assign(&mut self, o: Self) {
+        *self = *self - o;
+    }
+}
+
 impl<T: Neg<Output = T>> Neg for Vec3<T> {
     type Output = Self;
     fn neg(self) -> Self {
@@ -71,39 +206,26 @@ impl<T: Neg<Output = T>> Neg for Vec3<T> {
     }
 }
 
-impl<T: Mul<Output = T> + Copy> Mul<T> for Vec3<T> {
+/// Scaling rounds to nearest in every scalar (see [`Vec3::scale`]).
+impl<S: Scalar> Mul<S> for Vec3<S> {
     type Output = Self;
-    fn mul(self, s: T) -> Self {
-        Self::new(self.x * s, self.y * s, self.z * s)
+    fn mul(self, s: S) -> Self {
+        self.scale(s)
     }
 }
 
-impl<S: Scalar> Vec3<S> {
-    /// Every component times `s`, each rounded to nearest through the scalar
-    /// ([`Scalar::mul`]): unlike `*` on fixed-point types, which rounds towards −∞, this has no
-    /// bias that could accumulate over many steps.
-    ///
-    /// ```
-    /// use ballcast::Vec3;
-    /// use fixed::types::I16F16;
-    /// let tiny = I16F16::from_bits(1); // 2^-16
-    /// let v = Vec3::new(tiny, -tiny, tiny).scale(I16F16::from_num(0.5));
-    /// // Half a step rounds away from zero in both directions, symmetrically.
-    /// assert_eq!(v, Vec3::new(tiny, -tiny, tiny));
-    /// ```
-    pub fn scale(self, s: S) -> Self {
-        self.map(|c| c.mul(s))
+/// Division rounds to nearest in every scalar ([`Scalar::div`]); fixed-point saturates where a
+/// quotient leaves the type's range or the divisor is zero.
+impl<S: Scalar> Div<S> for Vec3<S> {
+    type Output = Self;
+    fn div(self, s: S) -> Self {
+        self.map(|c| c.div(s))
     }
 }
 
-impl<T: Mul<Output = T> + Add<Output = T> + Copy> Vec3<T> {
-    /// The dot product, in the component type's own arithmetic.
-    ///
-    /// For fixed-point components the caller must keep the products in range; the crate's own
-    /// algorithms use the scalar's widening kernels instead.
-    pub fn dot(self, o: Self) -> T {
-        self.x * o.x + self.y * o.y + self.z * o.z
-    }
+/// The dot product in the component type's own arithmetic, for the float kernels.
+pub(crate) fn dot3<T: Mul<Output = T> + Add<Output = T> + Copy>(a: Vec3<T>, b: Vec3<T>) -> T {
+    a.x * b.x + a.y * b.y + a.z * b.z
 }
 
 /// The cross product `a × b`, in the component type's own arithmetic.

@@ -164,7 +164,7 @@ fn the_character_loop_lands_walks_and_jumps<S: Tolerance>() {
     let (mut p, mut vel) = (v::<S>([0.0, 3.0, 0.0]), v::<S>([1.0, 0.0, 0.0]));
     let (mut jumps, mut airborne_after_jump) = (0, 0);
     for _ in 0..600 {
-        vel = vel + gravity.scale(dt);
+        vel += gravity.scale(dt);
         let out = move_and_slide(&scene, p, vel.scale(dt), r).unwrap();
         p = out.position;
         vel = out.clip(vel).unwrap();

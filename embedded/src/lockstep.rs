@@ -130,7 +130,7 @@ pub fn step<S: Scalar>(
     k: &Params<S>,
     ball: &mut Ball<S>,
 ) -> Result<u32, Error> {
-    ball.v = ball.v + k.gravity.scale(k.dt);
+    ball.v += k.gravity.scale(k.dt);
     let out = move_and_slide(tris, ball.p, ball.v.scale(k.dt), k.radius)?;
     ball.p = out.position;
     ball.v = out.clip(ball.v)?;

@@ -56,7 +56,7 @@ macro_rules! float_scalar {
 
             #[inline]
             fn dot_unit(d: Vec3<Self>, u: Vec3<Self>) -> Self {
-                d.dot(u)
+                crate::vec3::dot3(d, u)
             }
             #[inline]
             fn mul_cmp(a: Self, b: Self, c: Self, d: Self) -> Ordering {
@@ -70,7 +70,7 @@ macro_rules! float_scalar {
                 Some(v.map(|c| c / m))
             }
             fn unit_normalize(s: Vec3<Self>) -> Vec3<Self> {
-                let len = $sqrt(s.dot(s));
+                let len = $sqrt(crate::vec3::dot3(s, s));
                 s.map(|c| c / len)
             }
             fn unit_cross(a: Vec3<Self>, b: Vec3<Self>) -> Option<Vec3<Self>> {
@@ -87,7 +87,7 @@ macro_rules! float_scalar {
             }
             #[inline]
             fn dot(a: Vec3<Self>, b: Vec3<Self>) -> Self {
-                a.dot(b)
+                crate::vec3::dot3(a, b)
             }
             #[inline]
             fn height_error(m: Self) -> Self {
@@ -100,7 +100,7 @@ macro_rules! float_scalar {
             }
             #[inline]
             fn direction(v: Vec3<Self>) -> Option<(Self, Vec3<Self>)> {
-                let n2 = v.dot(v);
+                let n2 = crate::vec3::dot3(v, v);
                 // Squares that underflowed cost at most EPSILON of n2 above this threshold.
                 if n2 >= <$t>::MIN_POSITIVE / <$t>::EPSILON && n2.is_finite() {
                     let len = $sqrt(n2);
@@ -113,12 +113,12 @@ macro_rules! float_scalar {
                     return None;
                 }
                 let s = v.map(|c| c / m);
-                let len = $sqrt(s.dot(s));
+                let len = $sqrt(crate::vec3::dot3(s, s));
                 Some((m * len, s * (1.0 / len)))
             }
             #[inline]
             fn chord(r: Self, c: Vec3<Self>) -> Option<Self> {
-                let k2 = r * r - c.dot(c);
+                let k2 = r * r - crate::vec3::dot3(c, c);
                 (k2 >= 0.0).then(|| $sqrt(k2))
             }
             #[inline]

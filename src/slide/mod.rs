@@ -266,7 +266,7 @@ fn run<S: Scalar, G: Geometry<S> + ?Sized>(
         }
         let sweep = Sweep::new(out.position, out.position + rest, radius)?;
         let Some(hit) = scene.cast(&sweep) else {
-            out.position = out.position + rest;
+            out.position += rest;
             rest = zero;
             break;
         };
@@ -283,8 +283,8 @@ fn run<S: Scalar, G: Geometry<S> + ?Sized>(
         let left = rest.scale(S::ONE - alpha);
         add_planes(&mut planes, &hit);
         rest = constrain(left, &planes, displacement);
-        out.blocked = out.blocked + (left - rest);
+        out.blocked += left - rest;
     }
-    out.blocked = out.blocked + rest;
+    out.blocked += rest;
     Ok(out)
 }

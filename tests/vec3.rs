@@ -1,0 +1,88 @@
+//! `Vec3`'s building blocks in every scalar: arithmetic that rounds to nearest and mirrors with
+//! sign, a dot product and length that do not overflow inside the safe range, conversions.
+
+mod common;
+
+use ballcast::Vec3;
+use common::{Rng, Tolerance, back, v};
+use fixed::types::{I16F16, I32F32};
+
+fn arithmetic_mirrors_with_sign<S: Tolerance>() {
+    let mut rng = Rng(0x5EC3);
+    for _ in 0..10_000 {
+        let a = v::<S>(rng.point(100.0));
+        let s = S::from_f64(rng.range(-2.0, 2.0));
+        let d = S::from_f64(rng.range(0.5, 4.0));
+        assert_eq!((-a) * s, -(a * s), "{}: scale of {a:?} by {s:?}", S::NAME);
+        assert_eq!((-a) / d, -(a / d), "{}: {a:?} / {d:?}", S::NAME);
+        // Rounded to nearest: within half a step of the exact product.
+        let exact = common::scale(back(a), s.to_f64());
+        let err = common::norm(common::sub(back(a * s), exact));
+        assert!(err <= 0.87 * S::spacing(200.0), "{}: {err:e}", S::NAME);
+        let mut b = a;
+        b += a;
+        b -= a;
+        assert_eq!(b, a);
+    }
+}
+
+fn dot_cross_and_length_hold_inside_the_safe_range<S: Tolerance>() {
+    let big = S::LIMIT.to_f64() / 2.0;
+    // (3, 4, 12) has length 13: scaled to the range's edge, still exact for fixed-point.
+    let k = (big / 13.0).floor();
+    let a = v::<S>([3.0 * k, 4.0 * k, 12.0 * k]);
+    let len = a.length().to_f64();
+    assert!(
+        (len - 13.0 * k).abs() <= S::spacing(13.0 * k),
+        "{}: {len}",
+        S::NAME
+    );
+    // A dot product whose partial products leave the range but whose sum does not.
+    let b = v::<S>([4.0 * k, -3.0 * k, 0.0]);
+    assert_eq!(a.dot(b), S::ZERO, "{}", S::NAME);
+    // The cross product of unit axes, and orthogonality on random unit vectors.
+    let (x, y) = (v::<S>([1.0, 0.0, 0.0]), v::<S>([0.0, 1.0, 0.0]));
+    assert_eq!(x.cross(y), v::<S>([0.0, 0.0, 1.0]));
+    let mut rng = Rng(0xC7055);
+    for _ in 0..1_000 {
+        let (p, q) = (v::<S>(rng.point(1.0)), v::<S>(rng.point(1.0)));
+        let c = p.cross(q);
+        let scale = common::norm(back(p)) * common::norm(back(q));
+        assert!(common::dot(back(c), back(p)).abs() <= 8.0 * S::spacing(1.0) * scale + 1e-12);
+        if let Some(u) = c.try_normalize() {
+            assert!((common::norm(back(u)) - 1.0).abs() <= 4.0 * S::spacing(1.0));
+        }
+    }
+    assert_eq!(Vec3::<S>::ZERO.try_normalize(), None);
+    assert_eq!(Vec3::<S>::ZERO.normalize_or_zero(), Vec3::ZERO);
+}
+
+fn conversions_round_trip<S: Tolerance>() {
+    let p = [0.5, -2.25, 1000.125];
+    let a = v::<S>(p);
+    assert_eq!(<[S; 3]>::from(a), [a.x, a.y, a.z]);
+    assert_eq!(Vec3::from([a.x, a.y, a.z]), a);
+    // Through f64, every scalar's value converts exactly (these are dyadic).
+    assert_eq!(back(a.cast::<f64>()), p);
+    assert_eq!(a.cast::<f64>().cast::<S>(), a);
+}
+
+macro_rules! per_scalar {
+    ($($m:ident: $t:ty),*) => {$(mod $m {
+        use super::*;
+        #[test]
+        fn arithmetic_mirrors() {
+            arithmetic_mirrors_with_sign::<$t>();
+        }
+        #[test]
+        fn dot_cross_length() {
+            dot_cross_and_length_hold_inside_the_safe_range::<$t>();
+        }
+        #[test]
+        fn conversions() {
+            conversions_round_trip::<$t>();
+        }
+    })*};
+}
+
+per_scalar!(f64_: f64, f32_: f32, i32f32: I32F32, i16f16: I16F16);
