@@ -5,7 +5,7 @@ use core::ops::{Add, AddAssign, Div, Mul, Neg, Sub, SubAssign};
 
 /// A point or direction in 3-space: a plain `Copy` struct with no invariant.
 ///
-/// Components are any [`Scalar`](crate::Scalar) (or the scalar's unit-vector component type inside
+/// Components are any [`Scalar`] (or the scalar's unit-vector component type inside
 /// the crate). Arithmetic is component-wise; `v * s` scales by a scalar.
 ///
 /// ```

@@ -1,8 +1,8 @@
 //! The [`Scalar`] trait and its four implementations: `f32`, `f64`, `I16F16` and `I32F32`.
 //!
 //! Everything an algorithm needs to know about a number type lives here, so the algorithms are
-//! written once. Two families implement it: IEEE floats ([`float`]: libm square root, unit
-//! vectors in the same type) and fixed-point ([`fixed`](mod@fixed): exact integer square root,
+//! written once. Two families implement it: IEEE floats (libm square root, unit
+//! vectors in the same type) and fixed-point (exact integer square root,
 //! unit vectors with more fractional bits than the coordinates, products taken into a
 //! double-width integer before rounding once).
 //!
@@ -20,6 +20,8 @@ use crate::vec3::Vec3;
 use core::cmp::Ordering;
 use core::fmt::Debug;
 use core::ops::{Add, Neg, Sub};
+#[cfg(doc)]
+use ::fixed::types::{I16F16, I32F32};
 
 /// A number type the crate computes in: `f32`, `f64`, [`I16F16`] or [`I32F32`].
 ///
