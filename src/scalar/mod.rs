@@ -17,11 +17,11 @@ mod fixed;
 mod float;
 
 use crate::vec3::Vec3;
+#[cfg(doc)]
+use ::fixed::types::{I16F16, I32F32};
 use core::cmp::Ordering;
 use core::fmt::Debug;
 use core::ops::{Add, Neg, Sub};
-#[cfg(doc)]
-use ::fixed::types::{I16F16, I32F32};
 
 /// A number type the crate computes in: `f32`, `f64`, [`I16F16`] or [`I32F32`].
 ///
