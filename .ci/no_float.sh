@@ -27,8 +27,9 @@ trap 'rm -rf "$work"' EXIT
 # Soft-float routines (ARM EABI and libgcc names), then C libm names.
 soft='^(__aeabi_([fd]|u?[il]2[fd])|__(add|sub|mul|div|neg|pow)[sdtx]f[23]|__powi[sdtx]f2|__fix(uns)?[sdtx]f[sdt]i|__float(un)?[sdt]i[sdtx]f|__(eq|ne|lt|le|gt|ge|un|cmp)[sdtx]f2|__(extend|trunc)[sdtxh]f[sdtxh]f2)'
 libm='^(sqrt|fabs|floor|ceil|trunc|round|rint|fma|fmin|fmax|fmod|hypot|sin|cos|tan|asin|acos|atan|atan2|exp|exp2|expm1|log|log2|log10|log1p|pow|cbrt|copysign)f?$'
-# Demangled: the libm crate, compiler-builtins' float modules, anything instantiated for f32/f64.
-rust='(libm::|compiler_builtins::(float|math)::|(^|[^0-9A-Za-z_])f(32|64)([^0-9A-Za-z_]|$))'
+# Demangled: the libm crate, compiler-builtins' float modules, anything named for or instantiated
+# with f32/f64 (`<f32 as Scalar>`, `from_f64`, `core::f64::is_nan`, ...).
+rust='(libm::|compiler_builtins::(float|math)::|(^|[^0-9A-Za-z])f(32|64)([^0-9A-Za-z]|$))'
 
 build() {
     (cd embedded && timeout 900 cargo build --quiet --release --target "$target" --bin fixed_only "$@")
