@@ -8,8 +8,9 @@
 #   bash .ci/targets.sh
 #
 # Installs what it needs: qemu-user and the aarch64 cross linker and C library from Debian's
-# packages, the two rustup targets. Node.js must be there (it is on these machines; else
-# Debian's `nodejs`). Every build and run is bounded by `timeout`.
+# packages, the two rustup targets, and Debian's `nodejs` if there is no `node` (these machines
+# have Node 20; the WASI flag below is needed by Node 18 and accepted by later ones). Every
+# build and run is bounded by `timeout`.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 export CARGO_BUILD_JOBS="${CARGO_BUILD_JOBS:-1}"
@@ -17,7 +18,7 @@ export CARGO_BUILD_JOBS="${CARGO_BUILD_JOBS:-1}"
 need=()
 command -v qemu-aarch64 >/dev/null || need+=(qemu-user)
 command -v aarch64-linux-gnu-gcc >/dev/null || need+=(gcc-aarch64-linux-gnu)
-[ -e /usr/aarch64-linux-gnu/lib/libc.so.6 ] || need+=(libc6-dev-arm64-cross)
+[ -e /usr/aarch64-linux-gnu/lib/crt1.o ] || need+=(libc6-dev-arm64-cross)
 command -v node >/dev/null || need+=(nodejs)
 if [ "${#need[@]}" -gt 0 ]; then
     sudo=""
@@ -52,7 +53,7 @@ for target in "${targets[@]}"; do
 done
 timeout 120 qemu-aarch64 -L /usr/aarch64-linux-gnu \
     "$dir/aarch64-unknown-linux-gnu/release/ballcast-lockstep" >"$work/aarch64-unknown-linux-gnu"
-timeout 120 node --no-warnings .ci/lockstep/wasi.mjs \
+timeout 120 node --no-warnings --experimental-wasi-unstable-preview1 .ci/lockstep/wasi.mjs \
     "$dir/wasm32-wasip1/release/ballcast-lockstep.wasm" >"$work/wasm32-wasip1"
 
 failed=0
