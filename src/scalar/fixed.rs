@@ -148,7 +148,7 @@ macro_rules! fixed_scalar {
                 let len2 = w.x * w.x + w.y * w.y + w.z * w.z;
                 // Never zero for the inputs described, but a divisor the compiler cannot prove nonzero
                 // would leave a panic path in the binary.
-                let len = isqrt_nearest(len2 as u128).max(1) as $wide;
+                let len = (isqrt_nearest(len2 as u128) as $wide).max(1);
                 w.map(|c| {
                     let num = c << $ufrac;
                     let half = if num < 0 { -(len / 2) } else { len / 2 };
