@@ -23,10 +23,51 @@ macro_rules! round_shift {
 }
 
 /// The integer square root rounded to nearest: `r + 1` when `x > r² + r`, i.e. when
-/// `sqrt(x) >= r + 1/2` (the two cannot be equal for integers).
-fn isqrt_nearest(x: u128) -> u128 {
-    let r = x.isqrt();
-    if x - r * r > r { r + 1 } else { r }
+/// `sqrt(x) >= r + 1/2` (the two cannot be equal for integers). One per width: `I16F16`'s
+/// radicands fit 64 bits, and a 128-bit root costs a Cortex-M0 several times a 64-bit one.
+macro_rules! isqrt_nearest {
+    ($name:ident, $u:ty) => {
+        fn $name(x: $u) -> $u {
+            let r = x.isqrt();
+            if x - r * r > r { r + 1 } else { r }
+        }
+    };
+}
+isqrt_nearest!(isqrt_nearest_64, u64);
+isqrt_nearest!(isqrt_nearest_128, u128);
+
+/// `a * b` exactly, from four 16 × 16 → 32-bit products: the same 64-bit value as
+/// `a as i64 * b as i64`, formed with the only multiply a Cortex-M0 has (32 × 32 → 32), where
+/// the i64 product is a call to `__aeabi_lmul`. Every target runs these same operations.
+#[inline]
+fn wide_mul_i32(a: i32, b: i32) -> i64 {
+    // a = ah 2^16 + al with ah in [-2^15, 2^15) and al in [0, 2^16); likewise b.
+    let (ah, al) = (a >> 16, a & 0xFFFF);
+    let (bh, bl) = (b >> 16, b & 0xFFFF);
+    // |ah bh| <= 2^30; |ah bl|, |al bh| < 2^31; al bl < 2^32 (unsigned): none overflows.
+    let mid = (ah * bl) as i64 + (al * bh) as i64;
+    (((ah * bh) as i64) << 32) + (mid << 16) + (al as u32 * bl as u32) as i64
+}
+
+/// `a * b` exactly for unsigned 32-bit operands, as [`wide_mul_i32`].
+#[inline]
+fn wide_mul_u32(a: u32, b: u32) -> u64 {
+    let (ah, al) = (a >> 16, a & 0xFFFF);
+    let (bh, bl) = (b >> 16, b & 0xFFFF);
+    let mid = (ah * bl) as u64 + (al * bh) as u64;
+    (((ah * bh) as u64) << 32) + (mid << 16) + (al * bl) as u64
+}
+
+/// `a * b` exactly in 128 bits (`I32F32`: no narrower path; its targets are 64-bit hosts).
+#[inline]
+fn wide_mul_i64(a: i64, b: i64) -> i128 {
+    a as i128 * b as i128
+}
+
+/// `a * b` exactly in 128 bits, unsigned.
+#[inline]
+fn wide_mul_u64(a: u64, b: u64) -> u128 {
+    a as u128 * b as u128
 }
 
 /// A wide integer clamped to the type's bits.
@@ -36,8 +77,15 @@ macro_rules! saturate {
     };
 }
 
+/// One fixed-point scalar: the type, its unit-vector type, the bits' type, the double-width
+/// type, the unsigned bits' type, fractional bits of both, the safe range's integer, and the
+/// exact widening products (signed, unsigned), and the rounded square root of the double width
+/// with its unsigned type.
 macro_rules! fixed_scalar {
-    ($t:ty, $unit:ty, $bits:ty, $wide:ty, $uwide:ty, $frac:expr, $ufrac:expr, $limit_int:expr) => {
+    (
+        $t:ty, $unit:ty, $bits:ty, $wide:ty, $uwide:ty, $frac:expr, $ufrac:expr, $limit_int:expr,
+        $wmul:ident, $uwmul:ident, $isqrt:ident, $sq:ty
+    ) => {
         impl Scalar for $t {
             const ZERO: Self = <$t>::ZERO;
             const ONE: Self = <$t>::ONE;
@@ -78,12 +126,12 @@ macro_rules! fixed_scalar {
                 }
                 // sqrt(b / 2^F) * 2^F = sqrt(b * 2^F): an integer square root. Below the
                 // largest value the result is at most 2^(BITS/2 + F/2): rounding up cannot overflow.
-                let r = isqrt_nearest((b as $uwide as u128) << $frac);
+                let r = $isqrt((b as $uwide as $sq) << $frac);
                 <$t>::from_bits(r as $bits)
             }
             #[inline]
             fn mul(self, o: Self) -> Self {
-                let p = self.to_bits() as $wide * o.to_bits() as $wide;
+                let p = $wmul(self.to_bits(), o.to_bits());
                 saturate!($t, $bits, $wide, round_shift!(p, $frac))
             }
             #[inline]
@@ -119,14 +167,14 @@ macro_rules! fixed_scalar {
 
             #[inline]
             fn dot_unit(d: Vec3<Self>, u: Vec3<$unit>) -> Self {
-                let p = |a: $t, b: $unit| a.to_bits() as $wide * b.to_bits() as $wide;
+                let p = |a: $t, b: $unit| $wmul(a.to_bits(), b.to_bits());
                 let sum = p(d.x, u.x) + p(d.y, u.y) + p(d.z, u.z);
                 <$t>::from_bits(round_shift!(sum, $ufrac) as $bits)
             }
             #[inline]
             fn mul_cmp(a: Self, b: Self, c: Self, d: Self) -> Ordering {
-                let ab = a.to_bits() as $wide * b.to_bits() as $wide;
-                let cd = c.to_bits() as $wide * d.to_bits() as $wide;
+                let ab = $wmul(a.to_bits(), b.to_bits());
+                let cd = $wmul(c.to_bits(), d.to_bits());
                 ab.cmp(&cd)
             }
             fn scaled(v: Vec3<Self>) -> Option<Vec3<$unit>> {
@@ -143,12 +191,13 @@ macro_rules! fixed_scalar {
                 }))
             }
             fn unit_normalize(s: Vec3<$unit>) -> Vec3<$unit> {
+                let sq = |c: $unit| $wmul(c.to_bits(), c.to_bits());
                 let w = s.map(|c| c.to_bits() as $wide);
                 // Squares carry 2*UFRAC fractional bits; with |s| <= 1 their sum is below 3.
-                let len2 = w.x * w.x + w.y * w.y + w.z * w.z;
+                let len2 = sq(s.x) + sq(s.y) + sq(s.z);
                 // Never zero for the inputs described, but a divisor the compiler cannot prove nonzero
                 // would leave a panic path in the binary.
-                let len = isqrt_nearest(len2 as u128).max(1) as $wide;
+                let len = $isqrt(len2 as $sq).max(1) as $wide;
                 w.map(|c| {
                     let num = c << $ufrac;
                     let half = if num < 0 { -(len / 2) } else { len / 2 };
@@ -156,11 +205,12 @@ macro_rules! fixed_scalar {
                 })
             }
             fn unit_cross(a: Vec3<$unit>, b: Vec3<$unit>) -> Option<Vec3<$unit>> {
-                let (a, b) = (
-                    a.map(|c| c.to_bits() as $wide),
-                    b.map(|c| c.to_bits() as $wide),
+                let (a, b) = (a.map(|c| c.to_bits()), b.map(|c| c.to_bits()));
+                let c = Vec3::new(
+                    $wmul(a.y, b.z) - $wmul(a.z, b.y),
+                    $wmul(a.z, b.x) - $wmul(a.x, b.z),
+                    $wmul(a.x, b.y) - $wmul(a.y, b.x),
                 );
-                let c = crate::vec3::cross(a, b);
                 let m = largest(c.x.unsigned_abs(), c.y.unsigned_abs(), c.z.unsigned_abs());
                 // `c` carries 2*UFRAC fractional bits; 1024 units of roundoff is 2^(UFRAC+10).
                 if m < (1 << ($ufrac + 10)) {
@@ -177,7 +227,7 @@ macro_rules! fixed_scalar {
             }
             #[inline]
             fn dot(a: Vec3<Self>, b: Vec3<Self>) -> Self {
-                let p = |a: $t, b: $t| a.to_bits() as $wide * b.to_bits() as $wide;
+                let p = |a: $t, b: $t| $wmul(a.to_bits(), b.to_bits());
                 let sum = p(a.x, b.x) + p(a.y, b.y) + p(a.z, b.z);
                 saturate!($t, $bits, $wide, round_shift!(sum, $frac))
             }
@@ -187,13 +237,13 @@ macro_rules! fixed_scalar {
             }
             #[inline]
             fn mul_unit(s: Self, u: $unit) -> Self {
-                let p = s.to_bits() as $wide * u.to_bits() as $wide;
+                let p = $wmul(s.to_bits(), u.to_bits());
                 <$t>::from_bits(round_shift!(p, $ufrac) as $bits)
             }
             fn direction(v: Vec3<Self>) -> Option<(Self, Vec3<$unit>)> {
                 // Components below 2^(BITS-1) square to below 2^(2 BITS - 2): three fit unsigned.
-                let u = v.map(|c| (c.to_bits() as $wide).unsigned_abs());
-                let len = isqrt_nearest((u.x * u.x + u.y * u.y + u.z * u.z) as u128);
+                let u = v.map(|c| c.to_bits().unsigned_abs());
+                let len = $isqrt($uwmul(u.x, u.x) + $uwmul(u.y, u.y) + $uwmul(u.z, u.z));
                 Some((
                     <$t>::from_bits(len as $bits),
                     Self::unit_normalize(Self::scaled(v)?),
@@ -204,10 +254,9 @@ macro_rules! fixed_scalar {
                     return None;
                 }
                 // Every square is below r² <= LIMIT², exact with 2F fractional bits.
-                let sq = |a: $t| (a.to_bits() as $wide) * (a.to_bits() as $wide);
+                let sq = |a: $t| $wmul(a.to_bits(), a.to_bits());
                 let k2 = sq(r) - sq(c.x) - sq(c.y) - sq(c.z);
-                (k2 >= 0)
-                    .then(|| <$t>::from_bits(isqrt_nearest(k2.unsigned_abs() as u128) as $bits))
+                (k2 >= 0).then(|| <$t>::from_bits($isqrt(k2.unsigned_abs()) as $bits))
             }
             #[inline]
             fn unit_to_scalar(u: $unit) -> Self {
@@ -217,5 +266,71 @@ macro_rules! fixed_scalar {
     };
 }
 
-fixed_scalar!(I16F16, I2F30, i32, i64, u32, 16, 30, 4096);
-fixed_scalar!(I32F32, I2F62, i64, i128, u64, 32, 62, 268_435_456);
+fixed_scalar!(
+    I16F16,
+    I2F30,
+    i32,
+    i64,
+    u32,
+    16,
+    30,
+    4096,
+    wide_mul_i32,
+    wide_mul_u32,
+    isqrt_nearest_64,
+    u64
+);
+fixed_scalar!(
+    I32F32,
+    I2F62,
+    i64,
+    i128,
+    u64,
+    32,
+    62,
+    268_435_456,
+    wide_mul_i64,
+    wide_mul_u64,
+    isqrt_nearest_128,
+    u128
+);
+
+#[cfg(test)]
+mod tests {
+    use super::{wide_mul_i32, wide_mul_u32};
+
+    /// The split products equal the 64-bit ones: on the extremes and on 10^6 pseudo-random pairs.
+    #[test]
+    fn split_products_are_exact() {
+        let edges = [
+            i32::MIN,
+            i32::MIN + 1,
+            -65537,
+            -65536,
+            -65535,
+            -1,
+            0,
+            1,
+            65535,
+            65536,
+        ];
+        let edges = edges.iter().chain(&[65537, i32::MAX - 1, i32::MAX]);
+        for &a in edges.clone() {
+            for &b in edges.clone() {
+                assert_eq!(wide_mul_i32(a, b), a as i64 * b as i64, "{a} {b}");
+                let (a, b) = (a as u32, b as u32);
+                assert_eq!(wide_mul_u32(a, b), a as u64 * b as u64, "{a} {b}");
+            }
+        }
+        let mut x: u64 = 0x9E37_79B9_7F4A_7C15;
+        for _ in 0..1_000_000 {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            let (a, b) = (x as i32, (x >> 32) as i32);
+            assert_eq!(wide_mul_i32(a, b), a as i64 * b as i64);
+            let (a, b) = (a as u32, b as u32);
+            assert_eq!(wide_mul_u32(a, b), a as u64 * b as u64);
+        }
+    }
+}
