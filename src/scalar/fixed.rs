@@ -36,11 +36,67 @@ macro_rules! isqrt_nearest {
 isqrt_nearest!(isqrt_nearest_64, u64);
 isqrt_nearest!(isqrt_nearest_128, u128);
 
-/// `a * b` exactly, from four 16 × 16 → 32-bit products: the same 64-bit value as
-/// `a as i64 * b as i64`, formed with the only multiply a Cortex-M0 has (32 × 32 → 32), where
-/// the i64 product is a call to `__aeabi_lmul`. Every target runs these same operations.
+/// `a * b` exactly in 64 bits. Where the core has a 32 × 32 → 64 multiply this is one
+/// instruction; on cores without one (Cortex-M0, `ballcast_no_long_mul`, see `build.rs`) an
+/// `i64` product is a call to `__aeabi_lmul`, so the same product is formed from four 32-bit
+/// multiplies ([`split_mul_i32`]). Either way it is the exact product: results are
+/// bit-identical on every target.
 #[inline]
 fn wide_mul_i32(a: i32, b: i32) -> i64 {
+    if cfg!(ballcast_no_long_mul) {
+        split_mul_i32(a, b)
+    } else {
+        a as i64 * b as i64
+    }
+}
+
+/// `a * b` exactly for unsigned operands, as [`wide_mul_i32`].
+#[inline]
+fn wide_mul_u32(a: u32, b: u32) -> u64 {
+    if cfg!(ballcast_no_long_mul) {
+        split_mul_u32(a, b)
+    } else {
+        a as u64 * b as u64
+    }
+}
+
+/// `a · b` exactly, for `b` a unit vector's bits (`|b| <= 2^30`), as [`wide_mul_i32`]: on cores
+/// without a long multiply the four kinds of partial product are summed over the three
+/// components before they are combined, so the 64-bit additions are paid once per kind.
+#[inline]
+fn wide_dot_i32(a: [i32; 3], b: [i32; 3]) -> i64 {
+    if cfg!(ballcast_no_long_mul) {
+        split_dot_i32(a, b)
+    } else {
+        a[0] as i64 * b[0] as i64 + a[1] as i64 * b[1] as i64 + a[2] as i64 * b[2] as i64
+    }
+}
+
+/// [`wide_dot_i32`] from 16 × 16 → 32-bit products: with `|b| <= 2^30` the high halves'
+/// products are at most 2^29 each, so their sum fits 32 bits; the rest are summed in 64.
+#[inline]
+fn split_dot_i32(a: [i32; 3], b: [i32; 3]) -> i64 {
+    let (mut hh, mut mid, mut ll) = (0i32, 0i64, 0u64);
+    for i in 0..3 {
+        let (ah, al) = (a[i] >> 16, a[i] & 0xFFFF);
+        let (bh, bl) = (b[i] >> 16, b[i] & 0xFFFF);
+        hh = hh.wrapping_add(ah * bh);
+        mid += (ah * bl) as i64 + (al * bh) as i64;
+        ll += (al as u32 * bl as u32) as u64;
+    }
+    ((hh as i64) << 32) + (mid << 16) + ll as i64
+}
+
+/// `a · b` exactly in 128 bits.
+#[inline]
+fn wide_dot_i64(a: [i64; 3], b: [i64; 3]) -> i128 {
+    a[0] as i128 * b[0] as i128 + a[1] as i128 * b[1] as i128 + a[2] as i128 * b[2] as i128
+}
+
+/// `a * b` exactly, from four 16 × 16 → 32-bit products (the only multiply a Cortex-M0 has is
+/// 32 × 32 → 32).
+#[inline]
+fn split_mul_i32(a: i32, b: i32) -> i64 {
     // a = ah 2^16 + al with ah in [-2^15, 2^15) and al in [0, 2^16); likewise b.
     let (ah, al) = (a >> 16, a & 0xFFFF);
     let (bh, bl) = (b >> 16, b & 0xFFFF);
@@ -49,9 +105,9 @@ fn wide_mul_i32(a: i32, b: i32) -> i64 {
     (((ah * bh) as i64) << 32) + (mid << 16) + (al as u32 * bl as u32) as i64
 }
 
-/// `a * b` exactly for unsigned 32-bit operands, as [`wide_mul_i32`].
+/// `a * b` exactly for unsigned operands, as [`split_mul_i32`].
 #[inline]
-fn wide_mul_u32(a: u32, b: u32) -> u64 {
+fn split_mul_u32(a: u32, b: u32) -> u64 {
     let (ah, al) = (a >> 16, a & 0xFFFF);
     let (bh, bl) = (b >> 16, b & 0xFFFF);
     let mid = (ah * bl) as u64 + (al * bh) as u64;
@@ -79,12 +135,12 @@ macro_rules! saturate {
 
 /// One fixed-point scalar: the type, its unit-vector type, the bits' type, the double-width
 /// type, the unsigned bits' type, fractional bits of both, the safe range's integer, and the
-/// exact widening products (signed, unsigned), and the rounded square root of the double width
+/// exact widening products (signed, unsigned, a dot product with a unit vector), and the rounded square root of the double width
 /// with its unsigned type.
 macro_rules! fixed_scalar {
     (
         $t:ty, $unit:ty, $bits:ty, $wide:ty, $uwide:ty, $frac:expr, $ufrac:expr, $limit_int:expr,
-        $wmul:ident, $uwmul:ident, $isqrt:ident, $sq:ty
+        $wmul:ident, $uwmul:ident, $wdot:ident, $isqrt:ident, $sq:ty
     ) => {
         impl Scalar for $t {
             const ZERO: Self = <$t>::ZERO;
@@ -167,8 +223,10 @@ macro_rules! fixed_scalar {
 
             #[inline]
             fn dot_unit(d: Vec3<Self>, u: Vec3<$unit>) -> Self {
-                let p = |a: $t, b: $unit| $wmul(a.to_bits(), b.to_bits());
-                let sum = p(d.x, u.x) + p(d.y, u.y) + p(d.z, u.z);
+                let sum = $wdot(
+                    [d.x.to_bits(), d.y.to_bits(), d.z.to_bits()],
+                    [u.x.to_bits(), u.y.to_bits(), u.z.to_bits()],
+                );
                 <$t>::from_bits(round_shift!(sum, $ufrac) as $bits)
             }
             #[inline]
@@ -277,6 +335,7 @@ fixed_scalar!(
     4096,
     wide_mul_i32,
     wide_mul_u32,
+    wide_dot_i32,
     isqrt_nearest_64,
     u64
 );
@@ -291,13 +350,14 @@ fixed_scalar!(
     268_435_456,
     wide_mul_i64,
     wide_mul_u64,
+    wide_dot_i64,
     isqrt_nearest_128,
     u128
 );
 
 #[cfg(test)]
 mod tests {
-    use super::{wide_mul_i32, wide_mul_u32};
+    use super::{split_dot_i32, split_mul_i32, split_mul_u32};
 
     /// The split products equal the 64-bit ones: on the extremes and on 10^6 pseudo-random pairs.
     #[test]
@@ -317,9 +377,9 @@ mod tests {
         let edges = edges.iter().chain(&[65537, i32::MAX - 1, i32::MAX]);
         for &a in edges.clone() {
             for &b in edges.clone() {
-                assert_eq!(wide_mul_i32(a, b), a as i64 * b as i64, "{a} {b}");
+                assert_eq!(split_mul_i32(a, b), a as i64 * b as i64, "{a} {b}");
                 let (a, b) = (a as u32, b as u32);
-                assert_eq!(wide_mul_u32(a, b), a as u64 * b as u64, "{a} {b}");
+                assert_eq!(split_mul_u32(a, b), a as u64 * b as u64, "{a} {b}");
             }
         }
         let mut x: u64 = 0x9E37_79B9_7F4A_7C15;
@@ -328,9 +388,23 @@ mod tests {
             x ^= x >> 7;
             x ^= x << 17;
             let (a, b) = (x as i32, (x >> 32) as i32);
-            assert_eq!(wide_mul_i32(a, b), a as i64 * b as i64);
+            assert_eq!(split_mul_i32(a, b), a as i64 * b as i64);
             let (a, b) = (a as u32, b as u32);
-            assert_eq!(wide_mul_u32(a, b), a as u64 * b as u64);
+            assert_eq!(split_mul_u32(a, b), a as u64 * b as u64);
+            // A unit vector's bits: |b| <= 2^30.
+            let u = [b as i32 >> 1, (b as i32).rotate_left(7) >> 1, a as i32 >> 1];
+            let v = [a as i32, b as i32, (x >> 16) as i32];
+            let want: i64 = (0..3).map(|i| v[i] as i64 * u[i] as i64).sum();
+            assert_eq!(split_dot_i32(v, u), want);
+        }
+        let (m, u) = (i32::MIN, 1 << 30);
+        for (v, w) in [
+            ([m; 3], [u; 3]),
+            ([m; 3], [-u; 3]),
+            ([i32::MAX; 3], [-u; 3]),
+        ] {
+            let want: i64 = (0..3).map(|i| v[i] as i64 * w[i] as i64).sum();
+            assert_eq!(split_dot_i32(v, w), want);
         }
     }
 }
