@@ -9,7 +9,7 @@
 //! Only distances are formed, never squares of coordinates, so fixed-point stays in range.
 
 use crate::face::{contains, face_point};
-use crate::scalar::tie;
+use crate::scalar::{largest, tie};
 use crate::{Contact, Hit, Scalar, StandardSweep, StandardTriangle, Sweep, Vec3};
 
 /// Which edges and vertices of a triangle take part in [`StandardTriangle::cast`]; the face
@@ -216,7 +216,10 @@ impl<S: Scalar> StandardTriangle<S> {
         // normal is the right one, so a vertex must be earlier by more than rounding.
         let tie = tie::<S>();
         for i in 0..3 {
-            if !self.features.vertex(i) || self.vertex_out_of_reach(i, p0, d, r) {
+            if !self.features.vertex(i)
+                || self.vertex_out_of_reach(i, p0, d, r)
+                || self.vertex_line_misses(i, p0, d, r)
+            {
                 continue;
             }
             let Some(m) = *motion.get_or_insert_with(|| S::direction(d)) else {
@@ -299,6 +302,11 @@ impl<S: Scalar> StandardTriangle<S> {
         if !(beside && within) {
             return None;
         }
+        // Across the edge, the line of motion passes too far from it: no square root needed.
+        let reach = largest(w0.abs(), p0.y.abs(), S::ZERO);
+        if S::line_misses([w0, p0.y], [dw, d.y], r, reach) {
+            return None;
+        }
         // Across the edge the problem is planar: the centre moves from (w0, y0) along (dw, dy).
         let z = S::ZERO;
         let across = Vec3::new(dw, d.y, z);
@@ -317,6 +325,16 @@ impl<S: Scalar> StandardTriangle<S> {
         let (v, p1) = (self.corner(i), p0 + d);
         let apart = |a: S, b: S, c: S| (a - r > c && b - r > c) || (a + r < c && b + r < c);
         apart(p0.x, p1.x, v.x) || apart(p0.z, p1.z, v.z)
+    }
+
+    /// Whether the line of motion passes too far from vertex `i` for contact, seen along any
+    /// of the three axes (a projection shortens distances, so each view is conservative).
+    fn vertex_line_misses(&self, i: usize, p0: Vec3<S>, d: Vec3<S>, r: S) -> bool {
+        let q = p0 - self.corner(i);
+        let reach = largest(q.x.abs(), q.y.abs(), q.z.abs());
+        S::line_misses([q.x, q.z], [d.x, d.z], r, reach)
+            || S::line_misses([q.x, q.y], [d.x, d.y], r, reach)
+            || S::line_misses([q.z, q.y], [d.z, d.y], r, reach)
     }
 
     /// First contact with vertex `i`; `motion` is the path's length and unit direction.

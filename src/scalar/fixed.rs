@@ -317,6 +317,21 @@ macro_rules! fixed_scalar {
                 (k2 >= 0).then(|| <$t>::from_bits($isqrt(k2.unsigned_abs()) as $bits))
             }
             #[inline]
+            fn line_misses(q: [Self; 2], d: [Self; 2], r: Self, extent: Self) -> bool {
+                let (a, b) = (d[0].to_bits().unsigned_abs(), d[1].to_bits().unsigned_abs());
+                let (big, small) = if a < b { (b, a) } else { (a, b) };
+                // `direction` rounds each unit component by under 2^-(UFRAC-1), so `chord`'s
+                // offset is off by under 2^-(UFRAC-4) of the offset's size plus a step; the
+                // floors below cost 4 steps more. 16 steps and 2^-(UFRAC-7) of the reach cover
+                // both with room.
+                let reach = largest(extent.to_bits(), r.to_bits(), 0).unsigned_abs();
+                let rm = r.to_bits().unsigned_abs() + 16 + (reach >> ($ufrac - 7));
+                // Halved products, so their difference cannot overflow.
+                let x = ($wmul(q[0].to_bits(), d[1].to_bits()) >> 1)
+                    - ($wmul(q[1].to_bits(), d[0].to_bits()) >> 1);
+                x.unsigned_abs() > ($uwmul(rm, big) >> 1) + ($uwmul(rm, small) >> 2)
+            }
+            #[inline]
             fn unit_to_scalar(u: $unit) -> Self {
                 <$t>::from_bits(round_shift!(u.to_bits() as $wide, $ufrac - $frac) as $bits)
             }

@@ -122,6 +122,23 @@ macro_rules! float_scalar {
                 (k2 >= 0.0).then(|| $sqrt(k2))
             }
             #[inline]
+            fn line_misses(q: [Self; 2], d: [Self; 2], r: Self, extent: Self) -> bool {
+                let (a, b) = (d[0].abs(), d[1].abs());
+                let (big, small) = if a < b { (b, a) } else { (a, b) };
+                // Paths this short across (or NaN) are left to the full computation: below it
+                // the products here could underflow.
+                if !(big > 4.0 * <$t>::EPSILON) {
+                    return false;
+                }
+                // The unit direction carries ~5 half-ulps per component and the cross product
+                // another two, so `chord`'s offset is off by under 7 EPSILON of the offset's
+                // size; the products here add 4 more. 128 EPSILON of the largest of the
+                // offset, r and 1 covers both twice over.
+                let reach = largest(extent, r, 1.0);
+                let m = 128.0 * <$t>::EPSILON * reach;
+                (q[0] * d[1] - q[1] * d[0]).abs() > (r + m) * (big + 0.5 * small)
+            }
+            #[inline]
             fn unit_to_scalar(u: Self) -> Self {
                 u
             }
