@@ -127,7 +127,7 @@ macro_rules! float_scalar {
                 let (big, small) = if a < b { (b, a) } else { (a, b) };
                 // Paths this short across (or NaN) are left to the full computation: below it
                 // the products here could underflow.
-                if !(big > 4.0 * <$t>::EPSILON) {
+                if big.is_nan() || big <= 4.0 * <$t>::EPSILON {
                     return false;
                 }
                 // The unit direction carries ~5 half-ulps per component and the cross product
