@@ -239,10 +239,13 @@ impl<S: Scalar> StandardTriangle<S> {
     /// `r / 64 + 4 EPSILON`. An inactive edge is a seam with a coplanar or hiding neighbour;
     /// rounding in two frames must not open a gap along it, so the faces overlap slightly there
     /// (the scene merges the two contacts). Active edges keep the exact test.
+    #[inline]
     fn within_seams(&self, xq: S, zq: S, r: S) -> bool {
-        if (0..3).all(|i| self.features.edge(i)) {
-            return false;
-        }
+        self.features.bits() & 0b111 != 0b111 && self.widened_contains(xq, zq, r)
+    }
+
+    /// [`within_seams`](Self::within_seams) for a triangle with an inactive edge.
+    fn widened_contains(&self, xq: S, zq: S, r: S) -> bool {
         let margin = S::div_pow2(r, 6) + tie::<S>();
         let q = Vec3::new(xq, S::ZERO, zq);
         (0..3).all(|i| {
@@ -333,8 +336,6 @@ impl<S: Scalar> StandardTriangle<S> {
         let q = p0 - self.corner(i);
         let reach = largest(q.x.abs(), q.y.abs(), q.z.abs());
         S::line_misses([q.x, q.z], [d.x, d.z], r, reach)
-            || S::line_misses([q.x, q.y], [d.x, d.y], r, reach)
-            || S::line_misses([q.z, q.y], [d.z, d.y], r, reach)
     }
 
     /// First contact with vertex `i`; `motion` is the path's length and unit direction.

@@ -114,6 +114,61 @@ fn split_mul_u32(a: u32, b: u32) -> u64 {
     (((ah * bh) as u64) << 32) + (mid << 16) + (al * bl) as u64
 }
 
+/// `I16F16`'s quotient `round(n 2^16 / d)` (`n`, `d` its bits) on cores without a long multiply,
+/// which have no divide instruction either (Armv6-M): `None` elsewhere, where the 64-bit
+/// division of the generic path is cheaper.
+#[inline]
+fn narrow_div_i32(n: i32, d: i32) -> Option<i32> {
+    cfg!(ballcast_no_long_mul).then(|| split_div_i32(n, d))
+}
+
+/// No narrow division (`I32F32`).
+#[inline]
+fn no_narrow_div(_: i64, _: i64) -> Option<i64> {
+    None
+}
+
+/// `round(n 2^16 / d)` to nearest, ties away from zero, saturating (a zero divisor gives the
+/// largest value of `n`'s sign, or zero): exactly what the generic 64-bit path of
+/// [`Scalar::div`] gives, from 32-bit operations. The integer part is one 32-bit division (none
+/// when `|n| < |d|`, as for a fraction of a path), the 16 fractional bits are shifted out one
+/// at a time with a remainder below `2 |d| <= 2^32`.
+fn split_div_i32(n: i32, d: i32) -> i32 {
+    let max = if (n < 0) == (d < 0) {
+        i32::MAX
+    } else {
+        i32::MIN
+    };
+    if d == 0 {
+        return if n == 0 { 0 } else { max };
+    }
+    let (a, d) = (n.unsigned_abs(), d.unsigned_abs());
+    let (whole, mut r) = if a < d { (0, a) } else { (a / d, a % d) };
+    // A quotient of 2^31 or more saturates (after rounding, too).
+    if whole >= 1 << 15 {
+        return max;
+    }
+    let mut q = whole;
+    for _ in 0..16 {
+        // r < d <= 2^31, so 2r fits.
+        r <<= 1;
+        q <<= 1;
+        if r >= d {
+            r -= d;
+            q |= 1;
+        }
+    }
+    // Half or more of the divisor left: away from zero. q <= 2^31 afterwards.
+    if r >= d - r {
+        q += 1;
+    }
+    if max > 0 {
+        q.min(i32::MAX as u32) as i32
+    } else {
+        (-(q as i64)) as i32
+    }
+}
+
 /// `a * b` exactly in 128 bits (`I32F32`: no narrower path; its targets are 64-bit hosts).
 #[inline]
 fn wide_mul_i64(a: i64, b: i64) -> i128 {
@@ -135,12 +190,13 @@ macro_rules! saturate {
 
 /// One fixed-point scalar: the type, its unit-vector type, the bits' type, the double-width
 /// type, the unsigned bits' type, fractional bits of both, the safe range's integer, and the
-/// exact widening products (signed, unsigned, a dot product with a unit vector), and the rounded square root of the double width
+/// exact widening products (signed, unsigned, a dot product with a unit vector), a division
+/// without the double width where the core needs it (`None` elsewhere), and the rounded square root of the double width
 /// with its unsigned type.
 macro_rules! fixed_scalar {
     (
         $t:ty, $unit:ty, $bits:ty, $wide:ty, $uwide:ty, $frac:expr, $ufrac:expr, $limit_int:expr,
-        $wmul:ident, $uwmul:ident, $wdot:ident, $isqrt:ident, $sq:ty
+        $wmul:ident, $uwmul:ident, $wdot:ident, $ndiv:ident, $isqrt:ident, $sq:ty
     ) => {
         impl Scalar for $t {
             const ZERO: Self = <$t>::ZERO;
@@ -192,6 +248,9 @@ macro_rules! fixed_scalar {
             }
             #[inline]
             fn div(self, o: Self) -> Self {
+                if let Some(q) = $ndiv(self.to_bits(), o.to_bits()) {
+                    return <$t>::from_bits(q);
+                }
                 let (n, d) = ((self.to_bits() as $wide) << $frac, o.to_bits() as $wide);
                 if d == 0 {
                     return if n == 0 {
@@ -351,6 +410,7 @@ fixed_scalar!(
     wide_mul_i32,
     wide_mul_u32,
     wide_dot_i32,
+    narrow_div_i32,
     isqrt_nearest_64,
     u64
 );
@@ -366,13 +426,16 @@ fixed_scalar!(
     wide_mul_i64,
     wide_mul_u64,
     wide_dot_i64,
+    no_narrow_div,
     isqrt_nearest_128,
     u128
 );
 
 #[cfg(test)]
 mod tests {
-    use super::{split_dot_i32, split_mul_i32, split_mul_u32};
+    use super::{split_div_i32, split_dot_i32, split_mul_i32, split_mul_u32};
+    use crate::Scalar;
+    use fixed::types::I16F16;
 
     /// The split products equal the 64-bit ones: on the extremes and on 10^6 pseudo-random pairs.
     #[test]
@@ -411,6 +474,45 @@ mod tests {
             let v = [a as i32, b as i32, (x >> 16) as i32];
             let want: i64 = (0..3).map(|i| v[i] as i64 * u[i] as i64).sum();
             assert_eq!(split_dot_i32(v, u), want);
+        }
+        let mut x: u64 = 0x2545_F491_4F6C_DD1D;
+        for k in 0..1_000_000u32 {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            // Mixed magnitudes: whole numerators and divisors, and small ones.
+            let (n, d) = ((x as i32) >> (k % 31), ((x >> 32) as i32) >> (k / 7 % 31));
+            let want = I16F16::from_bits(n).div(I16F16::from_bits(d)).to_bits();
+            assert_eq!(split_div_i32(n, d), want, "{n} / {d}");
+        }
+        for n in [
+            i32::MIN,
+            i32::MIN + 1,
+            -65536,
+            -1,
+            0,
+            1,
+            65535,
+            65536,
+            i32::MAX,
+        ] {
+            for d in [
+                i32::MIN,
+                -65537,
+                -65536,
+                -2,
+                -1,
+                0,
+                1,
+                2,
+                3,
+                65536,
+                65537,
+                i32::MAX,
+            ] {
+                let want = I16F16::from_bits(n).div(I16F16::from_bits(d)).to_bits();
+                assert_eq!(split_div_i32(n, d), want, "{n} / {d}");
+            }
         }
         let (m, u) = (i32::MIN, 1 << 30);
         for (v, w) in [
