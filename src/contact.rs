@@ -204,6 +204,14 @@ impl<S: Scalar> StandardTriangle<S> {
         if r == S::ZERO || !self.near_path(band, p1, r) || self.beyond_an_edge(band, p1, r) {
             return None;
         }
+        self.edges_and_vertices(p0, d, r)
+    }
+
+    /// The earliest contact with an active edge or vertex: the part of
+    /// [`cast_front`](Self::cast_front) that most sweeps never reach, kept out of line so that
+    /// the face path does not pay for its registers.
+    #[inline(never)]
+    fn edges_and_vertices(&self, p0: Vec3<S>, d: Vec3<S>, r: S) -> Option<Touch<S>> {
         let mut best: Option<Timed<S>> = None;
         for i in 0..3 {
             if self.features.edge(i) {
