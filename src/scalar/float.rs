@@ -7,7 +7,22 @@ use crate::vec3::Vec3;
 use core::cmp::Ordering;
 
 macro_rules! float_scalar {
-    ($t:ty, $sqrt:path, $limit:expr) => {
+    ($t:ty, $sqrt:path, $limit:expr, $tiny:ident) => {
+        /// `direction` of a tiny vector (a tiny radius makes tiny contact offsets): scaled by
+        /// its largest component first, dividing, since 1 / m overflows for a subnormal m. Out
+        /// of line and cold, so the common path is not made to compute it speculatively.
+        #[cold]
+        #[inline(never)]
+        fn $tiny(v: Vec3<$t>) -> Option<($t, Vec3<$t>)> {
+            let m = largest(v.x.abs(), v.y.abs(), v.z.abs());
+            if m.is_nan() || m <= 0.0 {
+                return None;
+            }
+            let s = v.map(|c| c / m);
+            let len = $sqrt(s.dot(s));
+            Some((m * len, s * (1.0 / len)))
+        }
+
         impl Scalar for $t {
             const ZERO: Self = 0.0;
             const ONE: Self = 1.0;
@@ -106,15 +121,7 @@ macro_rules! float_scalar {
                     let len = $sqrt(n2);
                     return Some((len, v * (1.0 / len)));
                 }
-                // Tiny vectors (a tiny radius makes tiny contact offsets): scale by the largest
-                // component first, dividing, since 1 / m overflows for a subnormal m.
-                let m = largest(v.x.abs(), v.y.abs(), v.z.abs());
-                if m.is_nan() || m <= 0.0 {
-                    return None;
-                }
-                let s = v.map(|c| c / m);
-                let len = $sqrt(s.dot(s));
-                Some((m * len, s * (1.0 / len)))
+                $tiny(v)
             }
             #[inline]
             fn chord(r: Self, c: Vec3<Self>) -> Option<Self> {
@@ -146,5 +153,5 @@ macro_rules! float_scalar {
     };
 }
 
-float_scalar!(f32, libm::sqrtf, 16_777_216.0);
-float_scalar!(f64, libm::sqrt, 9_007_199_254_740_992.0);
+float_scalar!(f32, libm::sqrtf, 16_777_216.0, tiny_direction_f32);
+float_scalar!(f64, libm::sqrt, 9_007_199_254_740_992.0, tiny_direction_f64);
