@@ -266,28 +266,6 @@ impl<S: Scalar> StandardTriangle<S> {
         })
     }
 
-    /// Whether the bounding box of the segment from `a` to `b`, grown by `r`, meets the
-    /// triangle's (in the x–z plane).
-    fn near_path(&self, a: Vec3<S>, b: Vec3<S>, r: S) -> bool {
-        let (x1, z1, x2) = self.shape();
-        let lo = |a: S, b: S| if a < b { a } else { b };
-        let hi = |a: S, b: S| if a < b { b } else { a };
-        let (xmin, xmax) = (lo(S::ZERO, x1), hi(x1, x2));
-        lo(a.x, b.x) - r <= xmax
-            && hi(a.x, b.x) + r >= xmin
-            && lo(a.z, b.z) - r <= z1
-            && hi(a.z, b.z) + r >= S::ZERO
-    }
-
-    /// Whether the segment from `a` to `b` stays more than `r` outside one edge's line: the
-    /// whole triangle lies inside that line, so nothing of it can be touched.
-    fn beyond_an_edge(&self, a: Vec3<S>, b: Vec3<S>, r: S) -> bool {
-        (0..3).any(|i| {
-            let (c, out) = (self.corner(i), self.edges[i].out());
-            S::dot_unit(a - c, out) > r && S::dot_unit(b - c, out) > r
-        })
-    }
-
     /// Vertex `i` in the standard frame.
     pub(crate) fn corner(&self, i: usize) -> Vec3<S> {
         let (x1, z1, x2) = self.shape();
@@ -329,21 +307,6 @@ impl<S: Scalar> StandardTriangle<S> {
         }
         let offset = Vec3::new(S::mul_unit(w, out.x), y, S::mul_unit(w, out.z));
         Some(((beta, Some(offset), Contact::Edge(i as u8)), key))
-    }
-
-    /// Whether the path's box, grown by `r`, misses vertex `i` in x or z.
-    fn vertex_out_of_reach(&self, i: usize, p0: Vec3<S>, d: Vec3<S>, r: S) -> bool {
-        let (v, p1) = (self.corner(i), p0 + d);
-        let apart = |a: S, b: S, c: S| (a - r > c && b - r > c) || (a + r < c && b + r < c);
-        apart(p0.x, p1.x, v.x) || apart(p0.z, p1.z, v.z)
-    }
-
-    /// Whether the line of motion passes too far from vertex `i` for contact, seen along any
-    /// of the three axes (a projection shortens distances, so each view is conservative).
-    fn vertex_line_misses(&self, i: usize, p0: Vec3<S>, d: Vec3<S>, r: S) -> bool {
-        let q = p0 - self.corner(i);
-        let reach = largest(q.x.abs(), q.y.abs(), q.z.abs());
-        S::line_misses([q.x, q.z], [d.x, d.z], r, reach)
     }
 
     /// First contact with vertex `i`; `motion` is the path's length and unit direction.

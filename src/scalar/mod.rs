@@ -15,6 +15,7 @@
 
 mod fixed;
 mod float;
+mod wide;
 
 use crate::vec3::Vec3;
 use core::cmp::Ordering;
