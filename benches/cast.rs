@@ -1,8 +1,10 @@
 //! Per scalar: standardization, the face test and the full `cast` against one precomputed
-//! triangle, and scene casts over 12 and 256 triangles; parry3d's `cast_shapes(Ball, Triangle)`
-//! on the same single-triangle sweeps, in the same group, so ratios come from one run.
+//! triangle on two mixes of sweeps (`single_triangle`: down through the triangle, most misses
+//! close to an edge or vertex; `near_triangle`: a scene's short moves around it), and scene
+//! casts over 12 and 256 triangles; parry3d's `cast_shapes(Ball, Triangle)` on the same
+//! single-triangle sweeps, in the same groups, so ratios come from one run.
 //!
-//! Run: `cargo bench --bench cast`
+//! Run: `cargo bench --bench cast` (`cargo bench --bench cast -- triangle/` for the two mixes)
 
 use ballcast::{Scalar, Scene, StandardTriangle};
 use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
@@ -13,26 +15,38 @@ mod inputs;
 
 use inputs::*;
 
+/// A generator of one mix of sweeps.
+type Mix = fn() -> Vec<Path>;
+
+/// The two single-triangle mixes: the adversarial one (sweeps down through the triangle, most
+/// of the misses close to an edge or vertex) and the one a scene produces (`near_sweeps`).
+const MIXES: [(&str, Mix); 2] = [
+    ("single_triangle", single_sweeps),
+    ("near_triangle", near_sweeps),
+];
+
 fn single<S: Scalar>(c: &mut Criterion, name: &str) {
     let st = StandardTriangle::new(&tri::<S>(TRIANGLE)).unwrap();
-    let sw = sweeps::<S>(&single_sweeps());
-    let mut g = c.benchmark_group("single_triangle");
-    g.throughput(Throughput::Elements(SWEEPS as u64));
-    g.bench_function(BenchmarkId::new("face_collision", name), |b| {
-        b.iter(|| {
-            sw.iter()
-                .filter(|s| black_box(&st).face_collision(s).is_some())
-                .count()
-        })
-    });
-    g.bench_function(BenchmarkId::new("cast", name), |b| {
-        b.iter(|| {
-            sw.iter()
-                .filter(|s| black_box(&st).cast(s).is_some())
-                .count()
-        })
-    });
-    g.finish();
+    for (group, mix) in MIXES {
+        let sw = sweeps::<S>(&mix());
+        let mut g = c.benchmark_group(group);
+        g.throughput(Throughput::Elements(SWEEPS as u64));
+        g.bench_function(BenchmarkId::new("face_collision", name), |b| {
+            b.iter(|| {
+                sw.iter()
+                    .filter(|s| black_box(&st).face_collision(s).is_some())
+                    .count()
+            })
+        });
+        g.bench_function(BenchmarkId::new("cast", name), |b| {
+            b.iter(|| {
+                sw.iter()
+                    .filter(|s| black_box(&st).cast(s).is_some())
+                    .count()
+            })
+        });
+        g.finish();
+    }
     let t = tri::<S>(TRIANGLE);
     c.bench_function(&format!("standardize/{name}"), |b| {
         b.iter(|| StandardTriangle::new(black_box(&t)))
@@ -45,38 +59,40 @@ fn parry(c: &mut Criterion) {
     use parry3d::shape::{Ball, Triangle as PTriangle};
     let p = |a: P| Vector::new(a[0] as f32, a[1] as f32, a[2] as f32);
     let t = PTriangle::new(p(TRIANGLE[0]), p(TRIANGLE[1]), p(TRIANGLE[2]));
-    let sw: Vec<(Vector, Vector, Ball)> = single_sweeps()
-        .iter()
-        .map(|&(a, b, r)| (p(a), p(b) - p(a), Ball::new(r as f32)))
-        .collect();
     let opts = ShapeCastOptions {
         max_time_of_impact: 1.0,
         target_distance: 0.0,
         stop_at_penetration: false,
         compute_impact_geometry_on_penetration: false,
     };
-    let mut g = c.benchmark_group("single_triangle");
-    g.throughput(Throughput::Elements(SWEEPS as u64));
-    g.bench_function(BenchmarkId::new("parry3d_cast_shapes", "f32"), |b| {
-        b.iter(|| {
-            sw.iter()
-                .filter(|(p0, d, ball)| {
-                    let from = Pose::translation(p0.x, p0.y, p0.z);
-                    let hit = cast_shapes(
-                        &from,
-                        *d,
-                        ball,
-                        &Pose::IDENTITY,
-                        Vector::ZERO,
-                        black_box(&t),
-                        opts,
-                    );
-                    matches!(hit, Ok(Some(_)))
-                })
-                .count()
-        })
-    });
-    g.finish();
+    for (group, mix) in MIXES {
+        let sw: Vec<(Vector, Vector, Ball)> = mix()
+            .iter()
+            .map(|&(a, b, r)| (p(a), p(b) - p(a), Ball::new(r as f32)))
+            .collect();
+        let mut g = c.benchmark_group(group);
+        g.throughput(Throughput::Elements(SWEEPS as u64));
+        g.bench_function(BenchmarkId::new("parry3d_cast_shapes", "f32"), |b| {
+            b.iter(|| {
+                sw.iter()
+                    .filter(|(p0, d, ball)| {
+                        let from = Pose::translation(p0.x, p0.y, p0.z);
+                        let hit = cast_shapes(
+                            &from,
+                            *d,
+                            ball,
+                            &Pose::IDENTITY,
+                            Vector::ZERO,
+                            black_box(&t),
+                            opts,
+                        );
+                        matches!(hit, Ok(Some(_)))
+                    })
+                    .count()
+            })
+        });
+        g.finish();
+    }
 }
 
 fn scene<S: Scalar, const N: usize>(c: &mut Criterion, name: &str) {

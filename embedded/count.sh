@@ -12,9 +12,9 @@
 # control is back in that driver, so callees (soft-float, 64/128-bit helpers, standard_point)
 # are included. The log streams through awk; nothing is written to disk.
 #
-# Size: `own` is the size of the `face_<scalar>` wrapper (face_collision inlined into it);
-# `with callees` adds every function reachable from it by direct calls and branches in the
-# disassembly (each address once): the flash the face test needs on its own.
+# Size: `own` is the size of the `face_<scalar>` wrapper (face_collision inlined into it) or of
+# `cast_<scalar>`; `with callees` adds every function reachable from it by direct calls and
+# branches in the disassembly (each address once): the flash the test needs on its own.
 set -euo pipefail
 cd "$(dirname "$0")"
 export CARGO_BUILD_JOBS="${CARGO_BUILD_JOBS:-1}"
@@ -59,8 +59,8 @@ for t in "${targets[@]}"; do
 
     "$tools/llvm-nm" --print-size --defined-only "$elf" >"$work/$t.nm"
     "$tools/llvm-objdump" -d --no-show-raw-insn "$elf" >"$work/$t.dis"
-    for s in "${scalars[@]}"; do
-        awk -v root="face_$s" '
+    for fs in "${scalars[@]/#/face_}" "${scalars[@]/#/cast_}"; do
+        awk -v root="$fs" '
             function hex(h,   v, i) {
                 v = 0
                 for (i = 1; i <= length(h); i++) v = v * 16 + index("0123456789abcdef", substr(h, i, 1)) - 1
@@ -85,7 +85,7 @@ for t in "${targets[@]}"; do
                 }
                 print size[root], total
             }
-        ' "$work/$t.nm" "$work/$t.dis" >"$work/$t.$s.size"
+        ' "$work/$t.nm" "$work/$t.dis" >"$work/$t.$fs.size"
     done
     "$tools/llvm-size" -A "$elf" | awk '$1 == ".text" { print $2 }' >"$work/$t.text"
 done
@@ -109,18 +109,20 @@ done
 echo
 echo "(\`cast\`: the full test, face, edges and vertices, on the \`full\` sweeps.)"
 echo
-echo "Code size of the face test in bytes (\`own\`: the face_<scalar> wrapper with face_collision"
-echo "inlined; \`with callees\`: plus every function it reaches, each once):"
+echo "Code size in bytes (\`own\`: the face_<scalar> or cast_<scalar> wrapper with face_collision or"
+echo "cast inlined into it; \`with callees\`: plus every function it reaches, each once):"
 echo
-echo "| scalar | Cortex-M0 own | Cortex-M0 with callees | Cortex-M4F own | Cortex-M4F with callees |"
-echo "|---|---:|---:|---:|---:|"
-for s in "${scalars[@]}"; do
-    row="| ${pretty[$s]} |"
-    for t in "${targets[@]}"; do
-        read -r own total <"$work/$t.$s.size"
-        row="$row $own | $total |"
+echo "| scalar | function | Cortex-M0 own | Cortex-M0 with callees | Cortex-M4F own | Cortex-M4F with callees |"
+echo "|---|---|---:|---:|---:|---:|"
+for f in face cast; do
+    for s in "${scalars[@]}"; do
+        row="| ${pretty[$s]} | \`$f\` |"
+        for t in "${targets[@]}"; do
+            read -r own total <"$work/$t.${f}_$s.size"
+            row="$row $own | $total |"
+        done
+        echo "$row"
     done
-    echo "$row"
 done
 echo
 for t in "${targets[@]}"; do

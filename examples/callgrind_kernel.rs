@@ -8,8 +8,9 @@
 //! those calls and nothing of the set-up; the loop's own bookkeeping (a few instructions per
 //! call) is included.
 //!
-//! Run: `callgrind_kernel <face|cast|scene> <f32|f64|I32F32|I16F16> <n>` (n a multiple of 64);
-//! it prints `calls <n> hits <h>`.
+//! Run: `callgrind_kernel <face|cast|face_near|cast_near|scene> <f32|f64|I32F32|I16F16> <n>` (n a
+//! multiple of 64; `_near`: the same loops on the sweeps near a triangle, `near_sweeps`); it
+//! prints `calls <n> hits <h>`.
 
 use ballcast::{Scene, StandardTriangle, Sweep};
 use fixed::types::{I16F16, I32F32};
@@ -64,10 +65,11 @@ macro_rules! kernels {
         #[allow(non_snake_case)]
         fn $run(function: &str, n: usize) -> usize {
             match function {
-                "face" | "cast" => {
+                "face" | "cast" | "face_near" | "cast_near" => {
                     let st = StandardTriangle::new(&tri::<$s>(TRIANGLE)).unwrap();
-                    let sw = sweeps::<$s>(&single_sweeps());
-                    if function == "face" {
+                    let near = function.ends_with("_near");
+                    let sw = sweeps::<$s>(&if near { near_sweeps() } else { single_sweeps() });
+                    if function.starts_with("face") {
                         $face(black_box(&st), black_box(&sw), n)
                     } else {
                         $cast(black_box(&st), black_box(&sw), n)
@@ -82,7 +84,7 @@ macro_rules! kernels {
                     let sw = sweeps::<$s>(&raw);
                     $scene(black_box(&scene), black_box(&sw), n)
                 }
-                _ => panic!("unknown function {function}: face, cast or scene"),
+                _ => panic!("unknown function {function}: face, cast, face_near, cast_near or scene"),
             }
         }
     )*};
@@ -99,7 +101,7 @@ fn main() {
     let args: Vec<String> = std::env::args().collect();
     assert!(
         args.len() == 4,
-        "usage: callgrind_kernel <face|cast|scene> <f32|f64|I32F32|I16F16> <n>"
+        "usage: callgrind_kernel <face|cast|face_near|cast_near|scene> <f32|f64|I32F32|I16F16> <n>"
     );
     let n: usize = args[3].parse().expect("n");
     assert!(n.is_multiple_of(SWEEPS), "n must be a multiple of {SWEEPS}");

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Instructions per call, counted by callgrind (stable where wall-clock time is noisy):
 #   - face_collision, cast and a 256-triangle scene's cast per scalar, on the inputs of
-#     benches/cast.rs (examples/callgrind_kernel.rs);
+#     benches/cast.rs (examples/callgrind_kernel.rs), face_collision and cast on its
+#     near-triangle mix too;
 #   - cast on the first $TRADEOFF_N cases of every scale of examples/tradeoff.rs.
 # Each run counts only the measured loop: an #[inline(never)], unmangled function, selected with
 # --toggle-collect (collection starts off). Prints markdown tables; writes target/callgrind.tsv
@@ -47,6 +48,10 @@ for scalar in "${SCALARS[@]}"; do
         measure "$function" "$scalar" bench "ck_${function}_${scalar}" \
             "$bin/callgrind_kernel" "$function" "$scalar" "$N"
     done
+    for function in face cast; do
+        measure "$function" "$scalar" near "ck_${function}_${scalar}" \
+            "$bin/callgrind_kernel" "${function}_near" "$scalar" "$N"
+    done
     for scale in 1 10 100 1000 far; do
         # Rows a scalar cannot represent (I16F16 far is inside its range; nothing is skipped
         # today) would fail to prepare any case and stop the script here.
@@ -70,6 +75,11 @@ awk -F'\t' -v n="$N" '
         for (i = 1; i <= 3; i++) {
             line = "| " name[f[i]]
             for (j = 1; j <= 4; j++) line = line " | " v[f[i], s[j], "bench"]
+            print line " |"
+        }
+        for (i = 1; i <= 2; i++) {
+            line = "| " name[f[i]] ", near-triangle mix"
+            for (j = 1; j <= 4; j++) line = line " | " v[f[i], s[j], "near"]
             print line " |"
         }
         print ""

@@ -9,7 +9,7 @@
 //! Only distances are formed, never squares of coordinates, so fixed-point stays in range.
 
 use crate::face::{contains, face_point};
-use crate::scalar::tie;
+use crate::scalar::{largest, tie};
 use crate::{Contact, Hit, Scalar, StandardSweep, StandardTriangle, Sweep, Vec3};
 
 /// Which edges and vertices of a triangle take part in [`StandardTriangle::cast`]; the face
@@ -204,6 +204,14 @@ impl<S: Scalar> StandardTriangle<S> {
         if r == S::ZERO || !self.near_path(band, p1, r) || self.beyond_an_edge(band, p1, r) {
             return None;
         }
+        self.edges_and_vertices(p0, d, r)
+    }
+
+    /// The earliest contact with an active edge or vertex: the part of
+    /// [`cast_front`](Self::cast_front) that most sweeps never reach, kept out of line so that
+    /// the face path does not pay for its registers.
+    #[inline(never)]
+    fn edges_and_vertices(&self, p0: Vec3<S>, d: Vec3<S>, r: S) -> Option<Touch<S>> {
         let mut best: Option<Timed<S>> = None;
         for i in 0..3 {
             if self.features.edge(i) {
@@ -216,7 +224,10 @@ impl<S: Scalar> StandardTriangle<S> {
         // normal is the right one, so a vertex must be earlier by more than rounding.
         let tie = tie::<S>();
         for i in 0..3 {
-            if !self.features.vertex(i) || self.vertex_out_of_reach(i, p0, d, r) {
+            if !self.features.vertex(i)
+                || self.vertex_out_of_reach(i, p0, d, r)
+                || self.vertex_line_misses(i, p0, d, r)
+            {
                 continue;
             }
             let Some(m) = *motion.get_or_insert_with(|| S::direction(d)) else {
@@ -236,10 +247,13 @@ impl<S: Scalar> StandardTriangle<S> {
     /// `r / 64 + 4 EPSILON`. An inactive edge is a seam with a coplanar or hiding neighbour;
     /// rounding in two frames must not open a gap along it, so the faces overlap slightly there
     /// (the scene merges the two contacts). Active edges keep the exact test.
+    #[inline]
     fn within_seams(&self, xq: S, zq: S, r: S) -> bool {
-        if (0..3).all(|i| self.features.edge(i)) {
-            return false;
-        }
+        self.features.bits() & 0b111 != 0b111 && self.widened_contains(xq, zq, r)
+    }
+
+    /// [`within_seams`](Self::within_seams) for a triangle with an inactive edge.
+    fn widened_contains(&self, xq: S, zq: S, r: S) -> bool {
         let margin = S::div_pow2(r, 6) + tie::<S>();
         let q = Vec3::new(xq, S::ZERO, zq);
         (0..3).all(|i| {
@@ -249,28 +263,6 @@ impl<S: Scalar> StandardTriangle<S> {
             } else {
                 margin
             }
-        })
-    }
-
-    /// Whether the bounding box of the segment from `a` to `b`, grown by `r`, meets the
-    /// triangle's (in the x–z plane).
-    fn near_path(&self, a: Vec3<S>, b: Vec3<S>, r: S) -> bool {
-        let (x1, z1, x2) = self.shape();
-        let lo = |a: S, b: S| if a < b { a } else { b };
-        let hi = |a: S, b: S| if a < b { b } else { a };
-        let (xmin, xmax) = (lo(S::ZERO, x1), hi(x1, x2));
-        lo(a.x, b.x) - r <= xmax
-            && hi(a.x, b.x) + r >= xmin
-            && lo(a.z, b.z) - r <= z1
-            && hi(a.z, b.z) + r >= S::ZERO
-    }
-
-    /// Whether the segment from `a` to `b` stays more than `r` outside one edge's line: the
-    /// whole triangle lies inside that line, so nothing of it can be touched.
-    fn beyond_an_edge(&self, a: Vec3<S>, b: Vec3<S>, r: S) -> bool {
-        (0..3).any(|i| {
-            let (c, out) = (self.corner(i), self.edges[i].out());
-            S::dot_unit(a - c, out) > r && S::dot_unit(b - c, out) > r
         })
     }
 
@@ -299,6 +291,11 @@ impl<S: Scalar> StandardTriangle<S> {
         if !(beside && within) {
             return None;
         }
+        // Across the edge, the line of motion passes too far from it: no square root needed.
+        let reach = largest(w0.abs(), p0.y.abs(), S::ZERO);
+        if S::line_misses([w0, p0.y], [dw, d.y], r, reach) {
+            return None;
+        }
         // Across the edge the problem is planar: the centre moves from (w0, y0) along (dw, dy).
         let z = S::ZERO;
         let across = Vec3::new(dw, d.y, z);
@@ -310,13 +307,6 @@ impl<S: Scalar> StandardTriangle<S> {
         }
         let offset = Vec3::new(S::mul_unit(w, out.x), y, S::mul_unit(w, out.z));
         Some(((beta, Some(offset), Contact::Edge(i as u8)), key))
-    }
-
-    /// Whether the path's box, grown by `r`, misses vertex `i` in x or z.
-    fn vertex_out_of_reach(&self, i: usize, p0: Vec3<S>, d: Vec3<S>, r: S) -> bool {
-        let (v, p1) = (self.corner(i), p0 + d);
-        let apart = |a: S, b: S, c: S| (a - r > c && b - r > c) || (a + r < c && b + r < c);
-        apart(p0.x, p1.x, v.x) || apart(p0.z, p1.z, v.z)
     }
 
     /// First contact with vertex `i`; `motion` is the path's length and unit direction.

@@ -96,6 +96,7 @@ pub mod hit;
 pub mod interop;
 mod merge;
 pub mod plan;
+mod reject;
 pub mod scalar;
 pub mod scene;
 pub mod slide;

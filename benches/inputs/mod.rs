@@ -35,6 +35,24 @@ pub fn single_sweeps() -> Vec<Path> {
         .collect()
 }
 
+/// Sweeps as a scene's moving balls meet a triangle: starts anywhere in a box around it (half a
+/// radius to two radii of clearance above or below its plane, or beside its edges), short moves
+/// in random directions pulled down a little, as a physics step makes. Most are settled by the
+/// heights (behind the plane, moving away, stopping short) or pass beside the triangle; 5 of
+/// the 64 touch it (1 on the face, 4 on an edge or vertex).
+pub fn near_sweeps() -> Vec<Path> {
+    let mut g = Rng(0xD1B5_4A32_D192_ED03);
+    (0..SWEEPS)
+        .map(|_| {
+            let p0 = [g.range(-1.5, 8.5), g.range(-1.5, 2.5), g.range(-1.5, 8.0)];
+            let d = [g.range(-1.0, 1.0), g.range(-1.5, 0.7), g.range(-1.0, 1.0)];
+            let len = g.range(0.2, 2.5) / (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt();
+            let p1 = [0, 1, 2].map(|i| p0[i] + d[i] * len);
+            (p0, p1, g.range(0.2, 1.0))
+        })
+        .collect()
+}
+
 /// A room 16 × 8 × 16 facing inwards, its six walls tiled, the first `n` triangles of it (the
 /// last walls may be partly open), and short ball moves inside it, as a physics step makes.
 pub fn room(n: usize) -> (Vec<[P; 3]>, Vec<Path>) {

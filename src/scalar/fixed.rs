@@ -4,6 +4,7 @@
 //! rounded to nearest.
 
 use super::sealed::Kernel;
+use super::wide::*;
 use super::{Scalar, largest};
 use crate::vec3::Vec3;
 use core::cmp::Ordering;
@@ -22,13 +23,6 @@ macro_rules! round_shift {
     }};
 }
 
-/// The integer square root rounded to nearest: `r + 1` when `x > r² + r`, i.e. when
-/// `sqrt(x) >= r + 1/2` (the two cannot be equal for integers).
-fn isqrt_nearest(x: u128) -> u128 {
-    let r = x.isqrt();
-    if x - r * r > r { r + 1 } else { r }
-}
-
 /// A wide integer clamped to the type's bits.
 macro_rules! saturate {
     ($t:ty, $bits:ty, $wide:ty, $w:expr) => {
@@ -36,8 +30,16 @@ macro_rules! saturate {
     };
 }
 
+/// One fixed-point scalar: the type, its unit-vector type, the bits' type, the double-width
+/// type, the unsigned bits' type, fractional bits of both, the safe range's integer, and the
+/// exact widening products (signed, unsigned, a dot product with a unit vector), a division
+/// without the double width where the core needs it (`None` elsewhere), and the rounded square root of the double width
+/// with its unsigned type.
 macro_rules! fixed_scalar {
-    ($t:ty, $unit:ty, $bits:ty, $wide:ty, $uwide:ty, $frac:expr, $ufrac:expr, $limit_int:expr) => {
+    (
+        $t:ty, $unit:ty, $bits:ty, $wide:ty, $uwide:ty, $frac:expr, $ufrac:expr, $limit_int:expr,
+        $wmul:ident, $uwmul:ident, $wdot:ident, $ndiv:ident, $isqrt:ident, $sq:ty
+    ) => {
         impl Scalar for $t {
             const ZERO: Self = <$t>::ZERO;
             const ONE: Self = <$t>::ONE;
@@ -78,16 +80,19 @@ macro_rules! fixed_scalar {
                 }
                 // sqrt(b / 2^F) * 2^F = sqrt(b * 2^F): an integer square root. Below the
                 // largest value the result is at most 2^(BITS/2 + F/2): rounding up cannot overflow.
-                let r = isqrt_nearest((b as $uwide as u128) << $frac);
+                let r = $isqrt((b as $uwide as $sq) << $frac);
                 <$t>::from_bits(r as $bits)
             }
             #[inline]
             fn mul(self, o: Self) -> Self {
-                let p = self.to_bits() as $wide * o.to_bits() as $wide;
+                let p = $wmul(self.to_bits(), o.to_bits());
                 saturate!($t, $bits, $wide, round_shift!(p, $frac))
             }
             #[inline]
             fn div(self, o: Self) -> Self {
+                if let Some(q) = $ndiv(self.to_bits(), o.to_bits()) {
+                    return <$t>::from_bits(q);
+                }
                 let (n, d) = ((self.to_bits() as $wide) << $frac, o.to_bits() as $wide);
                 if d == 0 {
                     return if n == 0 {
@@ -119,14 +124,16 @@ macro_rules! fixed_scalar {
 
             #[inline]
             fn dot_unit(d: Vec3<Self>, u: Vec3<$unit>) -> Self {
-                let p = |a: $t, b: $unit| a.to_bits() as $wide * b.to_bits() as $wide;
-                let sum = p(d.x, u.x) + p(d.y, u.y) + p(d.z, u.z);
+                let sum = $wdot(
+                    [d.x.to_bits(), d.y.to_bits(), d.z.to_bits()],
+                    [u.x.to_bits(), u.y.to_bits(), u.z.to_bits()],
+                );
                 <$t>::from_bits(round_shift!(sum, $ufrac) as $bits)
             }
             #[inline]
             fn mul_cmp(a: Self, b: Self, c: Self, d: Self) -> Ordering {
-                let ab = a.to_bits() as $wide * b.to_bits() as $wide;
-                let cd = c.to_bits() as $wide * d.to_bits() as $wide;
+                let ab = $wmul(a.to_bits(), b.to_bits());
+                let cd = $wmul(c.to_bits(), d.to_bits());
                 ab.cmp(&cd)
             }
             fn scaled(v: Vec3<Self>) -> Option<Vec3<$unit>> {
@@ -143,12 +150,13 @@ macro_rules! fixed_scalar {
                 }))
             }
             fn unit_normalize(s: Vec3<$unit>) -> Vec3<$unit> {
+                let sq = |c: $unit| $wmul(c.to_bits(), c.to_bits());
                 let w = s.map(|c| c.to_bits() as $wide);
                 // Squares carry 2*UFRAC fractional bits; with |s| <= 1 their sum is below 3.
-                let len2 = w.x * w.x + w.y * w.y + w.z * w.z;
+                let len2 = sq(s.x) + sq(s.y) + sq(s.z);
                 // Never zero for the inputs described, but a divisor the compiler cannot prove nonzero
                 // would leave a panic path in the binary.
-                let len = (isqrt_nearest(len2 as u128) as $wide).max(1);
+                let len = ($isqrt(len2 as $sq) as $wide).max(1);
                 w.map(|c| {
                     let num = c << $ufrac;
                     let half = if num < 0 { -(len / 2) } else { len / 2 };
@@ -156,11 +164,12 @@ macro_rules! fixed_scalar {
                 })
             }
             fn unit_cross(a: Vec3<$unit>, b: Vec3<$unit>) -> Option<Vec3<$unit>> {
-                let (a, b) = (
-                    a.map(|c| c.to_bits() as $wide),
-                    b.map(|c| c.to_bits() as $wide),
+                let (a, b) = (a.map(|c| c.to_bits()), b.map(|c| c.to_bits()));
+                let c = Vec3::new(
+                    $wmul(a.y, b.z) - $wmul(a.z, b.y),
+                    $wmul(a.z, b.x) - $wmul(a.x, b.z),
+                    $wmul(a.x, b.y) - $wmul(a.y, b.x),
                 );
-                let c = crate::vec3::cross(a, b);
                 let m = largest(c.x.unsigned_abs(), c.y.unsigned_abs(), c.z.unsigned_abs());
                 // `c` carries 2*UFRAC fractional bits; 1024 units of roundoff is 2^(UFRAC+10).
                 if m < (1 << ($ufrac + 10)) {
@@ -177,7 +186,7 @@ macro_rules! fixed_scalar {
             }
             #[inline]
             fn dot(a: Vec3<Self>, b: Vec3<Self>) -> Self {
-                let p = |a: $t, b: $t| a.to_bits() as $wide * b.to_bits() as $wide;
+                let p = |a: $t, b: $t| $wmul(a.to_bits(), b.to_bits());
                 let sum = p(a.x, b.x) + p(a.y, b.y) + p(a.z, b.z);
                 saturate!($t, $bits, $wide, round_shift!(sum, $frac))
             }
@@ -187,13 +196,13 @@ macro_rules! fixed_scalar {
             }
             #[inline]
             fn mul_unit(s: Self, u: $unit) -> Self {
-                let p = s.to_bits() as $wide * u.to_bits() as $wide;
+                let p = $wmul(s.to_bits(), u.to_bits());
                 <$t>::from_bits(round_shift!(p, $ufrac) as $bits)
             }
             fn direction(v: Vec3<Self>) -> Option<(Self, Vec3<$unit>)> {
                 // Components below 2^(BITS-1) square to below 2^(2 BITS - 2): three fit unsigned.
-                let u = v.map(|c| (c.to_bits() as $wide).unsigned_abs());
-                let len = isqrt_nearest((u.x * u.x + u.y * u.y + u.z * u.z) as u128);
+                let u = v.map(|c| c.to_bits().unsigned_abs());
+                let len = $isqrt($uwmul(u.x, u.x) + $uwmul(u.y, u.y) + $uwmul(u.z, u.z));
                 Some((
                     <$t>::from_bits(len as $bits),
                     Self::unit_normalize(Self::scaled(v)?),
@@ -204,10 +213,24 @@ macro_rules! fixed_scalar {
                     return None;
                 }
                 // Every square is below r² <= LIMIT², exact with 2F fractional bits.
-                let sq = |a: $t| (a.to_bits() as $wide) * (a.to_bits() as $wide);
+                let sq = |a: $t| $wmul(a.to_bits(), a.to_bits());
                 let k2 = sq(r) - sq(c.x) - sq(c.y) - sq(c.z);
-                (k2 >= 0)
-                    .then(|| <$t>::from_bits(isqrt_nearest(k2.unsigned_abs() as u128) as $bits))
+                (k2 >= 0).then(|| <$t>::from_bits($isqrt(k2.unsigned_abs()) as $bits))
+            }
+            #[inline]
+            fn line_misses(q: [Self; 2], d: [Self; 2], r: Self, extent: Self) -> bool {
+                let (a, b) = (d[0].to_bits().unsigned_abs(), d[1].to_bits().unsigned_abs());
+                let (big, small) = if a < b { (b, a) } else { (a, b) };
+                // `direction` rounds each unit component by under 2^-(UFRAC-1), so `chord`'s
+                // offset is off by under 2^-(UFRAC-4) of the offset's size plus a step; the
+                // floors below cost 4 steps more. 16 steps and 2^-(UFRAC-7) of the reach cover
+                // both with room.
+                let reach = largest(extent.to_bits(), r.to_bits(), 0).unsigned_abs();
+                let rm = r.to_bits().unsigned_abs() + 16 + (reach >> ($ufrac - 7));
+                // Halved products, so their difference cannot overflow.
+                let x = ($wmul(q[0].to_bits(), d[1].to_bits()) >> 1)
+                    - ($wmul(q[1].to_bits(), d[0].to_bits()) >> 1);
+                x.unsigned_abs() > ($uwmul(rm, big) >> 1) + ($uwmul(rm, small) >> 2)
             }
             #[inline]
             fn unit_to_scalar(u: $unit) -> Self {
@@ -217,5 +240,35 @@ macro_rules! fixed_scalar {
     };
 }
 
-fixed_scalar!(I16F16, I2F30, i32, i64, u32, 16, 30, 4096);
-fixed_scalar!(I32F32, I2F62, i64, i128, u64, 32, 62, 268_435_456);
+fixed_scalar!(
+    I16F16,
+    I2F30,
+    i32,
+    i64,
+    u32,
+    16,
+    30,
+    4096,
+    wide_mul_i32,
+    wide_mul_u32,
+    wide_dot_i32,
+    narrow_div_i32,
+    isqrt_nearest_64,
+    u64
+);
+fixed_scalar!(
+    I32F32,
+    I2F62,
+    i64,
+    i128,
+    u64,
+    32,
+    62,
+    268_435_456,
+    wide_mul_i64,
+    wide_mul_u64,
+    wide_dot_i64,
+    no_narrow_div,
+    isqrt_nearest_128,
+    u128
+);

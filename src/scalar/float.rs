@@ -7,7 +7,22 @@ use crate::vec3::Vec3;
 use core::cmp::Ordering;
 
 macro_rules! float_scalar {
-    ($t:ty, $sqrt:path, $limit:expr) => {
+    ($t:ty, $sqrt:path, $limit:expr, $tiny:ident) => {
+        /// `direction` of a tiny vector (a tiny radius makes tiny contact offsets): scaled by
+        /// its largest component first, dividing, since 1 / m overflows for a subnormal m. Out
+        /// of line and cold, so the common path is not made to compute it speculatively.
+        #[cold]
+        #[inline(never)]
+        fn $tiny(v: Vec3<$t>) -> Option<($t, Vec3<$t>)> {
+            let m = largest(v.x.abs(), v.y.abs(), v.z.abs());
+            if m.is_nan() || m <= 0.0 {
+                return None;
+            }
+            let s = v.map(|c| c / m);
+            let len = $sqrt(crate::vec3::dot3(s, s));
+            Some((m * len, s * (1.0 / len)))
+        }
+
         impl Scalar for $t {
             const ZERO: Self = 0.0;
             const ONE: Self = 1.0;
@@ -106,20 +121,29 @@ macro_rules! float_scalar {
                     let len = $sqrt(n2);
                     return Some((len, v * (1.0 / len)));
                 }
-                // Tiny vectors (a tiny radius makes tiny contact offsets): scale by the largest
-                // component first, dividing, since 1 / m overflows for a subnormal m.
-                let m = largest(v.x.abs(), v.y.abs(), v.z.abs());
-                if m.is_nan() || m <= 0.0 {
-                    return None;
-                }
-                let s = v.map(|c| c / m);
-                let len = $sqrt(crate::vec3::dot3(s, s));
-                Some((m * len, s * (1.0 / len)))
+                $tiny(v)
             }
             #[inline]
             fn chord(r: Self, c: Vec3<Self>) -> Option<Self> {
                 let k2 = r * r - crate::vec3::dot3(c, c);
                 (k2 >= 0.0).then(|| $sqrt(k2))
+            }
+            #[inline]
+            fn line_misses(q: [Self; 2], d: [Self; 2], r: Self, extent: Self) -> bool {
+                let (a, b) = (d[0].abs(), d[1].abs());
+                let (big, small) = if a < b { (b, a) } else { (a, b) };
+                // Paths this short across (or NaN) are left to the full computation: below it
+                // the products here could underflow.
+                if big.is_nan() || big <= 4.0 * <$t>::EPSILON {
+                    return false;
+                }
+                // The unit direction carries ~5 half-ulps per component and the cross product
+                // another two, so `chord`'s offset is off by under 7 EPSILON of the offset's
+                // size; the products here add 4 more. 128 EPSILON of the largest of the
+                // offset, r and 1 covers both twice over.
+                let reach = largest(extent, r, 1.0);
+                let m = 128.0 * <$t>::EPSILON * reach;
+                (q[0] * d[1] - q[1] * d[0]).abs() > (r + m) * (big + 0.5 * small)
             }
             #[inline]
             fn unit_to_scalar(u: Self) -> Self {
@@ -129,5 +153,5 @@ macro_rules! float_scalar {
     };
 }
 
-float_scalar!(f32, libm::sqrtf, 16_777_216.0);
-float_scalar!(f64, libm::sqrt, 9_007_199_254_740_992.0);
+float_scalar!(f32, libm::sqrtf, 16_777_216.0, tiny_direction_f32);
+float_scalar!(f64, libm::sqrt, 9_007_199_254_740_992.0, tiny_direction_f64);

@@ -15,6 +15,7 @@
 
 mod fixed;
 mod float;
+mod wide;
 
 use crate::vec3::Vec3;
 #[cfg(doc)]
@@ -101,7 +102,8 @@ pub(crate) mod sealed {
         /// Zero as a unit-vector component.
         const UNIT_ZERO: Self::Unit;
 
-        /// `d · u` rounded once. Needs components of `d` within `2 * LIMIT`.
+        /// `d · u` rounded once. Needs components of `d` within `2 * LIMIT` and `u` a unit vector
+        /// (components within ±1; `I16F16`'s 32-bit path relies on it).
         fn dot_unit(d: Vec3<Self>, u: Vec3<Self::Unit>) -> Self;
         /// Orders `a * b` against `c * d`, exactly for fixed-point. Needs operands below `8 * LIMIT`.
         fn mul_cmp(a: Self, b: Self, c: Self, d: Self) -> Ordering;
@@ -132,6 +134,16 @@ pub(crate) mod sealed {
         /// when `|c| > r`. Needs `r` within `LIMIT` and `c` within `8 * LIMIT`; fixed-point
         /// forms the squares exactly in the wide type.
         fn chord(r: Self, c: Vec3<Self>) -> Option<Self>;
+        /// Whether the line through `q` along `d` certainly passes farther than `r` from the
+        /// origin: `|q × d| > (r + margin) |d|`, decided with a few products and no square root,
+        /// `|d|` bounded above by `max + min / 2` of its components. `q` and `d` are two
+        /// coordinates of an offset from a feature and of a path; `extent` is at least the largest
+        /// magnitude of the offset's components (all three, when `q` is a projection). The
+        /// margin exceeds the rounding of [`direction`](Self::direction) and of the cross
+        /// product taken with its result, so when this is true [`chord`](Self::chord) of that
+        /// cross product is `None`; false when unsure (tiny float paths). Needs `q`, `d` within
+        /// `8 * LIMIT` and `r` within `LIMIT`.
+        fn line_misses(q: [Self; 2], d: [Self; 2], r: Self, extent: Self) -> bool;
         /// A unit-vector component rounded to `Self`.
         fn unit_to_scalar(u: Self::Unit) -> Self;
     }

@@ -278,7 +278,7 @@ fn run<S: Scalar, G: Geometry<S> + ?Sized>(
             point: center - hit.normal.scale(radius),
             time: elapsed,
         });
-        let (alpha, lift) = stand_off(&hit, rest, skin);
+        let (alpha, lift) = stand_off(&hit, rest, skin, S::height_error(extent));
         out.position = out.position + rest.scale(alpha) + lift;
         let left = rest.scale(S::ONE - alpha);
         add_planes(&mut planes, &hit);

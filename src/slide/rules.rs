@@ -14,8 +14,16 @@ pub(super) type Planes<S> = Vec<Vec3<S>, { MAX_SLIDES * PLANES }>;
 /// A ball that travelled stops a skin short, measured along the normal, by backing off along
 /// its own path (never behind its start), so stopping adds no sideways motion and a ball pushed
 /// into a corner settles at a skin from both walls instead of being levered from one to the
-/// other. One met at once (already touching or overlapping) is lifted by a skin instead.
-pub(super) fn stand_off<S: Scalar>(hit: &SceneHit<S>, rest: Vec3<S>, skin: S) -> (S, Vec3<S>) {
+/// other. What is left of the travel after backing off, if no more than `rounding` (the
+/// rounding of a position), is rounding too: a resting ball does not move at all, so float
+/// positions do not walk by an ulp a call. One met at once (already touching or overlapping) is
+/// lifted by a skin instead.
+pub(super) fn stand_off<S: Scalar>(
+    hit: &SceneHit<S>,
+    rest: Vec3<S>,
+    skin: S,
+    rounding: S,
+) -> (S, Vec3<S>) {
     let into = S::dot(rest, hit.normal);
     if hit.alpha > S::ZERO && into < S::ZERO {
         let back = S::div(skin, -into);
@@ -24,7 +32,9 @@ pub(super) fn stand_off<S: Scalar>(hit: &SceneHit<S>, rest: Vec3<S>, skin: S) ->
         } else {
             S::ZERO
         };
-        return (alpha, Vec3::new(S::ZERO, S::ZERO, S::ZERO));
+        let settled = magnitude(rest).mul(alpha) <= rounding;
+        let zero = Vec3::new(S::ZERO, S::ZERO, S::ZERO);
+        return (if settled { S::ZERO } else { alpha }, zero);
     }
     (hit.alpha, hit.normal.scale(skin))
 }

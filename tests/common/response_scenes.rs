@@ -271,7 +271,13 @@ pub fn corner<S: Tolerance>(c: &Corner, steps: usize, settle: usize) -> Monitor 
     };
     let push = scale(dir, c.push * r);
     let crease = unit(cross(w.normals[0], w.normals[2]));
-    let along = dot(back(v::<S>(w.m.dir(push))), crease).abs();
+    // Each wall is two triangles whose rounded vertices need not be coplanar: the push's part
+    // along the crease is the largest over the creases the ball can be held in.
+    let pushed = back(v::<S>(w.m.dir(push)));
+    let along = [(0, 2), (0, 3), (1, 2), (1, 3)]
+        .map(|(i, j)| dot(pushed, unit(cross(w.normals[i], w.normals[j]))).abs())
+        .into_iter()
+        .fold(0.0, f64::max);
     let label = format!(
         "corner {:.0}° r {:.3e} push {:.2}r uneven {:.2} gap {:.1} floor {:?}",
         c.degrees, r, c.push, c.uneven, c.gap, c.floor

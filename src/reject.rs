@@ -1,0 +1,49 @@
+//! Cheap rejections for [`StandardTriangle::cast`](crate::StandardTriangle::cast): tests of a
+//! few products and compares, made before the edge and vertex contacts and their square roots
+//! and divisions. The first two (the path's box against the triangle's, the path beyond an
+//! edge's line) decide which sweeps reach the edge and vertex stage at all; the per-vertex ones
+//! (and the per-edge slab and line tests in `contact.rs`) only reject what the full test of that
+//! feature would reject too (the line tests carry a margin beyond the full test's rounding; see
+//! `Scalar`'s `line_misses`), so they change no answer (`tests/near_miss.rs`).
+
+use crate::scalar::largest;
+use crate::{Scalar, StandardTriangle, Vec3};
+
+impl<S: Scalar> StandardTriangle<S> {
+    /// Whether the bounding box of the segment from `a` to `b`, grown by `r`, meets the
+    /// triangle's (in the x–z plane).
+    pub(crate) fn near_path(&self, a: Vec3<S>, b: Vec3<S>, r: S) -> bool {
+        let (x1, z1, x2) = self.shape();
+        let lo = |a: S, b: S| if a < b { a } else { b };
+        let hi = |a: S, b: S| if a < b { b } else { a };
+        let (xmin, xmax) = (lo(S::ZERO, x1), hi(x1, x2));
+        lo(a.x, b.x) - r <= xmax
+            && hi(a.x, b.x) + r >= xmin
+            && lo(a.z, b.z) - r <= z1
+            && hi(a.z, b.z) + r >= S::ZERO
+    }
+
+    /// Whether the segment from `a` to `b` stays more than `r` outside one edge's line: the
+    /// whole triangle lies inside that line, so nothing of it can be touched.
+    pub(crate) fn beyond_an_edge(&self, a: Vec3<S>, b: Vec3<S>, r: S) -> bool {
+        (0..3).any(|i| {
+            let (c, out) = (self.corner(i), self.edges[i].out());
+            S::dot_unit(a - c, out) > r && S::dot_unit(b - c, out) > r
+        })
+    }
+
+    /// Whether the path's box, grown by `r`, misses vertex `i` in x or z.
+    pub(crate) fn vertex_out_of_reach(&self, i: usize, p0: Vec3<S>, d: Vec3<S>, r: S) -> bool {
+        let (v, p1) = (self.corner(i), p0 + d);
+        let apart = |a: S, b: S, c: S| (a - r > c && b - r > c) || (a + r < c && b + r < c);
+        apart(p0.x, p1.x, v.x) || apart(p0.z, p1.z, v.z)
+    }
+
+    /// Whether the line of motion passes too far from vertex `i` for contact, seen from above
+    /// (in the x–z plane: a projection only shortens distances, so this is conservative).
+    pub(crate) fn vertex_line_misses(&self, i: usize, p0: Vec3<S>, d: Vec3<S>, r: S) -> bool {
+        let q = p0 - self.corner(i);
+        let reach = largest(q.x.abs(), q.y.abs(), q.z.abs());
+        S::line_misses([q.x, q.z], [d.x, d.z], r, reach)
+    }
+}
