@@ -52,6 +52,8 @@
 #![forbid(unsafe_code)]
 #![deny(missing_docs)]
 
+mod adjacency;
+pub mod bvh;
 mod check;
 pub mod contact;
 pub mod error;
@@ -59,6 +61,7 @@ pub mod face;
 pub mod hit;
 pub mod interop;
 mod merge;
+pub mod mesh;
 pub mod plan;
 pub mod scalar;
 pub mod scene;
@@ -67,11 +70,13 @@ pub mod sweep;
 pub mod triangle;
 pub mod vec3;
 
+pub use bvh::{Grid, Node};
 pub use contact::Features;
 pub use error::Error;
 pub use face::standard_face;
 pub use hit::{Contact, Hit};
 pub use merge::PLANES;
+pub use mesh::{Buffer, Degenerates, Mesh, MeshError};
 pub use plan::{Precision, Verdict, plan};
 pub use scalar::Scalar;
 pub use scene::{Geometry, Scene, SceneHit};

@@ -1,0 +1,494 @@
+//! A bounding volume hierarchy over a mesh's triangles: 4-wide nodes with child boxes quantized
+//! to bytes on an integer grid, built by object-median splits, traversed nearest child first
+//! by a ball's swept segment.
+//!
+//! # Layout
+//! Every box lives on one integer grid per mesh ([`Grid`]): a cell is `2^exponent` units, chosen
+//! so the largest coordinate spans at most 2^24 cells, and a triangle's box is its vertices'
+//! box rounded outward (down for minima, up for maxima) and grown by one cell. A [`Node`]
+//! (44 bytes) holds up to four children; each child's box is stored in six bytes relative to
+//! the node's own box, in steps of `2^shift` cells per axis, minima rounded down and maxima up,
+//! so a decoded box always contains what it stands for. This is the quantization of Jolt's
+//! quad-tree node codec (`Jolt/AABBTree/NodeCodec/NodeCodecQuadTreeHalfFloat.h`, whose half
+//! floats are rounded outward) and of the compressed wide BVH of Ylitie, Karras and Laine
+//! (*Efficient incoherent ray traversal on GPUs through compressed wide BVHs*, HPG 2017; 8-bit
+//! child boxes relative to the parent, as in tinybvh's `BVH8_CWBVH`), here with integer
+//! arithmetic, so decoding is exact and the same on every target. A leaf is a run of at most
+//! [`LEAF`] consecutive triangles, referenced from its parent's child slot: a node costs
+//! 44 bytes per about 12 triangles, 3.7 bytes per triangle.
+//!
+//! # Build
+//! Top down: a node's triangles are split in two at the median of their box centres along the
+//! axis where those centres spread widest, each half again, giving up to four children
+//! (Jolt's `AABBTreeBuilder` likewise splits twice per quad-tree node). Split positions are
+//! multiples of [`LEAF`], so leaves are full. The median is found by selection (`O(n)`), so
+//! the build takes `O(N log N)`; the depth is at most `log4(N / LEAF) + 1`, which bounds the
+//! traversal stack. Centres are integers and ties are broken by triangle index, so every
+//! decision is exact: the same triangles in the same order give the same nodes, byte for byte,
+//! on every target. Median splits give up some of the quality of binned SAH (Wald, *On fast
+//! construction of SAH-based bounding volume hierarchies*, 2007; Jolt's and tinybvh's
+//! default) for a guaranteed depth and a simpler, exact build.
+//!
+//! # Traversal
+//! The segment from `p0` to `p1` is taken to grid units in `f64` once per query; each child box
+//! is decoded, grown by the ball's reach and clipped against the segment with the slab test
+//! (Kay and Kajiya, 1986) using the reciprocal of the direction computed once per query, so no
+//! node needs a division. Children are pushed farthest first, so the nearest is visited first,
+//! and a subtree is skipped when the segment enters its box after the accumulator's
+//! [`reach`](crate::merge::Earliest::reach).
+//!
+//! Culling is conservative: a box is grown by `r (1 + 1/64) + 4 EPSILON` (a contact can lie up
+//! to `r` from the triangle, plus the seam margin of inactive edges) plus a bound on every
+//! rounding between the exact segment and what [`StandardTriangle::cast`](crate::StandardTriangle::cast)
+//! computes: `64 EPSILON` per unit of the path's length and of the coordinates' magnitude
+//! (floats; `1/1024` of that for fixed point, whose frames round to 30 or 62 fractional bits),
+//! `64 EPSILON` absolute, `2^-40` of the magnitudes for the `f64` arithmetic here, and two grid
+//! cells. The tightest of these bounds is a few times the largest rounding the contact tests
+//! can make, so a triangle whose `cast` reports a contact within reach is never skipped and the
+//! answer is the linear scan's, bit for bit (`tests/mesh.rs` checks it).
+
+use crate::merge::Earliest;
+use crate::{Scalar, Sweep};
+
+/// Most triangles in a leaf.
+pub const LEAF: usize = 4;
+/// Deepest tree the traversal's stack is sized for: `log4(2^28 / LEAF) + 1 = 14` levels suffice
+/// for the largest mesh the build accepts.
+pub const MAX_DEPTH: usize = 16;
+/// Entries of the traversal stack: three siblings wait per level, plus the root.
+const STACK: usize = 3 * MAX_DEPTH + 4;
+
+/// A child reference with this bit set is a leaf: `first << 2 | (count - 1)`.
+const LEAF_FLAG: u32 = 1 << 31;
+
+/// A 4-wide node: child boxes quantized to bytes relative to this node's own box.
+///
+/// Child `k < count` has the box `lo + (boxes[k][a] << shift[a])` to
+/// `lo + (boxes[k][3 + a] << shift[a])` per axis `a`, in grid cells, where `lo` is the node's
+/// box's minimum (known from its parent, or [`Grid`] for the root). `children[k]` is a node
+/// index, or with the top bit set a leaf: `first << 2 | (count - 1)` over the mesh's triangle
+/// slots `first .. first + count`.
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct Node {
+    /// Per child: minimum x, y, z, then maximum x, y, z, in steps of `2^shift`.
+    pub boxes: [[u8; 6]; 4],
+    /// Per axis: the step of the quantized boxes, `2^shift` grid cells.
+    pub shift: [u8; 3],
+    /// Children in use, 1 to 4.
+    pub count: u8,
+    /// Per child: a node index, or a leaf (top bit set).
+    pub children: [u32; 4],
+}
+
+const _: () = assert!(core::mem::size_of::<Node>() == 44);
+
+/// The integer grid of a mesh's boxes and the root's box on it.
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct Grid {
+    /// A cell is `2^exponent` units of length.
+    pub exponent: i32,
+    /// The root box's minimum, in cells.
+    pub lo: [i32; 3],
+    /// The root box's maximum, in cells.
+    pub hi: [i32; 3],
+}
+
+/// An axis-aligned box in grid cells.
+pub(crate) type Cells = ([i32; 3], [i32; 3]);
+
+impl Grid {
+    /// `2^-exponent`: world units to cells (exact, a power of two).
+    pub(crate) fn scale(exponent: i32) -> f64 {
+        f64::from_bits(((1023 - exponent.clamp(-1000, 1000)) as u64) << 52)
+    }
+
+    /// The exponent for coordinates up to `largest` in magnitude: at most 2^24 cells from the
+    /// origin, clamped so scaled coordinates stay normal `f64` numbers.
+    pub(crate) fn exponent_for(largest: f64) -> i32 {
+        let e = ((largest.to_bits() >> 52) & 0x7ff) as i32 - 1023;
+        (e + 1 - 24).clamp(-900, 1000)
+    }
+
+    /// The cells of the box from `min` to `max` (world units, `min <= max`), rounded outward
+    /// and grown by one cell.
+    pub(crate) fn cells(exponent: i32, min: [f64; 3], max: [f64; 3]) -> Cells {
+        let s = Self::scale(exponent);
+        (min.map(|v| floor(v * s) - 1), max.map(|v| ceil(v * s) + 1))
+    }
+}
+
+/// The largest integer not above `v`, for `|v| < 2^30` (exact: no rounding mode involved).
+fn floor(v: f64) -> i32 {
+    let t = v as i32;
+    if (t as f64) > v { t - 1 } else { t }
+}
+
+/// The smallest integer not below `v`, for `|v| < 2^30`.
+fn ceil(v: f64) -> i32 {
+    let t = v as i32;
+    if (t as f64) < v { t + 1 } else { t }
+}
+
+/// Why a tree could not be built.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum BuildError {
+    /// The node slice holds fewer than this many nodes.
+    Nodes(usize),
+    /// Deeper than [`MAX_DEPTH`] (cannot happen below [`MAX_TRIANGLES`](crate::adjacency)).
+    Depth,
+}
+
+/// How the build splits `n` items: the first part's size (a multiple of [`LEAF`]).
+const fn half(n: usize) -> usize {
+    let groups = n.div_ceil(LEAF);
+    let mid = groups.div_ceil(2) * LEAF;
+    if mid < n { mid } else { n }
+}
+
+/// The sizes of the up to four children of a node over `n > 0` items (zeros unused).
+const fn parts(n: usize) -> [usize; 4] {
+    if n <= LEAF {
+        return [n, 0, 0, 0];
+    }
+    let a = half(n);
+    let b = n - a;
+    let (a1, a2) = if a > LEAF {
+        (half(a), a - half(a))
+    } else {
+        (a, 0)
+    };
+    let (b1, b2) = if b > LEAF {
+        (half(b), b - half(b))
+    } else {
+        (b, 0)
+    };
+    [a1, a2, b1, b2]
+}
+
+/// Nodes the build makes for `n` triangles (zero for none): size the node slice with it.
+pub const fn nodes_for(n: usize) -> usize {
+    if n == 0 {
+        return 0;
+    }
+    let p = parts(n);
+    let mut total = 1;
+    let mut k = 0;
+    while k < 4 {
+        if p[k] > LEAF {
+            total += nodes_for(p[k]);
+        }
+        k += 1;
+    }
+    total
+}
+
+/// One triangle during the build: its box in cells (three words) and its index (fourth word).
+pub(crate) type Item = [u64; 4];
+
+/// Packs a box and an index into an [`Item`].
+pub(crate) fn item((lo, hi): Cells, index: usize) -> Item {
+    let w = |a: i32, b: i32| (a as u32 as u64) | ((b as u32 as u64) << 32);
+    [
+        w(lo[0], lo[1]),
+        w(lo[2], hi[0]),
+        w(hi[1], hi[2]),
+        index as u64,
+    ]
+}
+
+/// The box of an [`Item`].
+pub(crate) fn item_box(it: &Item) -> Cells {
+    let lo = |w: u64| w as u32 as i32;
+    let hi = |w: u64| (w >> 32) as u32 as i32;
+    (
+        [lo(it[0]), hi(it[0]), lo(it[1])],
+        [hi(it[1]), lo(it[2]), hi(it[2])],
+    )
+}
+
+/// The union of the items' boxes.
+pub(crate) fn union(items: &[Item]) -> Cells {
+    let mut b = ([i32::MAX; 3], [i32::MIN; 3]);
+    for it in items {
+        let (lo, hi) = item_box(it);
+        for a in 0..3 {
+            b.0[a] = b.0[a].min(lo[a]);
+            b.1[a] = b.1[a].max(hi[a]);
+        }
+    }
+    b
+}
+
+/// Reorders `items` at the median split of [`half`]: the first part holds the items with the
+/// smallest centres along the widest axis of the centres (ties by index).
+fn split(items: &mut [Item]) -> usize {
+    let mid = half(items.len());
+    if mid >= items.len() {
+        return mid;
+    }
+    let centre = |it: &Item, a: usize| {
+        let (lo, hi) = item_box(it);
+        lo[a] as i64 + hi[a] as i64
+    };
+    let mut axis = 0;
+    let mut widest = -1;
+    for a in 0..3 {
+        let (mut lo, mut hi) = (i64::MAX, i64::MIN);
+        for it in items.iter() {
+            let c = centre(it, a);
+            lo = lo.min(c);
+            hi = hi.max(c);
+        }
+        if hi - lo > widest {
+            (axis, widest) = (a, hi - lo);
+        }
+    }
+    items.select_nth_unstable_by_key(mid, |it| (centre(it, axis), it[3]));
+    mid
+}
+
+/// Builds the tree over `items` (each a triangle's box and index; reordered into leaf order)
+/// into `nodes`, the root's box being `root`. Returns the number of nodes used.
+pub(crate) fn build(
+    items: &mut [Item],
+    root: Cells,
+    nodes: &mut [Node],
+) -> Result<usize, BuildError> {
+    let n = items.len();
+    let needed = nodes_for(n);
+    if nodes.len() < needed {
+        return Err(BuildError::Nodes(needed));
+    }
+    if n == 0 {
+        return Ok(0);
+    }
+    // (node, first item, item count, node box, depth)
+    let mut work: heapless::Vec<(usize, usize, usize, Cells, usize), STACK> = heapless::Vec::new();
+    let _ = work.push((0, 0, n, root, 1));
+    let mut next = 1;
+    while let Some((at, first, count, (lo, hi), depth)) = work.pop() {
+        if depth > MAX_DEPTH {
+            return Err(BuildError::Depth);
+        }
+        let range = &mut items[first..first + count];
+        // Two levels of median splits: up to four parts.
+        let mid = if count > LEAF { split(range) } else { count };
+        let (a, b) = range.split_at_mut(mid);
+        let m1 = if a.len() > LEAF { split(a) } else { a.len() };
+        let m2 = if b.len() > LEAF { split(b) } else { b.len() };
+        let bounds = [(0, m1), (m1, mid), (mid, mid + m2), (mid + m2, count)];
+        let mut node = Node::default();
+        for ax in 0..3 {
+            let extent = hi[ax] as i64 - lo[ax] as i64;
+            let mut s = 0;
+            while extent > 255 << s {
+                s += 1;
+            }
+            node.shift[ax] = s as u8;
+        }
+        for &(s, e) in &bounds {
+            if s == e {
+                continue;
+            }
+            let part = &mut range[s..e];
+            let (clo, chi) = union(part);
+            let k = node.count as usize;
+            let mut dlo = [0; 3];
+            let mut dhi = [0; 3];
+            for ax in 0..3 {
+                let sh = node.shift[ax] as u32;
+                let step = 1i64 << sh;
+                let qlo = (clo[ax] as i64 - lo[ax] as i64) >> sh;
+                let qhi = (chi[ax] as i64 - lo[ax] as i64 + step - 1) >> sh;
+                node.boxes[k][ax] = qlo as u8;
+                node.boxes[k][3 + ax] = qhi as u8;
+                dlo[ax] = lo[ax] + ((qlo as i32) << sh);
+                dhi[ax] = lo[ax] + ((qhi as i32) << sh);
+            }
+            if part.len() <= LEAF {
+                part.sort_unstable_by_key(|it| it[3]);
+                node.children[k] = LEAF_FLAG | ((first + s) as u32) << 2 | (part.len() - 1) as u32;
+            } else {
+                let child = next;
+                next += 1;
+                if child >= nodes.len() {
+                    return Err(BuildError::Nodes(needed));
+                }
+                node.children[k] = child as u32;
+                if work
+                    .push((child, first + s, e - s, (dlo, dhi), depth + 1))
+                    .is_err()
+                {
+                    return Err(BuildError::Depth);
+                }
+            }
+            node.count += 1;
+        }
+        nodes[at] = node;
+    }
+    Ok(next)
+}
+
+/// A child to visit: where the segment enters its box, its reference, and its box.
+#[derive(Clone, Copy)]
+struct Entry {
+    enter: f64,
+    child: u32,
+    cells: Cells,
+}
+
+/// The swept segment in grid units, with what every box test needs.
+pub(crate) struct Segment {
+    q0: [f64; 3],
+    d: [f64; 3],
+    inv: [f64; 3],
+    pad: f64,
+}
+
+impl Segment {
+    /// The sweep in the cells of `grid`; `pad` is how far (cells) a box must be grown so that
+    /// every contact `cast` can report lies inside (see the module's docs).
+    pub(crate) fn new<S: Scalar>(sweep: &Sweep<S>, grid: &Grid) -> Self {
+        let v = |p: crate::Vec3<S>| [p.x.to_f64(), p.y.to_f64(), p.z.to_f64()];
+        let (p0, p1) = (v(sweep.p0()), v(sweep.p1()));
+        let r = sweep.radius().to_f64();
+        let s = Grid::scale(grid.exponent);
+        let big = |a: [f64; 3]| a.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+        let cells = grid.lo.iter().chain(grid.hi.iter());
+        let mesh = cells.fold(0.0f64, |m, &c| m.max((c as f64).abs())) / s;
+        let d = [p1[0] - p0[0], p1[1] - p0[1], p1[2] - p0[2]];
+        let magnitude = big(p0).max(big(p1)).max(mesh);
+        let eps = S::PRECISION.epsilon;
+        let per_unit = if S::PRECISION.relative {
+            1.0
+        } else {
+            1.0 / 1024.0
+        };
+        let pad = r * (1.0 + 1.0 / 64.0)
+            + eps * (4.0 + 64.0 * (1.0 + 3.0 * big(d)))
+            + (64.0 * eps * per_unit + 1.0 / (1u64 << 40) as f64) * 3.0 * magnitude;
+        let q0 = p0.map(|x| x * s);
+        let d = d.map(|x| x * s);
+        Self {
+            q0,
+            d,
+            inv: d.map(|x| 1.0 / x),
+            pad: pad * s + 2.0,
+        }
+    }
+
+    /// Where the segment, over `[0, limit]`, enters the box grown by the pad; `None` if it misses.
+    fn enter(&self, (lo, hi): Cells, limit: f64) -> Option<f64> {
+        let (mut t0, mut t1) = (0.0f64, limit);
+        for a in 0..3 {
+            let near = lo[a] as f64 - self.pad - self.q0[a];
+            let far = hi[a] as f64 + self.pad - self.q0[a];
+            let inv = self.inv[a];
+            if !inv.is_finite() {
+                // Parallel to the slab (or as good as): inside it all along, or never.
+                let d = self.d[a].abs();
+                if near > d || far < -d {
+                    return None;
+                }
+                continue;
+            }
+            let (ta, tb) = (near * inv, far * inv);
+            let (ta, tb) = if inv > 0.0 { (ta, tb) } else { (tb, ta) };
+            t0 = t0.max(ta);
+            t1 = t1.min(tb);
+        }
+        (t0 <= t1).then_some(t0)
+    }
+}
+
+/// Decodes child `k` of `node`, whose own box has minimum `lo`.
+fn child_cells(node: &Node, k: usize, lo: [i32; 3]) -> Cells {
+    let q = node.boxes[k];
+    let at =
+        |a: usize, v: u8| lo[a].wrapping_add((v as i32).wrapping_shl(node.shift[a].min(31) as u32));
+    (
+        [at(0, q[0]), at(1, q[1]), at(2, q[2])],
+        [at(0, q[3]), at(1, q[4]), at(2, q[5])],
+    )
+}
+
+/// The triangle slots of a leaf reference: `first .. first + count`.
+pub(crate) fn leaf_slots(child: u32) -> Option<core::ops::Range<usize>> {
+    (child & LEAF_FLAG != 0).then(|| {
+        let first = ((child & !LEAF_FLAG) >> 2) as usize;
+        first..first + (child & 3) as usize + 1
+    })
+}
+
+/// Visits the leaves the segment may reach within the current reach, nearest first, calling
+/// `leaf` with each leaf's slots; `reach` gives the current limit on alpha. Returns false if the
+/// tree is malformed (a stack overflow or a cycle: only possible for parts not made by the
+/// build), in which case the caller must answer another way.
+pub(crate) fn traverse<S: Scalar>(
+    nodes: &[Node],
+    grid: &Grid,
+    seg: &Segment,
+    acc: &mut Earliest<S>,
+    mut leaf: impl FnMut(&mut Earliest<S>, core::ops::Range<usize>),
+) -> bool {
+    if nodes.is_empty() {
+        return true;
+    }
+    let limit = |r: S| r.to_f64() + 1.0 / (1u64 << 50) as f64;
+    let root = (grid.lo, grid.hi);
+    let Some(enter) = seg.enter(root, limit(acc.reach())) else {
+        return true;
+    };
+    let mut stack: heapless::Vec<Entry, STACK> = heapless::Vec::new();
+    let _ = stack.push(Entry {
+        enter,
+        child: 0,
+        cells: root,
+    });
+    let mut budget = 5 * nodes.len() + 5;
+    while let Some(e) = stack.pop() {
+        budget = match budget.checked_sub(1) {
+            Some(b) => b,
+            None => return false,
+        };
+        let lim = limit(acc.reach());
+        if e.enter > lim {
+            continue;
+        }
+        if let Some(slots) = leaf_slots(e.child) {
+            leaf(acc, slots);
+            continue;
+        }
+        let Some(node) = nodes.get(e.child as usize) else {
+            return false;
+        };
+        let mut near: [(f64, usize, Cells); 4] = [(0.0, 0, ([0; 3], [0; 3])); 4];
+        let mut n = 0;
+        for k in 0..(node.count as usize).min(4) {
+            let cells = child_cells(node, k, e.cells.0);
+            if let Some(t) = seg.enter(cells, lim) {
+                // Insertion by entry, nearest first; equal entries keep child order.
+                let mut at = n;
+                while at > 0 && near[at - 1].0 > t {
+                    near[at] = near[at - 1];
+                    at -= 1;
+                }
+                near[at] = (t, k, cells);
+                n += 1;
+            }
+        }
+        for &(t, k, cells) in near[..n].iter().rev() {
+            let entry = Entry {
+                enter: t,
+                child: node.children[k],
+                cells,
+            };
+            if stack.push(entry).is_err() {
+                return false;
+            }
+        }
+    }
+    true
+}

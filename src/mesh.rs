@@ -1,0 +1,357 @@
+//! [`Mesh`]: many triangles behind a [`bvh`](crate::bvh), borrowed from wherever they live (a
+//! `static` in flash, a caller's buffer, `Vec`s on a PC), answering exactly as a linear scan.
+
+use crate::adjacency::{MAX_TRIANGLES, link_all};
+use crate::bvh::{self, BuildError, Grid, Node, Segment};
+use crate::merge::earliest;
+use crate::{Error, Features, Geometry, Parts, Scalar, SceneHit, StandardTriangle, Sweep};
+use crate::{Triangle, Vec3};
+use core::fmt;
+
+/// A triangle mesh with a bounding volume hierarchy, borrowing its parts.
+///
+/// `triangles[s]` is the prepared form (with active edges) of input triangle `order[s]`, in the
+/// tree's leaf order; `nodes` and `grid` are the [`bvh`](crate::bvh). [`Mesh::build`] makes the
+/// parts from a triangle list into caller-provided slices; [`Mesh::from_parts`] (a `const fn`)
+/// takes baked ones. The answer of [`cast`](Mesh::cast) is, bit for bit, the one a linear scan of
+/// the same prepared triangles in input order gives (the slice [`Geometry`]), including merged
+/// simultaneous contacts; `index` is the triangle's index in the input.
+///
+/// Memory per triangle: the prepared triangle (112 bytes for `f32` and `I16F16`, 224 for `f64`
+/// and `I32F32`), 4 bytes of `order`, and about 44 / 12 = 3.7 bytes of nodes (one per 3 to 16
+/// triangles): the tree adds about 7.7 bytes per triangle in every scalar.
+///
+/// ```
+/// use ballcast::{Contact, Degenerates, Mesh, Node, Sweep, Triangle, Vec3};
+/// let v = Vec3::new;
+/// let tris = [
+///     Triangle::new(v(0.0f32, 0.0, 0.0), v(0.0, 0.0, 2.0), v(2.0, 0.0, 2.0)),
+///     Triangle::new(v(0.0, 0.0, 0.0), v(2.0, 0.0, 2.0), v(2.0, 0.0, 0.0)),
+/// ];
+/// let mut nodes = [Node::default(); 1];
+/// let mut prepared = [Mesh::<f32>::filler(); 2];
+/// let mut order = [0u32; 2];
+/// let mut scratch = [0u64; 8];
+/// let (mesh, skipped) = Mesh::build(&tris, Degenerates::Refuse, &mut nodes, &mut prepared, &mut order, &mut scratch)?;
+/// assert_eq!((mesh.len(), skipped), (2, 0));
+/// let hit = mesh.cast(&Sweep::new(v(1.0, 3.0, 1.0), v(1.0, -1.0, 1.0), 0.5)?).unwrap();
+/// assert_eq!((hit.alpha, hit.normal, hit.contact), (0.625, v(0.0, 1.0, 0.0), Contact::Face));
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Mesh<'a, S: Scalar> {
+    nodes: &'a [Node],
+    triangles: &'a [StandardTriangle<S>],
+    order: &'a [u32],
+    grid: Grid,
+}
+
+/// What [`Mesh::build`] does with a degenerate triangle (coincident or collinear vertices).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Degenerates {
+    /// Fail with [`MeshError::Triangle`] naming it.
+    Refuse,
+    /// Leave it out (zero-area fillers are common in exported levels) and count it.
+    Skip,
+}
+
+/// Which buffer given to [`Mesh::build`] was too small.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Buffer {
+    /// The nodes: [`nodes_for`](crate::bvh::nodes_for) of the triangles kept.
+    Nodes,
+    /// The prepared triangles: one per input triangle.
+    Triangles,
+    /// The order: one per input triangle.
+    Order,
+    /// The scratch words: four per input triangle.
+    Scratch,
+}
+
+/// Why [`Mesh::build`] or [`Mesh::verify`] refused.
+#[non_exhaustive]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum MeshError {
+    /// Input triangle `index` was refused by [`StandardTriangle::new`] for `error` (a degenerate
+    /// one only under [`Degenerates::Refuse`]).
+    Triangle {
+        /// Its index in the input.
+        index: usize,
+        /// Why.
+        error: Error,
+    },
+    /// A buffer holds fewer than `needed` elements.
+    Capacity {
+        /// Which one.
+        buffer: Buffer,
+        /// How many it must hold.
+        needed: usize,
+    },
+    /// More than 2^28 triangles.
+    TooMany,
+    /// [`Mesh::verify`]: the parts are not what the build makes of the given triangles.
+    Mismatch,
+}
+
+impl fmt::Display for MeshError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            MeshError::Triangle { index, error } => write!(f, "triangle {index}: {error}"),
+            MeshError::Capacity { buffer, needed } => {
+                write!(f, "buffer of {buffer:?} too small: {needed} needed")
+            }
+            MeshError::TooMany => f.write_str("more than 2^28 triangles"),
+            MeshError::Mismatch => f.write_str("mesh parts differ from the build of its triangles"),
+        }
+    }
+}
+
+impl core::error::Error for MeshError {}
+
+impl<'a, S: Scalar> Mesh<'a, S> {
+    /// A mesh from parts made by [`Mesh::build`] (or baked from them), in a `const` context, so
+    /// a mesh can be a `static`. Nothing is checked here: check baked parts with
+    /// [`verify`](Self::verify) in a test. Parts from elsewhere can give wrong answers, never
+    /// a panic or undefined behaviour.
+    pub const fn from_parts(
+        nodes: &'a [Node],
+        triangles: &'a [StandardTriangle<S>],
+        order: &'a [u32],
+        grid: Grid,
+    ) -> Self {
+        Self {
+            nodes,
+            triangles,
+            order,
+            grid,
+        }
+    }
+
+    /// A placeholder to fill a buffer of prepared triangles with before [`build`](Self::build).
+    pub fn filler() -> StandardTriangle<S> {
+        let z = Vec3::new(S::ZERO, S::ZERO, S::ZERO);
+        let u = Vec3::new(S::UNIT_ZERO, S::UNIT_ZERO, S::UNIT_ZERO);
+        let edge = crate::Edge {
+            dir: [S::UNIT_ZERO; 2],
+            len: S::ZERO,
+        };
+        StandardTriangle::from_parts(Parts {
+            origin: z,
+            axes: [u; 3],
+            shape: [S::ZERO; 3],
+            normal: z,
+            edges: [edge; 3],
+            features: Features::ALL.bits(),
+            two_sided: false,
+        })
+    }
+
+    /// Prepares `sources`, computes their active edges and builds the tree, into the given
+    /// buffers; returns the mesh borrowing them and the number of degenerate triangles skipped.
+    ///
+    /// Buffers: `nodes` at least [`nodes_for`](crate::bvh::nodes_for)`(kept)` (kept = input less
+    /// skipped; `nodes_for(sources.len())` always suffices), `triangles` and `order` one per input
+    /// triangle, `scratch` four words per input triangle. Time `O(N log N)` (active edges: plus one
+    /// comparison per pair of triangles on either side of a shared edge), no allocation, stack
+    /// use independent of `N`. The same input gives the same parts, byte for byte, on every target.
+    ///
+    /// Errors: [`MeshError::Triangle`] for a triangle [`StandardTriangle::new`] refuses (unless it
+    /// is degenerate and `degenerates` is [`Degenerates::Skip`]); [`MeshError::Capacity`] for a
+    /// buffer too small; [`MeshError::TooMany`] beyond 2^28 triangles.
+    pub fn build(
+        sources: &[Triangle<S>],
+        degenerates: Degenerates,
+        nodes: &'a mut [Node],
+        triangles: &'a mut [StandardTriangle<S>],
+        order: &'a mut [u32],
+        scratch: &mut [u64],
+    ) -> Result<(Self, usize), MeshError> {
+        let n = sources.len();
+        if n > MAX_TRIANGLES {
+            return Err(MeshError::TooMany);
+        }
+        let short = |buffer, len: usize, needed: usize| {
+            (len < needed).then_some(MeshError::Capacity { buffer, needed })
+        };
+        let checks = [
+            short(Buffer::Triangles, triangles.len(), n),
+            short(Buffer::Order, order.len(), n),
+            short(Buffer::Scratch, scratch.len(), 4 * n),
+        ];
+        if let Some(e) = checks.into_iter().flatten().next() {
+            return Err(e);
+        }
+        // Prepare, in input order, keeping the input index.
+        let mut kept = 0;
+        for (index, t) in sources.iter().enumerate() {
+            match StandardTriangle::new(t) {
+                Ok(st) => {
+                    triangles[kept] = st;
+                    order[kept] = index as u32;
+                    kept += 1;
+                }
+                Err(Error::Degenerate) if degenerates == Degenerates::Skip => {}
+                Err(error) => return Err(MeshError::Triangle { index, error }),
+            }
+        }
+        if let Some(e) = short(Buffer::Nodes, nodes.len(), bvh::nodes_for(kept)) {
+            return Err(e);
+        }
+        let (triangles, order) = (&mut triangles[..kept], &mut order[..kept]);
+        link_all(sources, order, triangles, &mut scratch[..3 * kept]);
+
+        // Boxes on the grid.
+        let corners = |c: usize| {
+            sources[order[c] as usize]
+                .vertices()
+                .map(|p| p.to_array().map(S::to_f64))
+        };
+        let largest = (0..kept).fold(0.0f64, |m, c| {
+            corners(c).iter().flatten().fold(m, |m, x| m.max(x.abs()))
+        });
+        let exponent = Grid::exponent_for(largest);
+        let (items, _) = scratch.as_chunks_mut::<4>();
+        let items = &mut items[..kept];
+        for (c, it) in items.iter_mut().enumerate() {
+            let v = corners(c);
+            let lo = [0, 1, 2].map(|a| v[0][a].min(v[1][a]).min(v[2][a]));
+            let hi = [0, 1, 2].map(|a| v[0][a].max(v[1][a]).max(v[2][a]));
+            *it = bvh::item(Grid::cells(exponent, lo, hi), c);
+        }
+        let (lo, hi) = if kept == 0 {
+            ([0; 3], [0; 3])
+        } else {
+            bvh::union(items)
+        };
+        let used = bvh::build(items, (lo, hi), nodes).map_err(|e| match e {
+            BuildError::Nodes(needed) => MeshError::Capacity {
+                buffer: Buffer::Nodes,
+                needed,
+            },
+            BuildError::Depth => MeshError::TooMany,
+        })?;
+
+        // Into leaf order: slot s takes compact triangle items[s][3].
+        for it in items.iter_mut() {
+            it[1] = order[it[3] as usize] as u64;
+            it[0] = 0; // not yet placed
+        }
+        for (s, it) in items.iter().enumerate() {
+            order[s] = it[1] as u32;
+        }
+        for start in 0..kept {
+            if items[start][0] != 0 {
+                continue;
+            }
+            let held = triangles[start];
+            let mut s = start;
+            loop {
+                items[s][0] = 1;
+                let from = items[s][3] as usize;
+                if from == start {
+                    triangles[s] = held;
+                    break;
+                }
+                triangles[s] = triangles[from];
+                s = from;
+            }
+        }
+        let grid = Grid { exponent, lo, hi };
+        let (nodes, triangles, order): (&'a [Node], &'a [StandardTriangle<S>], &'a [u32]) =
+            (&nodes[..used], triangles, order);
+        Ok((Self::from_parts(nodes, triangles, order, grid), n - kept))
+    }
+
+    /// Number of triangles.
+    pub fn len(&self) -> usize {
+        self.triangles.len()
+    }
+
+    /// Whether the mesh holds no triangle.
+    pub fn is_empty(&self) -> bool {
+        self.triangles.is_empty()
+    }
+
+    /// The tree's nodes.
+    pub fn nodes(&self) -> &'a [Node] {
+        self.nodes
+    }
+
+    /// The prepared triangles, in leaf order.
+    pub fn triangles(&self) -> &'a [StandardTriangle<S>] {
+        self.triangles
+    }
+
+    /// The input index of each prepared triangle.
+    pub fn order(&self) -> &'a [u32] {
+        self.order
+    }
+
+    /// The grid of the tree's boxes and the root's box.
+    pub fn grid(&self) -> Grid {
+        self.grid
+    }
+
+    /// The prepared triangle of input triangle `index`, if kept (a search, `O(N)`).
+    pub fn triangle(&self, index: usize) -> Option<&'a StandardTriangle<S>> {
+        let s = self.order.iter().position(|&i| i as usize == index)?;
+        self.triangles.get(s)
+    }
+
+    /// Checks baked parts against the mesh `Mesh::build` makes of `sources` into the given
+    /// buffers (sized as for `build`): the way to test a `static` mesh.
+    ///
+    /// Errors: those of [`build`](Self::build), or [`MeshError::Mismatch`] on any difference.
+    pub fn verify(
+        &self,
+        sources: &[Triangle<S>],
+        degenerates: Degenerates,
+        nodes: &mut [Node],
+        triangles: &mut [StandardTriangle<S>],
+        order: &mut [u32],
+        scratch: &mut [u64],
+    ) -> Result<(), MeshError> {
+        let (built, _) = Mesh::build(sources, degenerates, nodes, triangles, order, scratch)?;
+        if built == *self {
+            Ok(())
+        } else {
+            Err(MeshError::Mismatch)
+        }
+    }
+
+    /// The earliest contact along the sweep: the answer of the slice [`Geometry`] over the same
+    /// prepared triangles in input order, bit for bit, found in `O(log N)` node visits for a
+    /// short sweep.
+    pub fn cast(&self, sweep: &Sweep<S>) -> Option<SceneHit<S>> {
+        let seg = Segment::new(sweep, &self.grid);
+        let mut sound = true;
+        let hit = earliest(|acc| {
+            sound &= bvh::traverse(self.nodes, &self.grid, &seg, acc, |acc, slots| {
+                for s in slots {
+                    if let (Some(t), Some(&i)) = (self.triangles.get(s), self.order.get(s))
+                        && let Some(hit) = t.cast(sweep)
+                    {
+                        acc.offer(i as usize, hit);
+                    }
+                }
+            });
+        });
+        if sound {
+            return hit;
+        }
+        // Malformed parts (never from `build`): test every triangle.
+        earliest(|acc| {
+            for (t, &i) in self.triangles.iter().zip(self.order) {
+                if let Some(hit) = t.cast(sweep) {
+                    acc.offer(i as usize, hit);
+                }
+            }
+        })
+    }
+}
+
+impl<S: Scalar> Geometry<S> for Mesh<'_, S> {
+    fn cast(&self, sweep: &Sweep<S>) -> Option<SceneHit<S>> {
+        Mesh::cast(self, sweep)
+    }
+}
