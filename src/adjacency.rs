@@ -35,16 +35,14 @@ pub(crate) fn deactivate<S: Scalar>(tri: &mut StandardTriangle<S>, edge: usize) 
     *tri = tri.with_features(f);
 }
 
-/// Bits of a record holding `triangle * 3 + edge`.
+/// Bits of a record holding `triangle * 3 + edge`: room for 2^28 triangles.
 const SLOT_BITS: u32 = 30;
-/// The most triangles [`link_all`] takes: `3 * n` slots fit [`SLOT_BITS`].
-pub(crate) const MAX_TRIANGLES: usize = 1 << 28;
 
 /// Applies [`hides`] to every pair of triangles sharing an edge with opposite winding, as
 /// [`Scene`](crate::Scene) does pair by pair, in O(N log N + P): one record per edge, sorted.
 ///
 /// `triangles[c]` is the prepared form of `sources[order[c]]`, `c` increasing with input order;
-/// `records` holds at least `3 * triangles.len()` words, and `triangles.len() <= MAX_TRIANGLES`.
+/// `records` holds at least `3 * triangles.len()` words, and `triangles.len() <= 2^28`.
 /// A record is a 33-bit hash of the edge's unordered vertex pair, one bit for its direction and
 /// the edge's slot; records with equal hashes are adjacent once sorted, and only the pairs of
 /// opposite direction within such a run are compared, exactly. P counts those pairs: one per

@@ -60,6 +60,49 @@ const STACK: usize = 3 * MAX_DEPTH + 4;
 
 /// A child reference with this bit set is a leaf: `first << 2 | (count - 1)`.
 const LEAF_FLAG: u32 = 1 << 31;
+/// Bits 26 to 30 of a child reference: its subtree's [`seam_class`].
+const CLASS_SHIFT: u32 = 26;
+/// The payload of a child reference: a node index, or a leaf's `first << 2 | (count - 1)`.
+const PAYLOAD: u32 = (1 << CLASS_SHIFT) - 1;
+/// The most triangles a tree takes (leaf references hold `first` in 24 bits).
+pub const MAX_TRIANGLES: usize = 1 << 24;
+/// The largest seam class: boxes grown by `2^31` seam margins, reached by every query.
+const MAX_CLASS: u32 = 31;
+
+/// How far beyond its triangle a face contact of `cast` can lie, in units of the seam margin
+/// `r / 64 + 4 EPSILON` by which inactive edges are moved out: the class `c` with
+/// `2^c >= 2 F`, where `F` is the largest displacement of a corner when the edges of the
+/// standardized triangle `(0, 0)`, `(x1, z1)`, `(x2, 0)` are moved out by one unit: `1 / sin(θ/2)`
+/// where both edges at a corner of angle θ move, `1 / sin θ` where one does. The factor 2 covers
+/// the rounding of the frame. Zero when every edge is active (no margin), [`MAX_CLASS`] for a
+/// sliver too thin to tell.
+pub(crate) fn seam_class(all_active: bool, [x1, z1, x2]: [f64; 3]) -> u32 {
+    if all_active {
+        return 0;
+    }
+    let corners = [(0.0, 0.0), (x1, z1), (x2, 0.0)];
+    let mut worst = 1.0f64;
+    for k in 0..3 {
+        let (o, a, b) = (corners[k], corners[(k + 1) % 3], corners[(k + 2) % 3]);
+        let (ux, uz) = (a.0 - o.0, a.1 - o.1);
+        let (vx, vz) = (b.0 - o.0, b.1 - o.1);
+        let (lu, lv) = (libm::hypot(ux, uz), libm::hypot(vx, vz));
+        let sin = (ux * vz - uz * vx).abs() / (lu * lv);
+        // sin(θ/2) is half the chord between the two unit directions.
+        let half = libm::hypot(ux / lu - vx / lv, uz / lu - vz / lv) / 2.0;
+        worst = worst.max(1.0 / sin).max(1.0 / half);
+    }
+    let f = 2.0 * worst;
+    // NaN (a zero angle) lands here too.
+    if f.is_nan() || f >= (1u64 << MAX_CLASS) as f64 {
+        return MAX_CLASS;
+    }
+    let mut c = 0;
+    while ((1u64 << c) as f64) < f {
+        c += 1;
+    }
+    c
+}
 
 /// A 4-wide node: child boxes quantized to bytes relative to this node's own box.
 ///
@@ -136,7 +179,7 @@ fn ceil(v: f64) -> i32 {
 pub(crate) enum BuildError {
     /// The node slice holds fewer than this many nodes.
     Nodes(usize),
-    /// Deeper than [`MAX_DEPTH`] (cannot happen below [`MAX_TRIANGLES`](crate::adjacency)).
+    /// Deeper than [`MAX_DEPTH`] (cannot happen below [`MAX_TRIANGLES`]).
     Depth,
 }
 
@@ -184,18 +227,24 @@ pub const fn nodes_for(n: usize) -> usize {
     total
 }
 
-/// One triangle during the build: its box in cells (three words) and its index (fourth word).
+/// One triangle during the build: its box in cells (three words), its index (fourth word, low
+/// half) and its [`seam_class`] (fourth word, high half).
 pub(crate) type Item = [u64; 4];
 
-/// Packs a box and an index into an [`Item`].
-pub(crate) fn item((lo, hi): Cells, index: usize) -> Item {
+/// Packs a box, an index and a seam class into an [`Item`].
+pub(crate) fn item((lo, hi): Cells, index: usize, class: u32) -> Item {
     let w = |a: i32, b: i32| (a as u32 as u64) | ((b as u32 as u64) << 32);
     [
         w(lo[0], lo[1]),
         w(lo[2], hi[0]),
         w(hi[1], hi[2]),
-        index as u64,
+        index as u32 as u64 | (class as u64) << 32,
     ]
+}
+
+/// The index of an [`Item`].
+pub(crate) fn item_index(it: &Item) -> usize {
+    it[3] as u32 as usize
 }
 
 /// The box of an [`Item`].
@@ -245,7 +294,7 @@ fn split(items: &mut [Item]) -> usize {
             (axis, widest) = (a, hi - lo);
         }
     }
-    items.select_nth_unstable_by_key(mid, |it| (centre(it, axis), it[3]));
+    items.select_nth_unstable_by_key(mid, |it| (centre(it, axis), item_index(it)));
     mid
 }
 
@@ -307,16 +356,23 @@ pub(crate) fn build(
                 dlo[ax] = lo[ax] + ((qlo as i32) << sh);
                 dhi[ax] = lo[ax] + ((qhi as i32) << sh);
             }
+            let class = part
+                .iter()
+                .map(|it| (it[3] >> 32) as u32)
+                .max()
+                .unwrap_or(0);
+            let class = class.min(MAX_CLASS) << CLASS_SHIFT;
             if part.len() <= LEAF {
-                part.sort_unstable_by_key(|it| it[3]);
-                node.children[k] = LEAF_FLAG | ((first + s) as u32) << 2 | (part.len() - 1) as u32;
+                part.sort_unstable_by_key(item_index);
+                node.children[k] =
+                    LEAF_FLAG | class | ((first + s) as u32) << 2 | (part.len() - 1) as u32;
             } else {
                 let child = next;
                 next += 1;
                 if child >= nodes.len() {
                     return Err(BuildError::Nodes(needed));
                 }
-                node.children[k] = child as u32;
+                node.children[k] = class | child as u32;
                 if work
                     .push((child, first + s, e - s, (dlo, dhi), depth + 1))
                     .is_err()
@@ -344,12 +400,14 @@ pub(crate) struct Segment {
     q0: [f64; 3],
     d: [f64; 3],
     inv: [f64; 3],
+    /// How far (cells) every box is grown: the radius plus every rounding (module docs).
     pad: f64,
+    /// The seam margin `r / 64 + 4 EPSILON` (cells), grown by `2^class` per child.
+    seam: f64,
 }
 
 impl Segment {
-    /// The sweep in the cells of `grid`; `pad` is how far (cells) a box must be grown so that
-    /// every contact `cast` can report lies inside (see the module's docs).
+    /// The sweep in the cells of `grid`.
     pub(crate) fn new<S: Scalar>(sweep: &Sweep<S>, grid: &Grid) -> Self {
         let v = |p: crate::Vec3<S>| [p.x.to_f64(), p.y.to_f64(), p.z.to_f64()];
         let (p0, p1) = (v(sweep.p0()), v(sweep.p1()));
@@ -366,9 +424,10 @@ impl Segment {
         } else {
             1.0 / 1024.0
         };
-        let pad = r * (1.0 + 1.0 / 64.0)
-            + eps * (4.0 + 64.0 * (1.0 + 3.0 * big(d)))
+        let pad = r
+            + eps * 64.0 * (1.0 + 3.0 * big(d))
             + (64.0 * eps * per_unit + 1.0 / (1u64 << 40) as f64) * 3.0 * magnitude;
+        let seam = r / 64.0 + 4.0 * eps;
         let q0 = p0.map(|x| x * s);
         let d = d.map(|x| x * s);
         Self {
@@ -376,15 +435,18 @@ impl Segment {
             d,
             inv: d.map(|x| 1.0 / x),
             pad: pad * s + 2.0,
+            seam: seam * s,
         }
     }
 
-    /// Where the segment, over `[0, limit]`, enters the box grown by the pad; `None` if it misses.
-    fn enter(&self, (lo, hi): Cells, limit: f64) -> Option<f64> {
+    /// Where the segment, over `[0, limit]`, enters the box grown by the pad and `2^class` seam
+    /// margins; `None` if it misses.
+    fn enter(&self, (lo, hi): Cells, class: u32, limit: f64) -> Option<f64> {
+        let pad = self.pad + self.seam * (1u64 << class.min(MAX_CLASS)) as f64;
         let (mut t0, mut t1) = (0.0f64, limit);
         for a in 0..3 {
-            let near = lo[a] as f64 - self.pad - self.q0[a];
-            let far = hi[a] as f64 + self.pad - self.q0[a];
+            let near = lo[a] as f64 - pad - self.q0[a];
+            let far = hi[a] as f64 + pad - self.q0[a];
             let inv = self.inv[a];
             if !inv.is_finite() {
                 // Parallel to the slab (or as good as): inside it all along, or never.
@@ -417,7 +479,7 @@ fn child_cells(node: &Node, k: usize, lo: [i32; 3]) -> Cells {
 /// The triangle slots of a leaf reference: `first .. first + count`.
 pub(crate) fn leaf_slots(child: u32) -> Option<core::ops::Range<usize>> {
     (child & LEAF_FLAG != 0).then(|| {
-        let first = ((child & !LEAF_FLAG) >> 2) as usize;
+        let first = ((child & PAYLOAD) >> 2) as usize;
         first..first + (child & 3) as usize + 1
     })
 }
@@ -437,15 +499,11 @@ pub(crate) fn traverse<S: Scalar>(
         return true;
     }
     let limit = |r: S| r.to_f64() + 1.0 / (1u64 << 50) as f64;
-    let root = (grid.lo, grid.hi);
-    let Some(enter) = seg.enter(root, limit(acc.reach())) else {
-        return true;
-    };
     let mut stack: heapless::Vec<Entry, STACK> = heapless::Vec::new();
     let _ = stack.push(Entry {
-        enter,
+        enter: 0.0,
         child: 0,
-        cells: root,
+        cells: (grid.lo, grid.hi),
     });
     let mut budget = 5 * nodes.len() + 5;
     while let Some(e) = stack.pop() {
@@ -461,14 +519,15 @@ pub(crate) fn traverse<S: Scalar>(
             leaf(acc, slots);
             continue;
         }
-        let Some(node) = nodes.get(e.child as usize) else {
+        let Some(node) = nodes.get((e.child & PAYLOAD) as usize) else {
             return false;
         };
         let mut near: [(f64, usize, Cells); 4] = [(0.0, 0, ([0; 3], [0; 3])); 4];
         let mut n = 0;
         for k in 0..(node.count as usize).min(4) {
             let cells = child_cells(node, k, e.cells.0);
-            if let Some(t) = seg.enter(cells, lim) {
+            let class = (node.children[k] & !LEAF_FLAG) >> CLASS_SHIFT;
+            if let Some(t) = seg.enter(cells, class, lim) {
                 // Insertion by entry, nearest first; equal entries keep child order.
                 let mut at = n;
                 while at > 0 && near[at - 1].0 > t {

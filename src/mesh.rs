@@ -1,8 +1,8 @@
 //! [`Mesh`]: many triangles behind a [`bvh`](crate::bvh), borrowed from wherever they live (a
 //! `static` in flash, a caller's buffer, `Vec`s on a PC), answering exactly as a linear scan.
 
-use crate::adjacency::{MAX_TRIANGLES, link_all};
-use crate::bvh::{self, BuildError, Grid, Node, Segment};
+use crate::adjacency::link_all;
+use crate::bvh::{self, BuildError, Grid, MAX_TRIANGLES, Node, Segment};
 use crate::merge::earliest;
 use crate::{Error, Features, Geometry, Parts, Scalar, SceneHit, StandardTriangle, Sweep};
 use crate::{Triangle, Vec3};
@@ -87,7 +87,7 @@ pub enum MeshError {
         /// How many it must hold.
         needed: usize,
     },
-    /// More than 2^28 triangles.
+    /// More than 2^24 triangles.
     TooMany,
     /// [`Mesh::verify`]: the parts are not what the build makes of the given triangles.
     Mismatch,
@@ -100,7 +100,7 @@ impl fmt::Display for MeshError {
             MeshError::Capacity { buffer, needed } => {
                 write!(f, "buffer of {buffer:?} too small: {needed} needed")
             }
-            MeshError::TooMany => f.write_str("more than 2^28 triangles"),
+            MeshError::TooMany => f.write_str("more than 2^24 triangles"),
             MeshError::Mismatch => f.write_str("mesh parts differ from the build of its triangles"),
         }
     }
@@ -216,7 +216,12 @@ impl<'a, S: Scalar> Mesh<'a, S> {
             let v = corners(c);
             let lo = [0, 1, 2].map(|a| v[0][a].min(v[1][a]).min(v[2][a]));
             let hi = [0, 1, 2].map(|a| v[0][a].max(v[1][a]).max(v[2][a]));
-            *it = bvh::item(Grid::cells(exponent, lo, hi), c);
+            let t = &triangles[c];
+            let all_active = (0..3).all(|e| t.features().edge(e));
+            let [_, b, c2] = t.vertices();
+            let shape = [b.x, b.z, c2.x].map(S::to_f64);
+            let class = bvh::seam_class(all_active, shape);
+            *it = bvh::item(Grid::cells(exponent, lo, hi), c, class);
         }
         let (lo, hi) = if kept == 0 {
             ([0; 3], [0; 3])
@@ -233,7 +238,7 @@ impl<'a, S: Scalar> Mesh<'a, S> {
 
         // Into leaf order: slot s takes compact triangle items[s][3].
         for it in items.iter_mut() {
-            it[1] = order[it[3] as usize] as u64;
+            it[1] = order[bvh::item_index(it)] as u64;
             it[0] = 0; // not yet placed
         }
         for (s, it) in items.iter().enumerate() {
@@ -247,7 +252,7 @@ impl<'a, S: Scalar> Mesh<'a, S> {
             let mut s = start;
             loop {
                 items[s][0] = 1;
-                let from = items[s][3] as usize;
+                let from = bvh::item_index(&items[s]);
                 if from == start {
                     triangles[s] = held;
                     break;
