@@ -42,7 +42,8 @@ const SLOT_BITS: u32 = 30;
 /// [`Scene`](crate::Scene) does pair by pair, in O(N log N + P): one record per edge, sorted.
 ///
 /// `triangles[c]` is the prepared form of `sources[order[c]]`, `c` increasing with input order;
-/// `records` holds at least `3 * triangles.len()` words, and `triangles.len() <= 2^28`.
+/// `records` holds at least `6 * triangles.len()` words (records and the radix sort's other
+/// buffer), and `triangles.len() <= 2^28`.
 /// A record is a 33-bit hash of the edge's unordered vertex pair, one bit for its direction and
 /// the edge's slot; records with equal hashes are adjacent once sorted, and only the pairs of
 /// opposite direction within such a run are compared, exactly. P counts those pairs: one per
@@ -61,6 +62,7 @@ pub(crate) fn link_all<S: Scalar>(
             .and_then(|&i| sources.get(i as usize))
             .map(Triangle::vertices)
     };
+    let (records, temp) = records.split_at_mut(records.len().min(3 * n));
     let mut used = 0;
     for (c, slots) in records.chunks_exact_mut(3).take(n).enumerate() {
         let Some(v) = vertices(c) else { return };
@@ -74,7 +76,8 @@ pub(crate) fn link_all<S: Scalar>(
         used += 3;
     }
     let records = &mut records[..used];
-    records.sort_unstable();
+    // Records are made in slot order, so a stable sort on the hash and direction sorts them fully.
+    crate::radix::sort(records, temp, SLOT_BITS, 64);
     let mut start = 0;
     while start < records.len() {
         let key = records[start] >> 31;

@@ -8,51 +8,61 @@
 //! box rounded outward (down for minima, up for maxima) and grown by one cell. A [`Node`]
 //! (44 bytes) holds up to four children; each child's box is stored in six bytes relative to
 //! the node's own box, in steps of `2^shift` cells per axis, minima rounded down and maxima up,
-//! so a decoded box always contains what it stands for. This is the quantization of Jolt's
-//! quad-tree node codec (`Jolt/AABBTree/NodeCodec/NodeCodecQuadTreeHalfFloat.h`, whose half
-//! floats are rounded outward) and of the compressed wide BVH of Ylitie, Karras and Laine
-//! (*Efficient incoherent ray traversal on GPUs through compressed wide BVHs*, HPG 2017; 8-bit
-//! child boxes relative to the parent, as in tinybvh's `BVH8_CWBVH`), here with integer
-//! arithmetic, so decoding is exact and the same on every target. A leaf is a run of at most
-//! [`LEAF`] consecutive triangles, referenced from its parent's child slot: a node costs
-//! 44 bytes per about 12 triangles, 3.7 bytes per triangle.
+//! so a decoded box always contains what it stands for. Rounding outward on purpose is Jolt's
+//! (`Jolt/AABBTree/NodeCodec/NodeCodecQuadTreeHalfFloat.h` stores four child boxes per 64-byte
+//! node as half floats, minima rounded towards −∞ and maxima towards +∞); bytes relative to the
+//! parent are the compressed wide BVH's (Ylitie, Karras and Laine, *Efficient incoherent ray
+//! traversal on GPUs through compressed wide BVHs*, HPG 2017). Here the arithmetic is integer,
+//! so decoding is exact and the same on every target. A leaf is a run of at most [`LEAF`]
+//! consecutive triangles, referenced from its parent's child slot, whose top bits also carry the
+//! subtree's *seam class* (below). A node costs 44 bytes per about 12 triangles: 3.7 bytes per
+//! triangle, in every scalar.
 //!
 //! # Build
-//! Top down: a node's triangles are split in two at the median of their box centres along the
-//! axis where those centres spread widest, each half again, giving up to four children
-//! (Jolt's `AABBTreeBuilder` likewise splits twice per quad-tree node). Split positions are
-//! multiples of [`LEAF`], so leaves are full. The median is found by selection (`O(n)`), so
-//! the build takes `O(N log N)`; the depth is at most `log4(N / LEAF) + 1`, which bounds the
-//! traversal stack. Centres are integers and ties are broken by triangle index, so every
+//! The triangles are put in Morton order of their box centres (13 bits per axis, one scale for
+//! all three so a flat terrain's few height levels do not scatter it; ties by index), by one
+//! stable radix sort, as linear BVH builders do (Lauterbach et al., *Fast BVH construction on
+//! GPUs*, 2009; Karras, *Maximizing parallelism in the construction of BVHs, octrees, and k-d
+//! trees*, HPG 2012). Then top down, a node's run of triangles is cut in two at the middle (a
+//! multiple of [`LEAF`], so leaves are full), and each half again, giving up to four children:
+//! two levels of a binary tree gathered into one node, as Jolt's `AABBTreeBuilder` gathers a
+//! binary tree's descendants into quad-tree nodes. Each level costs one pass to bound the
+//! children, so the build takes `O(N log N)` (the sort is `O(N)`), and the depth is at most
+//! `log4(N / LEAF) + 1`, which bounds the traversal stack. Keys and boxes are integers, so every
 //! decision is exact: the same triangles in the same order give the same nodes, byte for byte,
-//! on every target. Median splits give up some of the quality of binned SAH (Wald, *On fast
-//! construction of SAH-based bounding volume hierarchies*, 2007; Jolt's and tinybvh's
-//! default) for a guaranteed depth and a simpler, exact build.
+//! on every target. Cuts by count in Morton order give up some of the quality of binned SAH
+//! (Wald, *On fast construction of SAH-based bounding volume hierarchies*, 2007, as tinybvh
+//! builds) for a guaranteed depth and a build several times faster; on a terrain, whose
+//! triangles are alike and spread evenly, they lose little.
 //!
 //! # Traversal
-//! The segment from `p0` to `p1` is taken to grid units in `f64` once per query; each child box
-//! is decoded, grown by the ball's reach and clipped against the segment with the slab test
-//! (Kay and Kajiya, 1986) using the reciprocal of the direction computed once per query, so no
-//! node needs a division. Children are pushed farthest first, so the nearest is visited first,
-//! and a subtree is skipped when the segment enters its box after the accumulator's
-//! [`reach`](crate::merge::Earliest::reach).
+//! The segment from `p0` to `p1` is taken to grid units in `f64` once per query, with the
+//! reciprocal of its direction; each child box is decoded, grown, and clipped against the
+//! segment with the slab test (Kay and Kajiya, 1986), so no node needs a division. Children are
+//! pushed farthest first, so the nearest is visited first, and a subtree is skipped when the
+//! segment enters its box after the reach of the contacts found so far (the earliest alpha plus
+//! the tie window).
 //!
-//! Culling is conservative: a box is grown by `r (1 + 1/64) + 4 EPSILON` (a contact can lie up
-//! to `r` from the triangle, plus the seam margin of inactive edges) plus a bound on every
-//! rounding between the exact segment and what [`StandardTriangle::cast`](crate::StandardTriangle::cast)
-//! computes: `64 EPSILON` per unit of the path's length and of the coordinates' magnitude
-//! (floats; `1/1024` of that for fixed point, whose frames round to 30 or 62 fractional bits),
-//! `64 EPSILON` absolute, `2^-40` of the magnitudes for the `f64` arithmetic here, and two grid
-//! cells. The tightest of these bounds is a few times the largest rounding the contact tests
-//! can make, so a triangle whose `cast` reports a contact within reach is never skipped and the
-//! answer is the linear scan's, bit for bit (`tests/mesh.rs` checks it).
+//! Culling is conservative: a box is grown by `r`, by a bound on every rounding between the
+//! exact segment and what [`StandardTriangle::cast`](crate::StandardTriangle::cast) computes —
+//! `64 EPSILON` per unit of the path's length and of the coordinates' magnitude (floats;
+//! `1/1024` of that for fixed point, whose frames round to 30 or 62 fractional bits), `64
+//! EPSILON` absolute, `2^-40` of the magnitudes for the `f64` arithmetic here, two grid cells —
+//! and by `2^c` seam margins `r / 64 + 4 EPSILON`. The face test moves a triangle's inactive
+//! edges out by one seam margin, so it reaches beyond the triangle by up to `1 / sin(θ/2)`
+//! margins at a corner of angle θ (`1 / sin θ` where only one of the corner's edges moved): far,
+//! for a sliver. Each child carries the class `c` of its subtree, with `2^c` at least twice the
+//! worst such factor of its triangles (zero when all edges are active). The rounding bounds are
+//! several times the largest rounding the contact tests can make, so a triangle whose `cast`
+//! reports a contact within reach is never skipped and the answer is the linear scan's, bit for
+//! bit (`tests/mesh.rs` checks it on 10^5 sweeps per scalar).
 
 use crate::merge::Earliest;
 use crate::{Scalar, Sweep};
 
 /// Most triangles in a leaf.
 pub const LEAF: usize = 4;
-/// Deepest tree the traversal's stack is sized for: `log4(2^28 / LEAF) + 1 = 14` levels suffice
+/// Deepest tree the traversal's stack is sized for: `log4(2^24 / LEAF) + 1 = 12` levels suffice
 /// for the largest mesh the build accepts.
 pub const MAX_DEPTH: usize = 16;
 /// Entries of the traversal stack: three siblings wait per level, plus the root.
@@ -86,10 +96,11 @@ pub(crate) fn seam_class(all_active: bool, [x1, z1, x2]: [f64; 3]) -> u32 {
         let (o, a, b) = (corners[k], corners[(k + 1) % 3], corners[(k + 2) % 3]);
         let (ux, uz) = (a.0 - o.0, a.1 - o.1);
         let (vx, vz) = (b.0 - o.0, b.1 - o.1);
-        let (lu, lv) = (libm::hypot(ux, uz), libm::hypot(vx, vz));
+        let len = |x: f64, z: f64| libm::sqrt(x * x + z * z);
+        let (lu, lv) = (len(ux, uz), len(vx, vz));
         let sin = (ux * vz - uz * vx).abs() / (lu * lv);
         // sin(θ/2) is half the chord between the two unit directions.
-        let half = libm::hypot(ux / lu - vx / lv, uz / lu - vz / lv) / 2.0;
+        let half = len(ux / lu - vx / lv, uz / lu - vz / lv) / 2.0;
         worst = worst.max(1.0 / sin).max(1.0 / half);
     }
     let f = 2.0 * worst;
@@ -270,35 +281,22 @@ pub(crate) fn union(items: &[Item]) -> Cells {
     b
 }
 
-/// Reorders `items` at the median split of [`half`]: the first part holds the items with the
-/// smallest centres along the widest axis of the centres (ties by index).
-fn split(items: &mut [Item]) -> usize {
-    let mid = half(items.len());
-    if mid >= items.len() {
-        return mid;
-    }
-    let centre = |it: &Item, a: usize| {
-        let (lo, hi) = item_box(it);
-        lo[a] as i64 + hi[a] as i64
-    };
-    let mut axis = 0;
-    let mut widest = -1;
-    for a in 0..3 {
-        let (mut lo, mut hi) = (i64::MAX, i64::MIN);
-        for it in items.iter() {
-            let c = centre(it, a);
-            lo = lo.min(c);
-            hi = hi.max(c);
-        }
-        if hi - lo > widest {
-            (axis, widest) = (a, hi - lo);
+/// Bits per axis of a Morton key.
+pub(crate) const MORTON_BITS: u32 = 13;
+
+/// The Morton key of a point with coordinates below `2^MORTON_BITS`: their bits interleaved,
+/// x lowest.
+pub(crate) fn morton(q: [u64; 3]) -> u64 {
+    let mut key = 0;
+    for bit in 0..MORTON_BITS {
+        for (a, &v) in q.iter().enumerate() {
+            key |= (v >> bit & 1) << (3 * bit + a as u32);
         }
     }
-    items.select_nth_unstable_by_key(mid, |it| (centre(it, axis), item_index(it)));
-    mid
+    key
 }
 
-/// Builds the tree over `items` (each a triangle's box and index; reordered into leaf order)
+/// Builds the tree over `items` (each a triangle's box, index and seam class, in Morton order)
 /// into `nodes`, the root's box being `root`. Returns the number of nodes used.
 pub(crate) fn build(
     items: &mut [Item],
@@ -323,10 +321,10 @@ pub(crate) fn build(
         }
         let range = &mut items[first..first + count];
         // Two levels of median splits: up to four parts.
-        let mid = if count > LEAF { split(range) } else { count };
-        let (a, b) = range.split_at_mut(mid);
-        let m1 = if a.len() > LEAF { split(a) } else { a.len() };
-        let m2 = if b.len() > LEAF { split(b) } else { b.len() };
+        let mid = if count > LEAF { half(count) } else { count };
+        let (a, b) = (mid, count - mid);
+        let m1 = if a > LEAF { half(a) } else { a };
+        let m2 = if b > LEAF { half(b) } else { b };
         let bounds = [(0, m1), (m1, mid), (mid, mid + m2), (mid + m2, count)];
         let mut node = Node::default();
         for ax in 0..3 {
@@ -387,12 +385,13 @@ pub(crate) fn build(
     Ok(next)
 }
 
-/// A child to visit: where the segment enters its box, its reference, and its box.
+/// A child to visit: where the segment enters its box, its reference, and its box's minimum
+/// (all that decoding its children needs).
 #[derive(Clone, Copy)]
 struct Entry {
     enter: f64,
     child: u32,
-    cells: Cells,
+    lo: [i32; 3],
 }
 
 /// The swept segment in grid units, with what every box test needs.
@@ -503,7 +502,7 @@ pub(crate) fn traverse<S: Scalar>(
     let _ = stack.push(Entry {
         enter: 0.0,
         child: 0,
-        cells: (grid.lo, grid.hi),
+        lo: grid.lo,
     });
     let mut budget = 5 * nodes.len() + 5;
     while let Some(e) = stack.pop() {
@@ -522,10 +521,10 @@ pub(crate) fn traverse<S: Scalar>(
         let Some(node) = nodes.get((e.child & PAYLOAD) as usize) else {
             return false;
         };
-        let mut near: [(f64, usize, Cells); 4] = [(0.0, 0, ([0; 3], [0; 3])); 4];
+        let mut near = [(0.0f64, 0usize); 4];
         let mut n = 0;
         for k in 0..(node.count as usize).min(4) {
-            let cells = child_cells(node, k, e.cells.0);
+            let cells = child_cells(node, k, e.lo);
             let class = (node.children[k] & !LEAF_FLAG) >> CLASS_SHIFT;
             if let Some(t) = seg.enter(cells, class, lim) {
                 // Insertion by entry, nearest first; equal entries keep child order.
@@ -534,15 +533,15 @@ pub(crate) fn traverse<S: Scalar>(
                     near[at] = near[at - 1];
                     at -= 1;
                 }
-                near[at] = (t, k, cells);
+                near[at] = (t, k);
                 n += 1;
             }
         }
-        for &(t, k, cells) in near[..n].iter().rev() {
+        for &(t, k) in near[..n].iter().rev() {
             let entry = Entry {
                 enter: t,
                 child: node.children[k],
-                cells,
+                lo: child_cells(node, k, e.lo).0,
             };
             if stack.push(entry).is_err() {
                 return false;

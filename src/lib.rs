@@ -63,6 +63,7 @@ pub mod interop;
 mod merge;
 pub mod mesh;
 pub mod plan;
+mod radix;
 pub mod scalar;
 pub mod scene;
 pub mod slide;

@@ -31,7 +31,7 @@ use core::fmt;
 /// let mut nodes = [Node::default(); 1];
 /// let mut prepared = [Mesh::<f32>::filler(); 2];
 /// let mut order = [0u32; 2];
-/// let mut scratch = [0u64; 8];
+/// let mut scratch = [0u64; 12];
 /// let (mesh, skipped) = Mesh::build(&tris, Degenerates::Refuse, &mut nodes, &mut prepared, &mut order, &mut scratch)?;
 /// assert_eq!((mesh.len(), skipped), (2, 0));
 /// let hit = mesh.cast(&Sweep::new(v(1.0, 3.0, 1.0), v(1.0, -1.0, 1.0), 0.5)?).unwrap();
@@ -64,7 +64,7 @@ pub enum Buffer {
     Triangles,
     /// The order: one per input triangle.
     Order,
-    /// The scratch words: four per input triangle.
+    /// The scratch words: six per input triangle.
     Scratch,
 }
 
@@ -151,7 +151,7 @@ impl<'a, S: Scalar> Mesh<'a, S> {
     ///
     /// Buffers: `nodes` at least [`nodes_for`](crate::bvh::nodes_for)`(kept)` (kept = input less
     /// skipped; `nodes_for(sources.len())` always suffices), `triangles` and `order` one per input
-    /// triangle, `scratch` four words per input triangle. Time `O(N log N)` (active edges: plus one
+    /// triangle, `scratch` six words per input triangle. Time `O(N log N)` (active edges: plus one
     /// comparison per pair of triangles on either side of a shared edge), no allocation, stack
     /// use independent of `N`. The same input gives the same parts, byte for byte, on every target.
     ///
@@ -176,7 +176,7 @@ impl<'a, S: Scalar> Mesh<'a, S> {
         let checks = [
             short(Buffer::Triangles, triangles.len(), n),
             short(Buffer::Order, order.len(), n),
-            short(Buffer::Scratch, scratch.len(), 4 * n),
+            short(Buffer::Scratch, scratch.len(), 6 * n),
         ];
         if let Some(e) = checks.into_iter().flatten().next() {
             return Err(e);
@@ -198,36 +198,61 @@ impl<'a, S: Scalar> Mesh<'a, S> {
             return Err(e);
         }
         let (triangles, order) = (&mut triangles[..kept], &mut order[..kept]);
-        link_all(sources, order, triangles, &mut scratch[..3 * kept]);
+        link_all(sources, order, triangles, &mut scratch[..6 * kept]);
 
-        // Boxes on the grid.
+        // The grid, from the kept triangles' world bounds.
         let corners = |c: usize| {
             sources[order[c] as usize]
                 .vertices()
                 .map(|p| p.to_array().map(S::to_f64))
         };
-        let largest = (0..kept).fold(0.0f64, |m, c| {
-            corners(c).iter().flatten().fold(m, |m, x| m.max(x.abs()))
-        });
-        let exponent = Grid::exponent_for(largest);
-        let (items, _) = scratch.as_chunks_mut::<4>();
-        let items = &mut items[..kept];
-        for (c, it) in items.iter_mut().enumerate() {
-            let v = corners(c);
+        let bounds = |v: [[f64; 3]; 3]| {
             let lo = [0, 1, 2].map(|a| v[0][a].min(v[1][a]).min(v[2][a]));
             let hi = [0, 1, 2].map(|a| v[0][a].max(v[1][a]).max(v[2][a]));
+            (lo, hi)
+        };
+        let (mut wlo, mut whi) = ([f64::MAX; 3], [f64::MIN; 3]);
+        for c in 0..kept {
+            let (lo, hi) = bounds(corners(c));
+            for a in 0..3 {
+                wlo[a] = wlo[a].min(lo[a]);
+                whi[a] = whi[a].max(hi[a]);
+            }
+        }
+        let largest = (0..3).fold(0.0f64, |m, a| m.max(wlo[a].abs()).max(whi[a].abs()));
+        let exponent = Grid::exponent_for(largest);
+        let (lo, hi) = if kept == 0 {
+            ([0; 3], [0; 3])
+        } else {
+            Grid::cells(exponent, wlo, whi)
+        };
+        // Morton order of the boxes' centres, ties by index (one radix sort). One scale for the
+        // three axes (cubic cells): a flat terrain's few height levels do not split its order.
+        let extent = (0..3).fold(0i64, |m, a| m.max(hi[a] as i64 - lo[a] as i64));
+        let (keys, rest) = scratch.split_at_mut(kept);
+        let (temp, rest) = rest.split_at_mut(kept);
+        for (c, key) in keys.iter_mut().enumerate() {
+            let (blo, bhi) = bounds(corners(c));
+            let (clo, chi) = Grid::cells(exponent, blo, bhi);
+            let q = [0, 1, 2].map(|a| {
+                let centre = clo[a] as i64 + chi[a] as i64 - 2 * lo[a] as i64;
+                ((centre << bvh::MORTON_BITS) / (2 * extent + 1)) as u64
+            });
+            *key = bvh::morton(q) << 24 | c as u64;
+        }
+        crate::radix::sort(keys, temp, 24, 64);
+        let (items, _) = rest.as_chunks_mut::<4>();
+        let items = &mut items[..kept];
+        for (it, key) in items.iter_mut().zip(keys.iter()) {
+            let c = (key & 0xff_ffff) as usize;
+            let (blo, bhi) = bounds(corners(c));
             let t = &triangles[c];
             let all_active = (0..3).all(|e| t.features().edge(e));
             let [_, b, c2] = t.vertices();
             let shape = [b.x, b.z, c2.x].map(S::to_f64);
             let class = bvh::seam_class(all_active, shape);
-            *it = bvh::item(Grid::cells(exponent, lo, hi), c, class);
+            *it = bvh::item(Grid::cells(exponent, blo, bhi), c, class);
         }
-        let (lo, hi) = if kept == 0 {
-            ([0; 3], [0; 3])
-        } else {
-            bvh::union(items)
-        };
         let used = bvh::build(items, (lo, hi), nodes).map_err(|e| match e {
             BuildError::Nodes(needed) => MeshError::Capacity {
                 buffer: Buffer::Nodes,
