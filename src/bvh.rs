@@ -23,10 +23,10 @@
 //! all three so a flat terrain's few height levels do not scatter it; ties by index), by one
 //! stable radix sort, as linear BVH builders do (Lauterbach et al., *Fast BVH construction on
 //! GPUs*, 2009; Karras, *Maximizing parallelism in the construction of BVHs, octrees, and k-d
-//! trees*, HPG 2012). Then top down, a node's run of triangles is cut in two at the middle (a
-//! multiple of [`LEAF`], so leaves are full), and each half again, giving up to four children:
-//! two levels of a binary tree gathered into one node, as Jolt's `AABBTreeBuilder` gathers a
-//! binary tree's descendants into quad-tree nodes. Each level costs one pass to bound the
+//! trees*, HPG 2012). Then top down, a node's run of triangles is cut into up to four runs, each
+//! (but the last) as long as a complete subtree one level down holds, so leaves are full and a
+//! node is shared by about `3 LEAF` triangles (Jolt's `AABBTreeBuilder` likewise gathers a binary
+//! tree's descendants into quad-tree nodes). Each level costs one pass to bound the
 //! children, so the build takes `O(N log N)` (the sort is `O(N)`), and the depth is at most
 //! `log4(N / LEAF) + 1`, which bounds the traversal stack. Keys and boxes are integers, so every
 //! decision is exact: the same triangles in the same order give the same nodes, byte for byte,
@@ -194,31 +194,25 @@ pub(crate) enum BuildError {
     Depth,
 }
 
-/// How the build splits `n` items: the first part's size (a multiple of [`LEAF`]).
-const fn half(n: usize) -> usize {
-    let groups = n.div_ceil(LEAF);
-    let mid = groups.div_ceil(2) * LEAF;
-    if mid < n { mid } else { n }
-}
-
-/// The sizes of the up to four children of a node over `n > 0` items (zeros unused).
+/// The sizes of the up to four children of a node over `n > 0` items (zeros unused): each takes
+/// as many as a complete subtree one level down holds (`LEAF * 4^k` for the smallest `k` with
+/// `4^(k+1)` leaves enough for all), the last what remains. Every subtree but the last at each
+/// level is complete, so a mesh of `N` triangles needs about `N / (3 LEAF)` nodes.
 const fn parts(n: usize) -> [usize; 4] {
-    if n <= LEAF {
-        return [n, 0, 0, 0];
+    let leaves = n.div_ceil(LEAF);
+    let mut per = 1;
+    while per * 4 < leaves {
+        per *= 4;
     }
-    let a = half(n);
-    let b = n - a;
-    let (a1, a2) = if a > LEAF {
-        (half(a), a - half(a))
-    } else {
-        (a, 0)
-    };
-    let (b1, b2) = if b > LEAF {
-        (half(b), b - half(b))
-    } else {
-        (b, 0)
-    };
-    [a1, a2, b1, b2]
+    let per = per * LEAF;
+    let mut out = [0; 4];
+    let (mut k, mut left) = (0, n);
+    while k < 4 {
+        out[k] = if left < per { left } else { per };
+        left -= out[k];
+        k += 1;
+    }
+    out
 }
 
 /// Nodes the build makes for `n` triangles (zero for none): size the node slice with it.
@@ -320,12 +314,14 @@ pub(crate) fn build(
             return Err(BuildError::Depth);
         }
         let range = &mut items[first..first + count];
-        // Two levels of median splits: up to four parts.
-        let mid = if count > LEAF { half(count) } else { count };
-        let (a, b) = (mid, count - mid);
-        let m1 = if a > LEAF { half(a) } else { a };
-        let m2 = if b > LEAF { half(b) } else { b };
-        let bounds = [(0, m1), (m1, mid), (mid, mid + m2), (mid + m2, count)];
+        // Up to four runs of the Morton order.
+        let p = parts(count);
+        let bounds = [
+            (0, p[0]),
+            (p[0], p[0] + p[1]),
+            (p[0] + p[1], p[0] + p[1] + p[2]),
+            (p[0] + p[1] + p[2], count),
+        ];
         let mut node = Node::default();
         for ax in 0..3 {
             let extent = hi[ax] as i64 - lo[ax] as i64;
