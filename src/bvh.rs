@@ -436,8 +436,11 @@ impl Segment {
 
     /// Where the segment, over `[0, limit]`, enters the box grown by the pad and `2^class` seam
     /// margins; `None` if it misses.
+    #[inline]
     fn enter(&self, (lo, hi): Cells, class: u32, limit: f64) -> Option<f64> {
-        let pad = self.pad + self.seam * (1u64 << class.min(MAX_CLASS)) as f64;
+        // 2^class, exactly.
+        let scale = f64::from_bits(((1023 + class.min(MAX_CLASS)) as u64) << 52);
+        let pad = self.pad + self.seam * scale;
         let (mut t0, mut t1) = (0.0f64, limit);
         for a in 0..3 {
             let near = lo[a] as f64 - pad - self.q0[a];
@@ -451,16 +454,25 @@ impl Segment {
                 }
                 continue;
             }
-            let (ta, tb) = (near * inv, far * inv);
-            let (ta, tb) = if inv > 0.0 { (ta, tb) } else { (tb, ta) };
-            t0 = t0.max(ta);
-            t1 = t1.min(tb);
+            let (ta, tb) = if inv > 0.0 {
+                (near * inv, far * inv)
+            } else {
+                (far * inv, near * inv)
+            };
+            // Plain comparisons: a NaN (never expected) would only widen the interval.
+            if ta > t0 {
+                t0 = ta;
+            }
+            if tb < t1 {
+                t1 = tb;
+            }
         }
         (t0 <= t1).then_some(t0)
     }
 }
 
 /// Decodes child `k` of `node`, whose own box has minimum `lo`.
+#[inline]
 fn child_cells(node: &Node, k: usize, lo: [i32; 3]) -> Cells {
     let q = node.boxes[k];
     let at =
@@ -472,6 +484,7 @@ fn child_cells(node: &Node, k: usize, lo: [i32; 3]) -> Cells {
 }
 
 /// The triangle slots of a leaf reference: `first .. first + count`.
+#[inline]
 pub(crate) fn leaf_slots(child: u32) -> Option<core::ops::Range<usize>> {
     (child & LEAF_FLAG != 0).then(|| {
         let first = ((child & PAYLOAD) >> 2) as usize;
@@ -517,7 +530,7 @@ pub(crate) fn traverse<S: Scalar>(
         let Some(node) = nodes.get((e.child & PAYLOAD) as usize) else {
             return false;
         };
-        let mut near = [(0.0f64, 0usize); 4];
+        let mut near = [(0.0f64, 0usize, [0i32; 3]); 4];
         let mut n = 0;
         for k in 0..(node.count as usize).min(4) {
             let cells = child_cells(node, k, e.lo);
@@ -529,15 +542,15 @@ pub(crate) fn traverse<S: Scalar>(
                     near[at] = near[at - 1];
                     at -= 1;
                 }
-                near[at] = (t, k);
+                near[at] = (t, k, cells.0);
                 n += 1;
             }
         }
-        for &(t, k) in near[..n].iter().rev() {
+        for &(t, k, lo) in near[..n].iter().rev() {
             let entry = Entry {
                 enter: t,
                 child: node.children[k],
-                lo: child_cells(node, k, e.lo).0,
+                lo,
             };
             if stack.push(entry).is_err() {
                 return false;
