@@ -81,7 +81,10 @@ pub(crate) fn link_all<S: Scalar>(
     let mut start = 0;
     while start < records.len() {
         let key = records[start] >> 31;
-        let end = start + records[start..].partition_point(|r| r >> 31 == key);
+        let mut end = start + 1;
+        while end < records.len() && records[end] >> 31 == key {
+            end += 1;
+        }
         let run = &records[start..end];
         // Backward records (direction bit 0) sort before forward ones within a run.
         let split = run.partition_point(|r| (r >> SLOT_BITS) & 1 == 0);
