@@ -434,40 +434,50 @@ impl Segment {
         }
     }
 
-    /// Where the segment, over `[0, limit]`, enters the box grown by the pad and `2^class` seam
-    /// margins; `None` if it misses.
+    /// Where the segment, over `[0, limit]`, enters each of the four child boxes of `node` (whose
+    /// own minimum is `lo`), each grown by the pad and `2^class` seam margins of its child;
+    /// infinity where it misses. The four are computed side by side, lane by lane, so the
+    /// compiler can use vector registers; slots beyond `count` are computed and ignored.
     #[inline]
-    fn enter(&self, (lo, hi): Cells, class: u32, limit: f64) -> Option<f64> {
-        // 2^class, exactly.
-        let scale = f64::from_bits(((1023 + class.min(MAX_CLASS)) as u64) << 52);
-        let pad = self.pad + self.seam * scale;
-        let (mut t0, mut t1) = (0.0f64, limit);
-        for a in 0..3 {
-            let near = lo[a] as f64 - pad - self.q0[a];
-            let far = hi[a] as f64 + pad - self.q0[a];
+    fn enter4(&self, node: &Node, lo: [i32; 3], limit: f64) -> [f64; 4] {
+        let mut pad = [0.0f64; 4];
+        for (k, p) in pad.iter_mut().enumerate() {
+            let class = ((node.children[k] & !LEAF_FLAG) >> CLASS_SHIFT).min(MAX_CLASS);
+            // 2^class, exactly.
+            *p = self.pad + self.seam * f64::from_bits(((1023 + class) as u64) << 52);
+        }
+        let (mut t0, mut t1) = ([0.0f64; 4], [limit; 4]);
+        for (a, &base) in lo.iter().enumerate() {
+            let sh = node.shift[a].min(31) as u32;
+            let at = |v: u8| base.wrapping_add((v as i32).wrapping_shl(sh)) as f64;
+            let near: [f64; 4] =
+                core::array::from_fn(|k| at(node.boxes[k][a]) - pad[k] - self.q0[a]);
+            let far: [f64; 4] =
+                core::array::from_fn(|k| at(node.boxes[k][3 + a]) + pad[k] - self.q0[a]);
             let inv = self.inv[a];
             if !inv.is_finite() {
                 // Parallel to the slab (or as good as): inside it all along, or never.
                 let d = self.d[a].abs();
-                if near > d || far < -d {
-                    return None;
+                for k in 0..4 {
+                    if near[k] > d || far[k] < -d {
+                        t0[k] = f64::INFINITY;
+                    }
                 }
                 continue;
             }
-            let (ta, tb) = if inv > 0.0 {
-                (near * inv, far * inv)
-            } else {
-                (far * inv, near * inv)
-            };
-            // Plain comparisons: a NaN (never expected) would only widen the interval.
-            if ta > t0 {
-                t0 = ta;
-            }
-            if tb < t1 {
-                t1 = tb;
+            let (first, second) = if inv > 0.0 { (near, far) } else { (far, near) };
+            for k in 0..4 {
+                let (ta, tb) = (first[k] * inv, second[k] * inv);
+                // Plain comparisons: a NaN (never expected) would only widen the interval.
+                if ta > t0[k] {
+                    t0[k] = ta;
+                }
+                if tb < t1[k] {
+                    t1[k] = tb;
+                }
             }
         }
-        (t0 <= t1).then_some(t0)
+        core::array::from_fn(|k| if t0[k] <= t1[k] { t0[k] } else { f64::INFINITY })
     }
 }
 
@@ -530,19 +540,18 @@ pub(crate) fn traverse<S: Scalar>(
         let Some(node) = nodes.get((e.child & PAYLOAD) as usize) else {
             return false;
         };
+        let enter = seg.enter4(node, e.lo, lim);
         let mut near = [(0.0f64, 0usize, [0i32; 3]); 4];
         let mut n = 0;
-        for k in 0..(node.count as usize).min(4) {
-            let cells = child_cells(node, k, e.lo);
-            let class = (node.children[k] & !LEAF_FLAG) >> CLASS_SHIFT;
-            if let Some(t) = seg.enter(cells, class, lim) {
+        for (k, &t) in enter.iter().enumerate().take((node.count as usize).min(4)) {
+            if t <= lim {
                 // Insertion by entry, nearest first; equal entries keep child order.
                 let mut at = n;
                 while at > 0 && near[at - 1].0 > t {
                     near[at] = near[at - 1];
                     at -= 1;
                 }
-                near[at] = (t, k, cells.0);
+                near[at] = (t, k, child_cells(node, k, e.lo).0);
                 n += 1;
             }
         }

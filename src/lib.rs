@@ -29,6 +29,9 @@
 //!   [`StandardTriangle::face_collision`].
 //! - [`contact`] holds edge and vertex contacts, [`StandardTriangle::cast`] and [`Features`].
 //! - [`scene`] holds [`Scene`], many triangles with active edges from adjacency, and [`SceneHit`].
+//! - [`mesh`] holds [`Mesh`], a whole level's triangles behind a bounding volume hierarchy,
+//!   borrowed from flash, a caller's buffer or `Vec`s, answering exactly as a linear scan;
+//!   [`bvh`] holds its tree ([`Node`], [`Grid`]): layout, build and traversal.
 //! - [`slide`] holds [`move_and_slide`], the collision response, and [`Slide`].
 //! - [`mod@plan`] holds the precision planner: which scalars fit a scene, and their expected error.
 //! - [`interop`] holds conversions for the `mint`, `glam` and `serde` features.

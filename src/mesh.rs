@@ -1,4 +1,4 @@
-//! [`Mesh`]: many triangles behind a [`bvh`](crate::bvh), borrowed from wherever they live (a
+//! [`Mesh`]: many triangles behind a [`bvh`], borrowed from wherever they live (a
 //! `static` in flash, a caller's buffer, `Vec`s on a PC), answering exactly as a linear scan.
 
 use crate::adjacency::link_all;
@@ -11,7 +11,7 @@ use core::fmt;
 /// A triangle mesh with a bounding volume hierarchy, borrowing its parts.
 ///
 /// `triangles[s]` is the prepared form (with active edges) of input triangle `order[s]`, in the
-/// tree's leaf order; `nodes` and `grid` are the [`bvh`](crate::bvh). [`Mesh::build`] makes the
+/// tree's leaf order; `nodes` and `grid` are the [`bvh`]. [`Mesh::build`] makes the
 /// parts from a triangle list into caller-provided slices; [`Mesh::from_parts`] (a `const fn`)
 /// takes baked ones. The answer of [`cast`](Mesh::cast) is, bit for bit, the one a linear scan of
 /// the same prepared triangles in input order gives (the slice [`Geometry`]), including merged
