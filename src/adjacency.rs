@@ -66,10 +66,11 @@ pub(crate) fn link_all<S: Scalar>(
     let mut used = 0;
     for (c, slots) in records.chunks_exact_mut(3).take(n).enumerate() {
         let Some(v) = vertices(c) else { return };
+        let h = v.map(hash);
         for (e, slot) in slots.iter_mut().enumerate() {
             let (a, b) = (v[e], v[(e + 1) % 3]);
             let forward = lexical(a, b) == Ordering::Less;
-            let (ha, hb) = (hash(a), hash(b));
+            let (ha, hb) = (h[e], h[(e + 1) % 3]);
             let key = mix(ha.min(hb) ^ mix(ha.max(hb))) >> (64 - 33);
             *slot = key << 31 | (forward as u64) << SLOT_BITS | (c * 3 + e) as u64;
         }
