@@ -44,8 +44,10 @@ const SLOT_BITS: u32 = 30;
 /// `triangles[c]` is the prepared form of `sources[order[c]]`, `c` increasing with input order;
 /// `records` holds at least `6 * triangles.len()` words (records and the radix sort's other
 /// buffer), and `triangles.len() <= 2^28`.
-/// A record is a 33-bit hash of the edge's unordered vertex pair, one bit for its direction and
-/// the edge's slot; records with equal hashes are adjacent once sorted, and only the pairs of
+/// `region` gives a 12-bit cell of a vertex (the key's top bits: nearby edges sort together, which
+/// keeps the triangles they touch in the cache). A record is the region of the edge's first
+/// vertex and a 21-bit hash of its unordered vertex pair, one bit for its direction and
+/// the edge's slot; records with equal keys are adjacent once sorted, and only the pairs of
 /// opposite direction within such a run are compared, exactly. P counts those pairs: one per
 /// shared edge in a manifold mesh; `k * m` where `k` triangles run one way along an edge and `m`
 /// the other (identical copies of a triangle add none).
@@ -54,6 +56,7 @@ pub(crate) fn link_all<S: Scalar>(
     order: &[u32],
     triangles: &mut [StandardTriangle<S>],
     records: &mut [u64],
+    region: impl Fn(Vec3<S>) -> u64,
 ) {
     let n = triangles.len().min(order.len());
     let vertices = |c: usize| {
@@ -71,7 +74,11 @@ pub(crate) fn link_all<S: Scalar>(
             let (a, b) = (v[e], v[(e + 1) % 3]);
             let forward = lexical(a, b) == Ordering::Less;
             let (ha, hb) = (h[e], h[(e + 1) % 3]);
-            let key = mix(ha.min(hb) ^ mix(ha.max(hb))) >> (64 - 33);
+            // The region of the edge's first vertex (in x, y, z order) above a 21-bit hash: edges
+            // meet in sorted order region by region, so their triangles are still in the cache.
+            let first = if forward { a } else { b };
+            let hash = mix(ha.min(hb) ^ mix(ha.max(hb))) >> (64 - 21);
+            let key = (region(first) & 0xfff) << 21 | hash;
             *slot = key << 31 | (forward as u64) << SLOT_BITS | (c * 3 + e) as u64;
         }
         used += 3;

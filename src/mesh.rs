@@ -198,8 +198,6 @@ impl<'a, S: Scalar> Mesh<'a, S> {
             return Err(e);
         }
         let (triangles, order) = (&mut triangles[..kept], &mut order[..kept]);
-        link_all(sources, order, triangles, &mut scratch[..6 * kept]);
-
         // The grid, from the kept triangles' world bounds.
         let corners = |c: usize| {
             sources[order[c] as usize]
@@ -220,6 +218,17 @@ impl<'a, S: Scalar> Mesh<'a, S> {
             }
         }
         let largest = (0..3).fold(0.0f64, |m, a| m.max(wlo[a].abs()).max(whi[a].abs()));
+        // Active edges, visited region by region: 16 regions per axis over the bounds' cube.
+        let side = (0..3).fold(0.0f64, |m, a| m.max(whi[a] - wlo[a]));
+        let region = |p: Vec3<S>| {
+            let q = p.to_array().map(S::to_f64);
+            let r = [0, 1, 2].map(|a| {
+                let t = (q[a] - wlo[a]) / side * 16.0;
+                if t >= 0.0 { (t as u64).min(15) } else { 0 }
+            });
+            bvh::morton(r)
+        };
+        link_all(sources, order, triangles, &mut scratch[..6 * kept], region);
         let exponent = Grid::exponent_for(largest);
         let (lo, hi) = if kept == 0 {
             ([0; 3], [0; 3])
