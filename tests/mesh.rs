@@ -462,6 +462,28 @@ fn sliver_seam_beyond_its_corner<S: Scalar>() {
     assert_eq!(owned.mesh().cast(&sweep), want);
 }
 
+/// `Mesh::verify`, the check for baked parts: a mesh from `from_parts` passes against its
+/// triangles, and fails once a triangle or the sidedness of the input differs.
+fn verify_baked_parts<S: Scalar>() {
+    let mut rng = Rng(0x5eed_0009);
+    let src = heightfield(&mut rng, 6, 1.0, 0.65);
+    let mut input: Vec<Triangle<S>> = src.iter().map(|&t| tri(t)).collect();
+    let owned = build(&input, Degenerates::Refuse).unwrap();
+    let n = input.len();
+    let verify = |input: &[Triangle<S>]| {
+        let mut nodes = vec![Node::default(); nodes_for(n)];
+        let mut tris = vec![Mesh::<S>::filler(); n];
+        let mut order = vec![0u32; n];
+        let mut scratch = vec![0u64; 6 * n];
+        let deg = Degenerates::Refuse;
+        let mesh = owned.mesh();
+        mesh.verify(input, deg, &mut nodes, &mut tris, &mut order, &mut scratch)
+    };
+    assert_eq!(verify(&input), Ok(()));
+    input[3].v1.y = input[3].v1.y + S::from_f64(0.25);
+    assert_eq!(verify(&input), Err(MeshError::Mismatch));
+}
+
 macro_rules! per_scalar {
     ($($test:ident $(#[$attr:meta])*),* $(,)?) => {$(
         mod $test {
@@ -498,5 +520,6 @@ per_scalar!(
     errors_not_panics,
     slides_as_linear,
     sliver_seam_beyond_its_corner,
+    verify_baked_parts,
     matches_linear_scan_long #[ignore = "10^5 sweeps per scalar: run with --release -- --ignored"],
 );
