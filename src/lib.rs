@@ -31,7 +31,8 @@
 //! - [`scene`] holds [`Scene`], many triangles with active edges from adjacency, and [`SceneHit`].
 //! - [`mesh`] holds [`Mesh`], a whole level's triangles behind a bounding volume hierarchy,
 //!   borrowed from flash, a caller's buffer or `Vec`s, answering exactly as a linear scan;
-//!   [`bvh`] holds its tree ([`Node`], [`Grid`]): layout, build and traversal.
+//!   [`bvh`] holds its tree ([`Node`], [`Grid`]): layout, build and traversal. With the `alloc`
+//!   feature, `mesh_buf` holds `MeshBuf`, a mesh owning its parts in `Vec`s.
 //! - [`slide`] holds [`move_and_slide`], the collision response, and [`Slide`].
 //! - [`mod@plan`] holds the precision planner: which scalars fit a scene, and their expected error.
 //! - [`interop`] holds conversions for the `mint`, `glam` and `serde` features.
@@ -55,6 +56,9 @@
 #![forbid(unsafe_code)]
 #![deny(missing_docs)]
 
+#[cfg(feature = "alloc")]
+extern crate alloc;
+
 mod adjacency;
 pub mod bvh;
 mod check;
@@ -65,6 +69,8 @@ pub mod hit;
 pub mod interop;
 mod merge;
 pub mod mesh;
+#[cfg(feature = "alloc")]
+pub mod mesh_buf;
 pub mod plan;
 mod radix;
 pub mod scalar;
@@ -81,6 +87,8 @@ pub use face::standard_face;
 pub use hit::{Contact, Hit};
 pub use merge::PLANES;
 pub use mesh::{Buffer, Degenerates, Mesh, MeshError};
+#[cfg(feature = "alloc")]
+pub use mesh_buf::MeshBuf;
 pub use plan::{Precision, Verdict, plan};
 pub use scalar::Scalar;
 pub use scene::{Geometry, Scene, SceneHit};
