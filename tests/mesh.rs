@@ -344,3 +344,79 @@ per_scalar!(
     verify_baked_parts,
     matches_linear_scan_long #[ignore = "10^5 sweeps per scalar: run with --release -- --ignored"],
 );
+
+/// A mesh baked into `static`s through the `const` constructors (here one floor triangle, its
+/// parts written out by hand) equals the run-time build and verifies against its source.
+mod baked {
+    use ballcast::{Edge, Grid, Mesh, Node, Parts, StandardTriangle, Vec3};
+
+    const H: f32 = core::f32::consts::FRAC_1_SQRT_2;
+    static TRIANGLES: [StandardTriangle<f32>; 1] = [StandardTriangle::from_parts(Parts {
+        origin: Vec3::new(0.0, 0.0, 0.0),
+        axes: [
+            Vec3::new(1.0, 0.0, 0.0),
+            Vec3::new(0.0, 1.0, 0.0),
+            Vec3::new(0.0, 0.0, 1.0),
+        ],
+        shape: [0.0, 1.0, 1.0],
+        normal: Vec3::new(0.0, 1.0, 0.0),
+        edges: [
+            Edge {
+                dir: [0.0, 1.0],
+                len: 1.0,
+            },
+            Edge {
+                dir: [H, -H],
+                len: core::f32::consts::SQRT_2,
+            },
+            Edge {
+                dir: [-1.0, 0.0],
+                len: 1.0,
+            },
+        ],
+        features: 0b11_1111,
+        two_sided: false,
+    })];
+    static ORDER: [u32; 1] = [0];
+    // The grid: cells of 2^-23 units; the triangle's box grown by a cell; one leaf of one triangle.
+    static NODES: [Node; 1] = [Node {
+        boxes: [[0, 0, 0, 129, 2, 129], [0; 6], [0; 6], [0; 6]],
+        shift: [16, 0, 16],
+        count: 1,
+        children: [1 << 31, 0, 0, 0],
+    }];
+    static MESH: Mesh<'static, f32> = Mesh::from_parts(
+        &NODES,
+        &TRIANGLES,
+        &ORDER,
+        Grid {
+            exponent: -23,
+            lo: [-1, -1, -1],
+            hi: [8_388_609, 1, 8_388_609],
+        },
+    );
+
+    #[test]
+    fn static_mesh_equals_the_build() {
+        let v = Vec3::new;
+        let source = [ballcast::Triangle::new(
+            v(0.0f32, 0.0, 0.0),
+            v(0.0, 0.0, 1.0),
+            v(1.0, 0.0, 0.0),
+        )];
+        let built = super::build(&source, ballcast::Degenerates::Refuse).unwrap();
+        assert_eq!(built.mesh(), MESH);
+        let (mut nodes, mut tris) = ([Node::default(); 1], [Mesh::<f32>::filler(); 1]);
+        let (mut order, mut scratch) = ([0u32; 1], [0u64; 6]);
+        let deg = ballcast::Degenerates::Refuse;
+        let checked = MESH.verify(
+            &source,
+            deg,
+            &mut nodes,
+            &mut tris,
+            &mut order,
+            &mut scratch,
+        );
+        assert_eq!(checked, Ok(()));
+    }
+}
