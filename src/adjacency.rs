@@ -1,5 +1,5 @@
 //! Active edges from adjacency: the one rule [`Scene`](crate::Scene) and [`Mesh`](crate::Mesh)
-//! both apply, and the sort that finds a mesh's shared edges in O(N log N).
+//! both apply, and the sort that finds a mesh's shared edges in `O(N)` (a radix sort).
 //!
 //! An edge shared by two triangles with opposite winding (same two vertices, bit for bit) is
 //! switched off in both when the surface continues flat there (front normals within 1/1024 per
@@ -39,7 +39,7 @@ pub(crate) fn deactivate<S: Scalar>(tri: &mut StandardTriangle<S>, edge: usize) 
 const SLOT_BITS: u32 = 30;
 
 /// Applies [`hides`] to every pair of triangles sharing an edge with opposite winding, as
-/// [`Scene`](crate::Scene) does pair by pair, in O(N log N + P): one record per edge, sorted.
+/// [`Scene`](crate::Scene) does pair by pair, in `O(N + P)`: one record per edge, radix-sorted.
 ///
 /// `triangles[c]` is the prepared form of `sources[order[c]]`, `c` increasing with input order;
 /// `records` holds at least `6 * triangles.len()` words (records and the radix sort's other
