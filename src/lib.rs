@@ -62,6 +62,10 @@
 //!   [`StandardTriangle::face_collision`].
 //! - [`contact`] holds edge and vertex contacts, [`StandardTriangle::cast`] and [`Features`].
 //! - [`scene`] holds [`Scene`], many triangles with active edges from adjacency, and [`SceneHit`].
+//! - [`mesh`] holds [`Mesh`], a whole level's triangles behind a bounding volume hierarchy,
+//!   borrowed from flash, a caller's buffer or `Vec`s, answering exactly as a linear scan;
+//!   [`bvh`] holds its tree ([`Node`], [`Grid`]): layout, build and traversal. With the `alloc`
+//!   feature, `mesh_buf` holds `MeshBuf`, a mesh owning its parts in `Vec`s.
 //! - [`slide`] holds [`move_and_slide`], the collision response (Quake's fly-move, constrained
 //!   by every plane touched), [`Slide`], and the [`skin`](slide::skin) and
 //!   [`min_radius`](slide::min_radius) it works with.
@@ -87,6 +91,11 @@
 #![forbid(unsafe_code)]
 #![deny(missing_docs)]
 
+#[cfg(feature = "alloc")]
+extern crate alloc;
+
+mod adjacency;
+pub mod bvh;
 mod check;
 pub mod contact;
 mod cover;
@@ -95,7 +104,11 @@ pub mod face;
 pub mod hit;
 pub mod interop;
 mod merge;
+pub mod mesh;
+#[cfg(feature = "alloc")]
+pub mod mesh_buf;
 pub mod plan;
+mod radix;
 mod reject;
 pub mod scalar;
 pub mod scene;
@@ -104,11 +117,15 @@ pub mod sweep;
 pub mod triangle;
 pub mod vec3;
 
+pub use bvh::{Grid, Node};
 pub use contact::Features;
 pub use error::Error;
 pub use face::standard_face;
 pub use hit::{Contact, Hit};
 pub use merge::PLANES;
+pub use mesh::{Buffer, Degenerates, Mesh, MeshError};
+#[cfg(feature = "alloc")]
+pub use mesh_buf::MeshBuf;
 pub use plan::{Precision, Verdict, plan};
 pub use scalar::Scalar;
 pub use scene::{Geometry, Scene, SceneHit};

@@ -1,6 +1,7 @@
 //! Many triangles at once: [`Scene`], a fixed-capacity set of prepared triangles with active
 //! edges computed from adjacency, and its earliest-contact query.
 
+use crate::adjacency::{deactivate, hides};
 use crate::cover::{covered, interval};
 use crate::merge::{PLANES, earliest};
 use crate::{Contact, Error, Scalar, StandardTriangle, Sweep, Triangle, Vec3};
@@ -179,7 +180,7 @@ impl<S: Scalar, const N: usize> Scene<S, N> {
                     j == t || (0..3).any(|e| interval(tj, k, tt, (v[e], v[(e + 1) % 3])).is_some());
                 let all = self.triangles.iter().zip(self.sources.iter());
                 if near && covered(tj, k, all) {
-                    self.deactivate(j, k);
+                    deactivate(&mut self.triangles[j], k);
                 }
             }
         }
@@ -191,33 +192,12 @@ impl<S: Scalar, const N: usize> Scene<S, N> {
         for i in 0..3 {
             for j in 0..3 {
                 let shared = ta[i] == tb[(j + 1) % 3] && ta[(i + 1) % 3] == tb[j];
-                if shared && self.hides(a, b, tb[(j + 2) % 3]) {
-                    self.deactivate(a, i);
-                    self.deactivate(b, j);
+                if shared && hides(&self.triangles[a], &self.triangles[b], tb[(j + 2) % 3]) {
+                    deactivate(&mut self.triangles[a], i);
+                    deactivate(&mut self.triangles[b], j);
                 }
             }
         }
-    }
-
-    /// Whether, across an edge shared by triangles `a` and `b` (whose vertex off the edge is
-    /// `apex`), the surface continues flat or folds towards the front of both.
-    fn hides(&self, a: usize, b: usize, apex: Vec3<S>) -> bool {
-        let (ta, tb) = (&self.triangles[a], &self.triangles[b]);
-        let diff = ta.normal() - tb.normal();
-        let tol = S::from_f64(1.0 / 1024.0);
-        let flat = diff.x.abs() <= tol && diff.y.abs() <= tol && diff.z.abs() <= tol;
-        let one_sided = !ta.is_two_sided() && !tb.is_two_sided();
-        // `apex` lies in range (it was validated), so `to_standard` cannot fail.
-        let valley = ta.to_standard(apex).is_ok_and(|p| p.y > S::ZERO);
-        flat || (one_sided && valley)
-    }
-
-    fn deactivate(&mut self, t: usize, edge: usize) {
-        let tri = &mut self.triangles[t];
-        let f = tri.features().with_edge(edge, false);
-        // A vertex stays active while either of this triangle's edges through it is.
-        let f = (0..3).fold(f, |f, v| f.with_vertex(v, f.edge(v) || f.edge((v + 2) % 3)));
-        *tri = tri.with_features(f);
     }
 
     /// The earliest contact of the sweep with any triangle, or `None`.

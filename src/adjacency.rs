@@ -1,0 +1,162 @@
+//! Active edges from adjacency: the one rule [`Scene`](crate::Scene) and [`Mesh`](crate::Mesh)
+//! both apply, and the sort that finds a mesh's shared edges in `O(N)` (a radix sort).
+//!
+//! An edge shared by two triangles with opposite winding (same two vertices, bit for bit) is
+//! switched off in both when the surface continues flat there (front normals within 1/1024 per
+//! component) or, for one-sided triangles, folds towards the front (a valley: the neighbour's far
+//! vertex lies in front of the triangle's plane). Ridges and open edges stay active. A vertex stays
+//! active while one of the triangle's two edges through it does. These are Jolt's *active edges*
+//! (`Jolt/Geometry/ActiveEdges.h`), decided here by exact comparisons in the scalar.
+
+use crate::{Scalar, StandardTriangle, Triangle, Vec3};
+use core::cmp::Ordering;
+
+/// Whether, across an edge shared by triangles `a` and `b` (whose vertex off the edge is `apex`),
+/// the surface continues flat or folds towards the front of both. `a` is the later of the two in
+/// input order: the valley test runs in its frame.
+pub(crate) fn hides<S: Scalar>(
+    ta: &StandardTriangle<S>,
+    tb: &StandardTriangle<S>,
+    apex: Vec3<S>,
+) -> bool {
+    let diff = ta.normal() - tb.normal();
+    let tol = S::div_pow2(S::ONE, 10);
+    let flat = diff.x.abs() <= tol && diff.y.abs() <= tol && diff.z.abs() <= tol;
+    let one_sided = !ta.is_two_sided() && !tb.is_two_sided();
+    // `apex` lies in range (it was validated), so `to_standard` cannot fail.
+    let valley = ta.to_standard(apex).is_ok_and(|p| p.y > S::ZERO);
+    flat || (one_sided && valley)
+}
+
+/// Switches off `edge` of `tri`; a vertex stays active while either of its edges through it is.
+pub(crate) fn deactivate<S: Scalar>(tri: &mut StandardTriangle<S>, edge: usize) {
+    let f = tri.features().with_edge(edge, false);
+    let f = (0..3).fold(f, |f, v| f.with_vertex(v, f.edge(v) || f.edge((v + 2) % 3)));
+    *tri = tri.with_features(f);
+}
+
+/// Bits of a record holding `triangle * 3 + edge`: room for 2^28 triangles.
+const SLOT_BITS: u32 = 30;
+
+/// Applies [`hides`] to every pair of triangles sharing an edge with opposite winding, as
+/// [`Scene`](crate::Scene) does pair by pair, in `O(N + P)`: one record per edge, radix-sorted.
+///
+/// `triangles[c]` is the prepared form of `sources[order[c]]`, `c` increasing with input order;
+/// `records` holds at least `6 * triangles.len()` words (records and the radix sort's other
+/// buffer), and `triangles.len() <= 2^28`.
+/// `region` gives a 12-bit cell of a vertex (the key's top bits: nearby edges sort together, which
+/// keeps the triangles they touch in the cache). A record is the region of the edge's first
+/// vertex and a 21-bit hash of its unordered vertex pair, one bit for its direction and
+/// the edge's slot; records with equal keys are adjacent once sorted, and only the pairs of
+/// opposite direction within such a run are compared, exactly. P counts those pairs: one per
+/// shared edge in a manifold mesh; `k * m` where `k` triangles run one way along an edge and `m`
+/// the other (identical copies of a triangle add none).
+pub(crate) fn link_all<S: Scalar>(
+    sources: &[Triangle<S>],
+    order: &[u32],
+    triangles: &mut [StandardTriangle<S>],
+    records: &mut [u64],
+    region: impl Fn(Vec3<S>) -> u64,
+) {
+    let n = triangles.len().min(order.len());
+    let vertices = |c: usize| {
+        order
+            .get(c)
+            .and_then(|&i| sources.get(i as usize))
+            .map(Triangle::vertices)
+    };
+    let (records, temp) = records.split_at_mut(records.len().min(3 * n));
+    let mut used = 0;
+    for (c, slots) in records.chunks_exact_mut(3).take(n).enumerate() {
+        let Some(v) = vertices(c) else { return };
+        let h = v.map(hash);
+        for (e, slot) in slots.iter_mut().enumerate() {
+            let (a, b) = (v[e], v[(e + 1) % 3]);
+            let forward = lexical(a, b) == Ordering::Less;
+            let (ha, hb) = (h[e], h[(e + 1) % 3]);
+            // The region of the edge's first vertex (in x, y, z order) above a 21-bit hash: edges
+            // meet in sorted order region by region, so their triangles are still in the cache.
+            let first = if forward { a } else { b };
+            let hash = mix(ha.min(hb) ^ mix(ha.max(hb))) >> (64 - 21);
+            let key = (region(first) & 0xfff) << 21 | hash;
+            *slot = key << 31 | (forward as u64) << SLOT_BITS | (c * 3 + e) as u64;
+        }
+        used += 3;
+    }
+    let records = &mut records[..used];
+    // Records are made in slot order, so a stable sort on the hash and direction sorts them fully.
+    crate::radix::sort(records, temp, SLOT_BITS, 64);
+    let mut start = 0;
+    while start < records.len() {
+        let key = records[start] >> 31;
+        let mut end = start + 1;
+        while end < records.len() && records[end] >> 31 == key {
+            end += 1;
+        }
+        let run = &records[start..end];
+        // Backward records (direction bit 0) sort before forward ones within a run.
+        let split = run.partition_point(|r| (r >> SLOT_BITS) & 1 == 0);
+        for &x in &run[..split] {
+            for &y in &run[split..] {
+                link(sources, order, triangles, x, y);
+            }
+        }
+        start = end;
+    }
+}
+
+/// Compares the edges in records `x` and `y` exactly and deactivates them where one hides the other.
+fn link<S: Scalar>(
+    sources: &[Triangle<S>],
+    order: &[u32],
+    triangles: &mut [StandardTriangle<S>],
+    x: u64,
+    y: u64,
+) {
+    let slot = |r: u64| (r & ((1 << SLOT_BITS) - 1)) as usize;
+    let (sx, sy) = (slot(x), slot(y));
+    // `a` is the later triangle, as in `Scene::push`.
+    let ((a, i), (b, j)) = if sx > sy {
+        ((sx / 3, sx % 3), (sy / 3, sy % 3))
+    } else {
+        ((sy / 3, sy % 3), (sx / 3, sx % 3))
+    };
+    let vertices = |c: usize| {
+        order
+            .get(c)
+            .and_then(|&k| sources.get(k as usize))
+            .map(Triangle::vertices)
+    };
+    let (Some(ta), Some(tb)) = (vertices(a), vertices(b)) else {
+        return;
+    };
+    if a == b || ta[i] != tb[(j + 1) % 3] || ta[(i + 1) % 3] != tb[j] {
+        return;
+    }
+    let (Some(pa), Some(pb)) = (triangles.get(a), triangles.get(b)) else {
+        return;
+    };
+    if hides(pa, pb, tb[(j + 2) % 3]) {
+        deactivate(&mut triangles[a], i);
+        deactivate(&mut triangles[b], j);
+    }
+}
+
+/// Orders points by x, then y, then z (validated, so never NaN).
+fn lexical<S: Scalar>(a: Vec3<S>, b: Vec3<S>) -> Ordering {
+    let c = |p: S, q: S| p.partial_cmp(&q).unwrap_or(Ordering::Equal);
+    c(a.x, b.x).then(c(a.y, b.y)).then(c(a.z, b.z))
+}
+
+/// A hash of a point's exact value: equal points (`-0.0 == 0.0` included) hash equal.
+fn hash<S: Scalar>(p: Vec3<S>) -> u64 {
+    let bits = |s: S| (s.to_f64() + 0.0).to_bits();
+    mix(bits(p.x) ^ mix(bits(p.y) ^ mix(bits(p.z))))
+}
+
+/// SplitMix64's finaliser (Steele, Lea and Flood, 2014): a fixed, portable bit mixer.
+fn mix(mut z: u64) -> u64 {
+    z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
+    z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
+    z ^ (z >> 31)
+}

@@ -1,0 +1,190 @@
+//! A bounding volume hierarchy over a mesh's triangles: 4-wide nodes with child boxes quantized
+//! to bytes on an integer grid, built by object-median splits, traversed nearest child first
+//! by a ball's swept segment.
+//!
+//! # Layout
+//! Every box lives on one integer grid per mesh ([`Grid`]): a cell is `2^exponent` units, chosen
+//! so the largest coordinate spans at most 2^24 cells, and a triangle's box is its vertices'
+//! box rounded outward (down for minima, up for maxima) and grown by one cell. A [`Node`]
+//! (44 bytes) holds up to four children; each child's box is stored in six bytes relative to
+//! the node's own box, in steps of `2^shift` cells per axis, minima rounded down and maxima up,
+//! so a decoded box always contains what it stands for. Rounding outward on purpose is Jolt's
+//! (`Jolt/AABBTree/NodeCodec/NodeCodecQuadTreeHalfFloat.h` stores four child boxes per 64-byte
+//! node as half floats, minima rounded towards −∞ and maxima towards +∞); bytes relative to the
+//! parent are the compressed wide BVH's (Ylitie, Karras and Laine, *Efficient incoherent ray
+//! traversal on GPUs through compressed wide BVHs*, HPG 2017). Here the arithmetic is integer,
+//! so decoding is exact and the same on every target. A leaf is a run of at most [`LEAF`]
+//! consecutive triangles, referenced from its parent's child slot, whose top bits also carry the
+//! subtree's *seam class* (below). A node costs 44 bytes per about 12 triangles: 3.7 bytes per
+//! triangle, in every scalar.
+//!
+//! # Build
+//! The triangles are put in Morton order of their box centres (13 bits per axis, one scale for
+//! all three so a flat terrain's few height levels do not scatter it; ties by index), by one
+//! stable radix sort, as linear BVH builders do (Lauterbach et al., *Fast BVH construction on
+//! GPUs*, 2009; Karras, *Maximizing parallelism in the construction of BVHs, octrees, and k-d
+//! trees*, HPG 2012). Then top down, a node's run of triangles is cut into up to four runs, each
+//! (but the last) as long as a complete subtree one level down holds, so leaves are full and a
+//! node is shared by about `3 LEAF` triangles (Jolt's `AABBTreeBuilder` likewise gathers a binary
+//! tree's descendants into quad-tree nodes). Each level costs one pass to bound the
+//! children, so the build takes `O(N log N)` (the sort is `O(N)`), and the depth is at most
+//! `log4(N / LEAF) + 1`, which bounds the traversal stack. Keys and boxes are integers, so every
+//! decision is exact: the same triangles in the same order give the same nodes, byte for byte,
+//! on every target. Cuts by count in Morton order give up some of the quality of binned SAH
+//! (Wald, *On fast construction of SAH-based bounding volume hierarchies*, 2007, as tinybvh
+//! builds) for a guaranteed depth and a build several times faster; on a terrain, whose
+//! triangles are alike and spread evenly, they lose little.
+//!
+//! # Traversal
+//! The segment from `p0` to `p1` is taken to grid units in `f64` once per query, with the
+//! reciprocal of its direction; each child box is decoded, grown, and clipped against the
+//! segment with the slab test (Kay and Kajiya, 1986), so no node needs a division. Children are
+//! pushed farthest first, so the nearest is visited first, and a subtree is skipped when the
+//! segment enters its box after the reach of the contacts found so far (the earliest alpha plus
+//! the tie window).
+//!
+//! Culling is conservative: a box is grown by `r`, by a bound on every rounding between the
+//! exact segment and what [`StandardTriangle::cast`](crate::StandardTriangle::cast) computes —
+//! `64 EPSILON` per unit of the path's length and of the coordinates' magnitude (floats;
+//! `1/1024` of that for fixed point, whose frames round to 30 or 62 fractional bits), `64
+//! EPSILON` absolute, `2^-40` of the magnitudes for the `f64` arithmetic here, two grid cells —
+//! and by `2^c` seam margins `r / 64 + 4 EPSILON`. The face test moves a triangle's inactive
+//! edges out by one seam margin, so it reaches beyond the triangle by up to `1 / sin(θ/2)`
+//! margins at a corner of angle θ (`1 / sin θ` where only one of the corner's edges moved): far,
+//! for a sliver. Each child carries the class `c` of its subtree, with `2^c` at least twice the
+//! worst such factor of its triangles (zero when all edges are active). The rounding bounds are
+//! several times the largest rounding the contact tests can make, so a triangle whose `cast`
+//! reports a contact within reach is never skipped and the answer is the linear scan's, bit for
+//! bit (`tests/mesh.rs` checks it on 10^5 sweeps per scalar).
+
+mod build;
+mod traverse;
+
+pub use build::nodes_for;
+pub(crate) use build::{BuildError, MORTON_BITS, build, item, item_index, morton};
+pub(crate) use traverse::{Segment, traverse};
+
+/// Most triangles in a leaf.
+pub const LEAF: usize = 4;
+/// Deepest tree the traversal's stack is sized for: `log4(2^24 / LEAF) + 1 = 12` levels suffice
+/// for the largest mesh the build accepts.
+pub const MAX_DEPTH: usize = 16;
+/// Entries of the traversal stack: three siblings wait per level, plus the root.
+const STACK: usize = 3 * MAX_DEPTH + 4;
+
+/// A child reference with this bit set is a leaf: `first << 2 | (count - 1)`.
+const LEAF_FLAG: u32 = 1 << 31;
+/// Bits 26 to 30 of a child reference: its subtree's [`seam_class`].
+const CLASS_SHIFT: u32 = 26;
+/// The payload of a child reference: a node index, or a leaf's `first << 2 | (count - 1)`.
+const PAYLOAD: u32 = (1 << CLASS_SHIFT) - 1;
+/// The most triangles a tree takes (leaf references hold `first` in 24 bits).
+pub const MAX_TRIANGLES: usize = 1 << 24;
+/// The largest seam class: boxes grown by `2^31` seam margins, reached by every query.
+const MAX_CLASS: u32 = 31;
+
+/// How far beyond its triangle a face contact of `cast` can lie, in units of the seam margin
+/// `r / 64 + 4 EPSILON` by which inactive edges are moved out: the class `c` with
+/// `2^c >= 2 F`, where `F` is the largest displacement of a corner when the edges of the
+/// standardized triangle `(0, 0)`, `(x1, z1)`, `(x2, 0)` are moved out by one unit: `1 / sin(θ/2)`
+/// where both edges at a corner of angle θ move, `1 / sin θ` where one does. The factor 2 covers
+/// the rounding of the frame. Zero when every edge is active (no margin), [`MAX_CLASS`] for a
+/// sliver too thin to tell.
+pub(crate) fn seam_class(all_active: bool, [x1, z1, x2]: [f64; 3]) -> u32 {
+    if all_active {
+        return 0;
+    }
+    let corners = [(0.0, 0.0), (x1, z1), (x2, 0.0)];
+    let mut worst = 1.0f64;
+    for k in 0..3 {
+        let (o, a, b) = (corners[k], corners[(k + 1) % 3], corners[(k + 2) % 3]);
+        let (ux, uz) = (a.0 - o.0, a.1 - o.1);
+        let (vx, vz) = (b.0 - o.0, b.1 - o.1);
+        let len = |x: f64, z: f64| libm::sqrt(x * x + z * z);
+        let (lu, lv) = (len(ux, uz), len(vx, vz));
+        let sin = (ux * vz - uz * vx).abs() / (lu * lv);
+        // sin(θ/2) is half the chord between the two unit directions.
+        let half = len(ux / lu - vx / lv, uz / lu - vz / lv) / 2.0;
+        worst = worst.max(1.0 / sin).max(1.0 / half);
+    }
+    let f = 2.0 * worst;
+    // NaN (a zero angle) lands here too.
+    if f.is_nan() || f >= (1u64 << MAX_CLASS) as f64 {
+        return MAX_CLASS;
+    }
+    let mut c = 0;
+    while ((1u64 << c) as f64) < f {
+        c += 1;
+    }
+    c
+}
+
+/// A 4-wide node: child boxes quantized to bytes relative to this node's own box.
+///
+/// Child `k < count` has the box `lo + (boxes[k][a] << shift[a])` to
+/// `lo + (boxes[k][3 + a] << shift[a])` per axis `a`, in grid cells, where `lo` is the node's
+/// box's minimum (known from its parent, or [`Grid`] for the root). `children[k]` is a node
+/// index, or with the top bit set a leaf: `first << 2 | (count - 1)` over the mesh's triangle
+/// slots `first .. first + count`.
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct Node {
+    /// Per child: minimum x, y, z, then maximum x, y, z, in steps of `2^shift`.
+    pub boxes: [[u8; 6]; 4],
+    /// Per axis: the step of the quantized boxes, `2^shift` grid cells.
+    pub shift: [u8; 3],
+    /// Children in use, 1 to 4.
+    pub count: u8,
+    /// Per child: a node index, or a leaf (top bit set).
+    pub children: [u32; 4],
+}
+
+const _: () = assert!(core::mem::size_of::<Node>() == 44);
+
+/// The integer grid of a mesh's boxes and the root's box on it.
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct Grid {
+    /// A cell is `2^exponent` units of length.
+    pub exponent: i32,
+    /// The root box's minimum, in cells.
+    pub lo: [i32; 3],
+    /// The root box's maximum, in cells.
+    pub hi: [i32; 3],
+}
+
+/// An axis-aligned box in grid cells.
+pub(crate) type Cells = ([i32; 3], [i32; 3]);
+
+impl Grid {
+    /// `2^-exponent`: world units to cells (exact, a power of two).
+    pub(crate) fn scale(exponent: i32) -> f64 {
+        f64::from_bits(((1023 - exponent.clamp(-1000, 1000)) as u64) << 52)
+    }
+
+    /// The exponent for coordinates up to `largest` in magnitude: at most 2^24 cells from the
+    /// origin, clamped so scaled coordinates stay normal `f64` numbers.
+    pub(crate) fn exponent_for(largest: f64) -> i32 {
+        let e = ((largest.to_bits() >> 52) & 0x7ff) as i32 - 1023;
+        (e + 1 - 24).clamp(-900, 1000)
+    }
+
+    /// The cells of the box from `min` to `max` (world units, `min <= max`), rounded outward
+    /// and grown by one cell.
+    pub(crate) fn cells(exponent: i32, min: [f64; 3], max: [f64; 3]) -> Cells {
+        let s = Self::scale(exponent);
+        (min.map(|v| floor(v * s) - 1), max.map(|v| ceil(v * s) + 1))
+    }
+}
+
+/// The largest integer not above `v`, for `|v| < 2^30` (exact: no rounding mode involved).
+fn floor(v: f64) -> i32 {
+    let t = v as i32;
+    if (t as f64) > v { t - 1 } else { t }
+}
+
+/// The smallest integer not below `v`, for `|v| < 2^30`.
+fn ceil(v: f64) -> i32 {
+    let t = v as i32;
+    if (t as f64) < v { t + 1 } else { t }
+}

@@ -1,0 +1,200 @@
+//! The build: Morton-ordered items cut into complete 4-wide subtrees (see the module docs of
+//! [`bvh`](super)).
+
+use super::{CLASS_SHIFT, Cells, LEAF, LEAF_FLAG, MAX_CLASS, MAX_DEPTH, Node, STACK};
+
+/// Why a tree could not be built.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum BuildError {
+    /// The node slice holds fewer than this many nodes.
+    Nodes(usize),
+    /// Deeper than [`MAX_DEPTH`] (cannot happen below [`MAX_TRIANGLES`]).
+    Depth,
+}
+
+/// The sizes of the up to four children of a node over `n > 0` items (zeros unused): each takes
+/// as many as a complete subtree one level down holds (`LEAF * 4^k` for the smallest `k` with
+/// `4^(k+1)` leaves enough for all), the last what remains. Every subtree but the last at each
+/// level is complete, so a mesh of `N` triangles needs about `N / (3 LEAF)` nodes.
+const fn parts(n: usize) -> [usize; 4] {
+    let leaves = n.div_ceil(LEAF);
+    let mut per = 1;
+    while per * 4 < leaves {
+        per *= 4;
+    }
+    let per = per * LEAF;
+    let mut out = [0; 4];
+    let (mut k, mut left) = (0, n);
+    while k < 4 {
+        out[k] = if left < per { left } else { per };
+        left -= out[k];
+        k += 1;
+    }
+    out
+}
+
+/// Nodes the build makes for `n` triangles (zero for none): size the node slice with it.
+pub const fn nodes_for(n: usize) -> usize {
+    if n == 0 {
+        return 0;
+    }
+    let p = parts(n);
+    let mut total = 1;
+    let mut k = 0;
+    while k < 4 {
+        if p[k] > LEAF {
+            total += nodes_for(p[k]);
+        }
+        k += 1;
+    }
+    total
+}
+
+/// One triangle during the build: its box in cells (three words), its index (fourth word, low
+/// half) and its [`seam_class`] (fourth word, high half).
+pub(crate) type Item = [u64; 4];
+
+/// Packs a box, an index and a seam class into an [`Item`].
+pub(crate) fn item((lo, hi): Cells, index: usize, class: u32) -> Item {
+    let w = |a: i32, b: i32| (a as u32 as u64) | ((b as u32 as u64) << 32);
+    [
+        w(lo[0], lo[1]),
+        w(lo[2], hi[0]),
+        w(hi[1], hi[2]),
+        index as u32 as u64 | (class as u64) << 32,
+    ]
+}
+
+/// The index of an [`Item`].
+pub(crate) fn item_index(it: &Item) -> usize {
+    it[3] as u32 as usize
+}
+
+/// The box of an [`Item`].
+pub(crate) fn item_box(it: &Item) -> Cells {
+    let lo = |w: u64| w as u32 as i32;
+    let hi = |w: u64| (w >> 32) as u32 as i32;
+    (
+        [lo(it[0]), hi(it[0]), lo(it[1])],
+        [hi(it[1]), lo(it[2]), hi(it[2])],
+    )
+}
+
+/// The union of the items' boxes.
+pub(crate) fn union(items: &[Item]) -> Cells {
+    let mut b = ([i32::MAX; 3], [i32::MIN; 3]);
+    for it in items {
+        let (lo, hi) = item_box(it);
+        for a in 0..3 {
+            b.0[a] = b.0[a].min(lo[a]);
+            b.1[a] = b.1[a].max(hi[a]);
+        }
+    }
+    b
+}
+
+/// Bits per axis of a Morton key.
+pub(crate) const MORTON_BITS: u32 = 13;
+
+/// The Morton key of a point with coordinates below `2^MORTON_BITS`: their bits interleaved,
+/// x lowest.
+pub(crate) fn morton(q: [u64; 3]) -> u64 {
+    let mut key = 0;
+    for bit in 0..MORTON_BITS {
+        for (a, &v) in q.iter().enumerate() {
+            key |= (v >> bit & 1) << (3 * bit + a as u32);
+        }
+    }
+    key
+}
+
+/// Builds the tree over `items` (each a triangle's box, index and seam class, in Morton order)
+/// into `nodes`, the root's box being `root`. Returns the number of nodes used.
+pub(crate) fn build(
+    items: &mut [Item],
+    root: Cells,
+    nodes: &mut [Node],
+) -> Result<usize, BuildError> {
+    let n = items.len();
+    let needed = nodes_for(n);
+    if nodes.len() < needed {
+        return Err(BuildError::Nodes(needed));
+    }
+    if n == 0 {
+        return Ok(0);
+    }
+    // (node, first item, item count, node box, depth)
+    let mut work: heapless::Vec<(usize, usize, usize, Cells, usize), STACK> = heapless::Vec::new();
+    let _ = work.push((0, 0, n, root, 1));
+    let mut next = 1;
+    while let Some((at, first, count, (lo, hi), depth)) = work.pop() {
+        if depth > MAX_DEPTH {
+            return Err(BuildError::Depth);
+        }
+        let range = &mut items[first..first + count];
+        // Up to four runs of the Morton order.
+        let p = parts(count);
+        let bounds = [
+            (0, p[0]),
+            (p[0], p[0] + p[1]),
+            (p[0] + p[1], p[0] + p[1] + p[2]),
+            (p[0] + p[1] + p[2], count),
+        ];
+        let mut node = Node::default();
+        for ax in 0..3 {
+            let extent = hi[ax] as i64 - lo[ax] as i64;
+            let mut s = 0;
+            while extent > 255 << s {
+                s += 1;
+            }
+            node.shift[ax] = s as u8;
+        }
+        for &(s, e) in &bounds {
+            if s == e {
+                continue;
+            }
+            let part = &mut range[s..e];
+            let (clo, chi) = union(part);
+            let k = node.count as usize;
+            let mut dlo = [0; 3];
+            let mut dhi = [0; 3];
+            for ax in 0..3 {
+                let sh = node.shift[ax] as u32;
+                let step = 1i64 << sh;
+                let qlo = (clo[ax] as i64 - lo[ax] as i64) >> sh;
+                let qhi = (chi[ax] as i64 - lo[ax] as i64 + step - 1) >> sh;
+                node.boxes[k][ax] = qlo as u8;
+                node.boxes[k][3 + ax] = qhi as u8;
+                dlo[ax] = lo[ax] + ((qlo as i32) << sh);
+                dhi[ax] = lo[ax] + ((qhi as i32) << sh);
+            }
+            let class = part
+                .iter()
+                .map(|it| (it[3] >> 32) as u32)
+                .max()
+                .unwrap_or(0);
+            let class = class.min(MAX_CLASS) << CLASS_SHIFT;
+            if part.len() <= LEAF {
+                part.sort_unstable_by_key(item_index);
+                node.children[k] =
+                    LEAF_FLAG | class | ((first + s) as u32) << 2 | (part.len() - 1) as u32;
+            } else {
+                let child = next;
+                next += 1;
+                if child >= nodes.len() {
+                    return Err(BuildError::Nodes(needed));
+                }
+                node.children[k] = class | child as u32;
+                if work
+                    .push((child, first + s, e - s, (dlo, dhi), depth + 1))
+                    .is_err()
+                {
+                    return Err(BuildError::Depth);
+                }
+            }
+            node.count += 1;
+        }
+        nodes[at] = node;
+    }
+    Ok(next)
+}

@@ -1,0 +1,194 @@
+//! The swept-ball traversal: the segment against inflated child boxes, nearest child first
+//! (see the module docs of [`bvh`](super)).
+
+use super::{CLASS_SHIFT, Cells, Grid, LEAF_FLAG, MAX_CLASS, Node, PAYLOAD, STACK};
+use crate::merge::Earliest;
+use crate::{Scalar, Sweep};
+
+/// A child to visit: where the segment enters its box, its reference, and its box's minimum
+/// (all that decoding its children needs).
+#[derive(Clone, Copy)]
+struct Entry {
+    enter: f64,
+    child: u32,
+    lo: [i32; 3],
+}
+
+/// The swept segment in grid units, with what every box test needs.
+pub(crate) struct Segment {
+    q0: [f64; 3],
+    d: [f64; 3],
+    inv: [f64; 3],
+    /// How far (cells) every box is grown: the radius plus every rounding (module docs).
+    pad: f64,
+    /// The seam margin `r / 64 + 4 EPSILON` (cells), grown by `2^class` per child.
+    seam: f64,
+}
+
+impl Segment {
+    /// The sweep in the cells of `grid`.
+    pub(crate) fn new<S: Scalar>(sweep: &Sweep<S>, grid: &Grid) -> Self {
+        let v = |p: crate::Vec3<S>| [p.x.to_f64(), p.y.to_f64(), p.z.to_f64()];
+        let (p0, p1) = (v(sweep.p0()), v(sweep.p1()));
+        let r = sweep.radius().to_f64();
+        let s = Grid::scale(grid.exponent);
+        let big = |a: [f64; 3]| a.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+        let cells = grid.lo.iter().chain(grid.hi.iter());
+        let mesh = cells.fold(0.0f64, |m, &c| m.max((c as f64).abs())) / s;
+        let d = [p1[0] - p0[0], p1[1] - p0[1], p1[2] - p0[2]];
+        let magnitude = big(p0).max(big(p1)).max(mesh);
+        let eps = S::PRECISION.epsilon;
+        let per_unit = if S::PRECISION.relative {
+            1.0
+        } else {
+            1.0 / 1024.0
+        };
+        let pad = r
+            + eps * 64.0 * (1.0 + 3.0 * big(d))
+            + (64.0 * eps * per_unit + 1.0 / (1u64 << 40) as f64) * 3.0 * magnitude;
+        let seam = r / 64.0 + 4.0 * eps;
+        let q0 = p0.map(|x| x * s);
+        let d = d.map(|x| x * s);
+        Self {
+            q0,
+            d,
+            inv: d.map(|x| 1.0 / x),
+            pad: pad * s + 2.0,
+            seam: seam * s,
+        }
+    }
+
+    /// Where the segment, over `[0, limit]`, enters each of the four child boxes of `node` (whose
+    /// own minimum is `lo`), each grown by the pad and `2^class` seam margins of its child;
+    /// infinity where it misses. The four are computed side by side, lane by lane, so the
+    /// compiler can use vector registers; slots beyond `count` are computed and ignored.
+    #[inline]
+    fn enter4(&self, node: &Node, lo: [i32; 3], limit: f64) -> [f64; 4] {
+        let mut pad = [0.0f64; 4];
+        for (k, p) in pad.iter_mut().enumerate() {
+            let class = ((node.children[k] & !LEAF_FLAG) >> CLASS_SHIFT).min(MAX_CLASS);
+            // 2^class, exactly.
+            *p = self.pad + self.seam * f64::from_bits(((1023 + class) as u64) << 52);
+        }
+        let (mut t0, mut t1) = ([0.0f64; 4], [limit; 4]);
+        for (a, &base) in lo.iter().enumerate() {
+            let sh = node.shift[a].min(31) as u32;
+            let at = |v: u8| base.wrapping_add((v as i32).wrapping_shl(sh)) as f64;
+            let near: [f64; 4] =
+                core::array::from_fn(|k| at(node.boxes[k][a]) - pad[k] - self.q0[a]);
+            let far: [f64; 4] =
+                core::array::from_fn(|k| at(node.boxes[k][3 + a]) + pad[k] - self.q0[a]);
+            let inv = self.inv[a];
+            if !inv.is_finite() {
+                // Parallel to the slab (or as good as): inside it all along, or never.
+                let d = self.d[a].abs();
+                for k in 0..4 {
+                    if near[k] > d || far[k] < -d {
+                        t0[k] = f64::INFINITY;
+                    }
+                }
+                continue;
+            }
+            let (first, second) = if inv > 0.0 { (near, far) } else { (far, near) };
+            for k in 0..4 {
+                let (ta, tb) = (first[k] * inv, second[k] * inv);
+                // Plain comparisons: a NaN (never expected) would only widen the interval.
+                if ta > t0[k] {
+                    t0[k] = ta;
+                }
+                if tb < t1[k] {
+                    t1[k] = tb;
+                }
+            }
+        }
+        core::array::from_fn(|k| if t0[k] <= t1[k] { t0[k] } else { f64::INFINITY })
+    }
+}
+
+/// Decodes child `k` of `node`, whose own box has minimum `lo`.
+#[inline]
+fn child_cells(node: &Node, k: usize, lo: [i32; 3]) -> Cells {
+    let q = node.boxes[k];
+    let at =
+        |a: usize, v: u8| lo[a].wrapping_add((v as i32).wrapping_shl(node.shift[a].min(31) as u32));
+    (
+        [at(0, q[0]), at(1, q[1]), at(2, q[2])],
+        [at(0, q[3]), at(1, q[4]), at(2, q[5])],
+    )
+}
+
+/// The triangle slots of a leaf reference: `first .. first + count`.
+#[inline]
+pub(crate) fn leaf_slots(child: u32) -> Option<core::ops::Range<usize>> {
+    (child & LEAF_FLAG != 0).then(|| {
+        let first = ((child & PAYLOAD) >> 2) as usize;
+        first..first + (child & 3) as usize + 1
+    })
+}
+
+/// Visits the leaves the segment may reach within the current reach, nearest first, calling
+/// `leaf` with each leaf's slots; `reach` gives the current limit on alpha. Returns false if the
+/// tree is malformed (a stack overflow or a cycle: only possible for parts not made by the
+/// build), in which case the caller must answer another way.
+pub(crate) fn traverse<S: Scalar>(
+    nodes: &[Node],
+    grid: &Grid,
+    seg: &Segment,
+    acc: &mut Earliest<S>,
+    mut leaf: impl FnMut(&mut Earliest<S>, core::ops::Range<usize>),
+) -> bool {
+    if nodes.is_empty() {
+        return true;
+    }
+    let limit = |r: S| r.to_f64() + 1.0 / (1u64 << 50) as f64;
+    let mut stack: heapless::Vec<Entry, STACK> = heapless::Vec::new();
+    let _ = stack.push(Entry {
+        enter: 0.0,
+        child: 0,
+        lo: grid.lo,
+    });
+    let mut budget = 5 * nodes.len() + 5;
+    while let Some(e) = stack.pop() {
+        budget = match budget.checked_sub(1) {
+            Some(b) => b,
+            None => return false,
+        };
+        let lim = limit(acc.reach());
+        if e.enter > lim {
+            continue;
+        }
+        if let Some(slots) = leaf_slots(e.child) {
+            leaf(acc, slots);
+            continue;
+        }
+        let Some(node) = nodes.get((e.child & PAYLOAD) as usize) else {
+            return false;
+        };
+        let enter = seg.enter4(node, e.lo, lim);
+        let mut near = [(0.0f64, 0usize, [0i32; 3]); 4];
+        let mut n = 0;
+        for (k, &t) in enter.iter().enumerate().take((node.count as usize).min(4)) {
+            if t <= lim {
+                // Insertion by entry, nearest first; equal entries keep child order.
+                let mut at = n;
+                while at > 0 && near[at - 1].0 > t {
+                    near[at] = near[at - 1];
+                    at -= 1;
+                }
+                near[at] = (t, k, child_cells(node, k, e.lo).0);
+                n += 1;
+            }
+        }
+        for &(t, k, lo) in near[..n].iter().rev() {
+            let entry = Entry {
+                enter: t,
+                child: node.children[k],
+                lo,
+            };
+            if stack.push(entry).is_err() {
+                return false;
+            }
+        }
+    }
+    true
+}

@@ -1,0 +1,397 @@
+//! [`Mesh`]: many triangles behind a [`bvh`], borrowed from wherever they live (a
+//! `static` in flash, a caller's buffer, `Vec`s on a PC), answering exactly as a linear scan.
+
+use crate::adjacency::link_all;
+use crate::bvh::{self, BuildError, Grid, MAX_TRIANGLES, Node, Segment};
+use crate::merge::earliest;
+use crate::{Error, Features, Geometry, Parts, Scalar, SceneHit, StandardTriangle, Sweep};
+use crate::{Triangle, Vec3};
+use core::fmt;
+
+/// A triangle mesh with a bounding volume hierarchy, borrowing its parts.
+///
+/// `triangles[s]` is the prepared form (with active edges) of input triangle `order[s]`, in the
+/// tree's leaf order; `nodes` and `grid` are the [`bvh`]. [`Mesh::build`] makes the
+/// parts from a triangle list into caller-provided slices; [`Mesh::from_parts`] (a `const fn`)
+/// takes baked ones. The answer of [`cast`](Mesh::cast) is, bit for bit, the one a linear scan of
+/// the same prepared triangles in input order gives (the slice [`Geometry`]), including merged
+/// simultaneous contacts; `index` is the triangle's index in the input.
+///
+/// Memory per triangle: the prepared triangle (112 bytes for `f32` and `I16F16`, 224 for `f64`
+/// and `I32F32`), 4 bytes of `order`, and 3.7 bytes of nodes (a 44-byte node per about 12
+/// triangles; 8 364 for 100 352): the tree adds about 7.7 bytes per triangle in every scalar.
+/// The build also needs six scratch words (48 bytes) per triangle while it runs.
+///
+/// ```
+/// use ballcast::{Contact, Degenerates, Mesh, Node, Sweep, Triangle, Vec3};
+/// let v = Vec3::new;
+/// let tris = [
+///     Triangle::new(v(0.0f32, 0.0, 0.0), v(0.0, 0.0, 2.0), v(2.0, 0.0, 2.0)),
+///     Triangle::new(v(0.0, 0.0, 0.0), v(2.0, 0.0, 2.0), v(2.0, 0.0, 0.0)),
+/// ];
+/// let mut nodes = [Node::default(); 1];
+/// let mut prepared = [Mesh::<f32>::filler(); 2];
+/// let mut order = [0u32; 2];
+/// let mut scratch = [0u64; 12];
+/// let (mesh, skipped) = Mesh::build(&tris, Degenerates::Refuse, &mut nodes, &mut prepared, &mut order, &mut scratch)?;
+/// assert_eq!((mesh.len(), skipped), (2, 0));
+/// let hit = mesh.cast(&Sweep::new(v(1.0, 3.0, 1.0), v(1.0, -1.0, 1.0), 0.5)?).unwrap();
+/// assert_eq!((hit.alpha, hit.normal, hit.contact), (0.625, v(0.0, 1.0, 0.0), Contact::Face));
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Mesh<'a, S: Scalar> {
+    nodes: &'a [Node],
+    triangles: &'a [StandardTriangle<S>],
+    order: &'a [u32],
+    grid: Grid,
+}
+
+/// What [`Mesh::build`] does with a degenerate triangle (coincident or collinear vertices).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Degenerates {
+    /// Fail with [`MeshError::Triangle`] naming it.
+    Refuse,
+    /// Leave it out (zero-area fillers are common in exported levels) and count it.
+    Skip,
+}
+
+/// Which buffer given to [`Mesh::build`] was too small.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Buffer {
+    /// The nodes: [`nodes_for`](crate::bvh::nodes_for) of the triangles kept.
+    Nodes,
+    /// The prepared triangles: one per input triangle.
+    Triangles,
+    /// The order: one per input triangle.
+    Order,
+    /// The scratch words: six per input triangle.
+    Scratch,
+}
+
+/// Why [`Mesh::build`] or [`Mesh::verify`] refused.
+#[non_exhaustive]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum MeshError {
+    /// Input triangle `index` was refused by [`StandardTriangle::new`] for `error` (a degenerate
+    /// one only under [`Degenerates::Refuse`]).
+    Triangle {
+        /// Its index in the input.
+        index: usize,
+        /// Why.
+        error: Error,
+    },
+    /// A buffer holds fewer than `needed` elements.
+    Capacity {
+        /// Which one.
+        buffer: Buffer,
+        /// How many it must hold.
+        needed: usize,
+    },
+    /// More than 2^24 triangles.
+    TooMany,
+    /// [`Mesh::verify`]: the parts are not what the build makes of the given triangles.
+    Mismatch,
+}
+
+impl fmt::Display for MeshError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            MeshError::Triangle { index, error } => write!(f, "triangle {index}: {error}"),
+            MeshError::Capacity { buffer, needed } => {
+                write!(f, "buffer of {buffer:?} too small: {needed} needed")
+            }
+            MeshError::TooMany => f.write_str("more than 2^24 triangles"),
+            MeshError::Mismatch => f.write_str("mesh parts differ from the build of its triangles"),
+        }
+    }
+}
+
+impl core::error::Error for MeshError {}
+
+impl<'a, S: Scalar> Mesh<'a, S> {
+    /// A mesh from parts made by [`Mesh::build`] (or baked from them), in a `const` context, so
+    /// a mesh can be a `static`. Nothing is checked here: check baked parts with
+    /// [`verify`](Self::verify) in a test. Parts from elsewhere can give wrong answers, never
+    /// a panic or undefined behaviour.
+    pub const fn from_parts(
+        nodes: &'a [Node],
+        triangles: &'a [StandardTriangle<S>],
+        order: &'a [u32],
+        grid: Grid,
+    ) -> Self {
+        Self {
+            nodes,
+            triangles,
+            order,
+            grid,
+        }
+    }
+
+    /// A placeholder to fill a buffer of prepared triangles with before [`build`](Self::build).
+    pub fn filler() -> StandardTriangle<S> {
+        let z = Vec3::new(S::ZERO, S::ZERO, S::ZERO);
+        let u = Vec3::new(S::UNIT_ZERO, S::UNIT_ZERO, S::UNIT_ZERO);
+        let edge = crate::Edge {
+            dir: [S::UNIT_ZERO; 2],
+            len: S::ZERO,
+        };
+        StandardTriangle::from_parts(Parts {
+            origin: z,
+            axes: [u; 3],
+            shape: [S::ZERO; 3],
+            normal: z,
+            edges: [edge; 3],
+            features: Features::ALL.bits(),
+            two_sided: false,
+        })
+    }
+
+    /// Prepares `sources`, computes their active edges and builds the tree, into the given
+    /// buffers; returns the mesh borrowing them and the number of degenerate triangles skipped.
+    ///
+    /// Buffers: `nodes` at least [`nodes_for`](crate::bvh::nodes_for)`(kept)` (kept = input less
+    /// skipped; `nodes_for(sources.len())` always suffices), `triangles` and `order` one per input
+    /// triangle, `scratch` six words per input triangle. Time `O(N log N)` (active edges: plus one
+    /// comparison per pair of triangles on either side of a shared edge), no allocation, stack
+    /// use independent of `N`. The same input gives the same parts, byte for byte, on every target.
+    ///
+    /// Errors: [`MeshError::Triangle`] for a triangle [`StandardTriangle::new`] refuses (unless it
+    /// is degenerate and `degenerates` is [`Degenerates::Skip`]); [`MeshError::Capacity`] for a
+    /// buffer too small; [`MeshError::TooMany`] beyond 2^28 triangles.
+    pub fn build(
+        sources: &[Triangle<S>],
+        degenerates: Degenerates,
+        nodes: &'a mut [Node],
+        triangles: &'a mut [StandardTriangle<S>],
+        order: &'a mut [u32],
+        scratch: &mut [u64],
+    ) -> Result<(Self, usize), MeshError> {
+        let n = sources.len();
+        if n > MAX_TRIANGLES {
+            return Err(MeshError::TooMany);
+        }
+        let short = |buffer, len: usize, needed: usize| {
+            (len < needed).then_some(MeshError::Capacity { buffer, needed })
+        };
+        let checks = [
+            short(Buffer::Triangles, triangles.len(), n),
+            short(Buffer::Order, order.len(), n),
+            short(Buffer::Scratch, scratch.len(), 6 * n),
+        ];
+        if let Some(e) = checks.into_iter().flatten().next() {
+            return Err(e);
+        }
+        // Prepare, in input order, keeping the input index.
+        let mut kept = 0;
+        for (index, t) in sources.iter().enumerate() {
+            match StandardTriangle::new(t) {
+                Ok(st) => {
+                    triangles[kept] = st;
+                    order[kept] = index as u32;
+                    kept += 1;
+                }
+                Err(Error::Degenerate) if degenerates == Degenerates::Skip => {}
+                Err(error) => return Err(MeshError::Triangle { index, error }),
+            }
+        }
+        if let Some(e) = short(Buffer::Nodes, nodes.len(), bvh::nodes_for(kept)) {
+            return Err(e);
+        }
+        let (triangles, order) = (&mut triangles[..kept], &mut order[..kept]);
+        // The grid, from the kept triangles' world bounds.
+        let corners = |c: usize| {
+            sources[order[c] as usize]
+                .vertices()
+                .map(|p| p.to_array().map(S::to_f64))
+        };
+        let bounds = |v: [[f64; 3]; 3]| {
+            let lo = [0, 1, 2].map(|a| v[0][a].min(v[1][a]).min(v[2][a]));
+            let hi = [0, 1, 2].map(|a| v[0][a].max(v[1][a]).max(v[2][a]));
+            (lo, hi)
+        };
+        let (mut wlo, mut whi) = ([f64::MAX; 3], [f64::MIN; 3]);
+        for c in 0..kept {
+            let (lo, hi) = bounds(corners(c));
+            for a in 0..3 {
+                wlo[a] = wlo[a].min(lo[a]);
+                whi[a] = whi[a].max(hi[a]);
+            }
+        }
+        let largest = (0..3).fold(0.0f64, |m, a| m.max(wlo[a].abs()).max(whi[a].abs()));
+        // Active edges, visited region by region: 16 regions per axis over the bounds' cube.
+        let side = (0..3).fold(0.0f64, |m, a| m.max(whi[a] - wlo[a]));
+        let region = |p: Vec3<S>| {
+            let q = p.to_array().map(S::to_f64);
+            let r = [0, 1, 2].map(|a| {
+                let t = (q[a] - wlo[a]) / side * 16.0;
+                if t >= 0.0 { (t as u64).min(15) } else { 0 }
+            });
+            bvh::morton(r)
+        };
+        link_all(sources, order, triangles, &mut scratch[..6 * kept], region);
+        let exponent = Grid::exponent_for(largest);
+        let (lo, hi) = if kept == 0 {
+            ([0; 3], [0; 3])
+        } else {
+            Grid::cells(exponent, wlo, whi)
+        };
+        // Morton order of the boxes' centres, ties by index (one radix sort). One scale for the
+        // three axes (cubic cells): a flat terrain's few height levels do not split its order.
+        let extent = (0..3).fold(0i64, |m, a| m.max(hi[a] as i64 - lo[a] as i64));
+        let (keys, rest) = scratch.split_at_mut(kept);
+        let (temp, rest) = rest.split_at_mut(kept);
+        for (c, key) in keys.iter_mut().enumerate() {
+            let (blo, bhi) = bounds(corners(c));
+            let (clo, chi) = Grid::cells(exponent, blo, bhi);
+            let q = [0, 1, 2].map(|a| {
+                let centre = clo[a] as i64 + chi[a] as i64 - 2 * lo[a] as i64;
+                ((centre << bvh::MORTON_BITS) / (2 * extent + 1)) as u64
+            });
+            *key = bvh::morton(q) << 24 | c as u64;
+        }
+        crate::radix::sort(keys, temp, 24, 64);
+        let (items, _) = rest.as_chunks_mut::<4>();
+        let items = &mut items[..kept];
+        for (it, key) in items.iter_mut().zip(keys.iter()) {
+            let c = (key & 0xff_ffff) as usize;
+            let (blo, bhi) = bounds(corners(c));
+            let t = &triangles[c];
+            let all_active = (0..3).all(|e| t.features().edge(e));
+            let [_, b, c2] = t.vertices();
+            let shape = [b.x, b.z, c2.x].map(S::to_f64);
+            let class = bvh::seam_class(all_active, shape);
+            *it = bvh::item(Grid::cells(exponent, blo, bhi), c, class);
+        }
+        let used = bvh::build(items, (lo, hi), nodes).map_err(|e| match e {
+            BuildError::Nodes(needed) => MeshError::Capacity {
+                buffer: Buffer::Nodes,
+                needed,
+            },
+            BuildError::Depth => MeshError::TooMany,
+        })?;
+
+        // Into leaf order: slot s takes compact triangle items[s][3].
+        for it in items.iter_mut() {
+            it[1] = order[bvh::item_index(it)] as u64;
+            it[0] = 0; // not yet placed
+        }
+        for (s, it) in items.iter().enumerate() {
+            order[s] = it[1] as u32;
+        }
+        for start in 0..kept {
+            if items[start][0] != 0 {
+                continue;
+            }
+            let held = triangles[start];
+            let mut s = start;
+            loop {
+                items[s][0] = 1;
+                let from = bvh::item_index(&items[s]);
+                if from == start {
+                    triangles[s] = held;
+                    break;
+                }
+                triangles[s] = triangles[from];
+                s = from;
+            }
+        }
+        let grid = Grid { exponent, lo, hi };
+        let (nodes, triangles, order): (&'a [Node], &'a [StandardTriangle<S>], &'a [u32]) =
+            (&nodes[..used], triangles, order);
+        Ok((Self::from_parts(nodes, triangles, order, grid), n - kept))
+    }
+
+    /// Number of triangles.
+    pub fn len(&self) -> usize {
+        self.triangles.len()
+    }
+
+    /// Whether the mesh holds no triangle.
+    pub fn is_empty(&self) -> bool {
+        self.triangles.is_empty()
+    }
+
+    /// The tree's nodes.
+    pub fn nodes(&self) -> &'a [Node] {
+        self.nodes
+    }
+
+    /// The prepared triangles, in leaf order.
+    pub fn triangles(&self) -> &'a [StandardTriangle<S>] {
+        self.triangles
+    }
+
+    /// The input index of each prepared triangle.
+    pub fn order(&self) -> &'a [u32] {
+        self.order
+    }
+
+    /// The grid of the tree's boxes and the root's box.
+    pub fn grid(&self) -> Grid {
+        self.grid
+    }
+
+    /// The prepared triangle of input triangle `index`, if kept (a search, `O(N)`).
+    pub fn triangle(&self, index: usize) -> Option<&'a StandardTriangle<S>> {
+        let s = self.order.iter().position(|&i| i as usize == index)?;
+        self.triangles.get(s)
+    }
+
+    /// Checks baked parts against the mesh `Mesh::build` makes of `sources` into the given
+    /// buffers (sized as for `build`): the way to test a `static` mesh.
+    ///
+    /// Errors: those of [`build`](Self::build), or [`MeshError::Mismatch`] on any difference.
+    pub fn verify(
+        &self,
+        sources: &[Triangle<S>],
+        degenerates: Degenerates,
+        nodes: &mut [Node],
+        triangles: &mut [StandardTriangle<S>],
+        order: &mut [u32],
+        scratch: &mut [u64],
+    ) -> Result<(), MeshError> {
+        let (built, _) = Mesh::build(sources, degenerates, nodes, triangles, order, scratch)?;
+        if built == *self {
+            Ok(())
+        } else {
+            Err(MeshError::Mismatch)
+        }
+    }
+
+    /// The earliest contact along the sweep: the answer of the slice [`Geometry`] over the same
+    /// prepared triangles in input order, bit for bit, found in `O(log N)` node visits for a
+    /// short sweep.
+    pub fn cast(&self, sweep: &Sweep<S>) -> Option<SceneHit<S>> {
+        let seg = Segment::new(sweep, &self.grid);
+        let mut sound = true;
+        let hit = earliest(|acc| {
+            sound &= bvh::traverse(self.nodes, &self.grid, &seg, acc, |acc, slots| {
+                for s in slots {
+                    if let (Some(t), Some(&i)) = (self.triangles.get(s), self.order.get(s))
+                        && let Some(hit) = t.cast(sweep)
+                    {
+                        acc.offer(i as usize, hit);
+                    }
+                }
+            });
+        });
+        if sound {
+            return hit;
+        }
+        // Malformed parts (never from `build`): test every triangle.
+        earliest(|acc| {
+            for (t, &i) in self.triangles.iter().zip(self.order) {
+                if let Some(hit) = t.cast(sweep) {
+                    acc.offer(i as usize, hit);
+                }
+            }
+        })
+    }
+}
+
+impl<S: Scalar> Geometry<S> for Mesh<'_, S> {
+    fn cast(&self, sweep: &Sweep<S>) -> Option<SceneHit<S>> {
+        Mesh::cast(self, sweep)
+    }
+}

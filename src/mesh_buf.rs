@@ -1,0 +1,79 @@
+//! [`MeshBuf`]: a [`Mesh`] that owns its parts in `Vec`s, for PCs (feature `alloc`).
+
+use crate::Triangle;
+use crate::bvh::{Grid, Node, nodes_for};
+use crate::{Degenerates, Geometry, Mesh, MeshError, Scalar, SceneHit, StandardTriangle, Sweep};
+use alloc::vec;
+use alloc::vec::Vec;
+
+/// A mesh owning its nodes, prepared triangles and order on the heap: [`Mesh::build`] with the
+/// buffers allocated for you (the scratch is freed before returning). Lend it out with
+/// [`mesh`](Self::mesh); it is also a [`Geometry`] itself.
+///
+/// ```
+/// use ballcast::{Degenerates, MeshBuf, Sweep, Triangle, Vec3};
+/// let v = Vec3::new;
+/// let tris = [Triangle::new(v(0.0f32, 0.0, 0.0), v(0.0, 0.0, 2.0), v(2.0, 0.0, 0.0))];
+/// let buf = MeshBuf::build(&tris, Degenerates::Refuse)?;
+/// let hit = buf.mesh().cast(&Sweep::new(v(0.5, 2.0, 0.5), v(0.5, -1.0, 0.5), 0.5)?);
+/// assert_eq!(hit.map(|h| h.alpha), Some(0.5));
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+#[derive(Clone, Debug, PartialEq)]
+pub struct MeshBuf<S: Scalar> {
+    nodes: Vec<Node>,
+    triangles: Vec<StandardTriangle<S>>,
+    order: Vec<u32>,
+    grid: Grid,
+    skipped: usize,
+}
+
+impl<S: Scalar> MeshBuf<S> {
+    /// Builds the mesh of `sources` as [`Mesh::build`] does, into buffers it allocates.
+    ///
+    /// Errors: those of [`Mesh::build`] (never [`MeshError::Capacity`]).
+    pub fn build(sources: &[Triangle<S>], degenerates: Degenerates) -> Result<Self, MeshError> {
+        let n = sources.len();
+        let mut nodes = vec![Node::default(); nodes_for(n)];
+        let mut triangles = vec![Mesh::<S>::filler(); n];
+        let mut order = vec![0u32; n];
+        let mut scratch = vec![0u64; 6 * n];
+        let (used, kept, grid, skipped) = {
+            let (mesh, skipped) = Mesh::build(
+                sources,
+                degenerates,
+                &mut nodes,
+                &mut triangles,
+                &mut order,
+                &mut scratch,
+            )?;
+            (mesh.nodes().len(), mesh.len(), mesh.grid(), skipped)
+        };
+        nodes.truncate(used);
+        triangles.truncate(kept);
+        order.truncate(kept);
+        Ok(Self {
+            nodes,
+            triangles,
+            order,
+            grid,
+            skipped,
+        })
+    }
+
+    /// The mesh, borrowing these parts.
+    pub fn mesh(&self) -> Mesh<'_, S> {
+        Mesh::from_parts(&self.nodes, &self.triangles, &self.order, self.grid)
+    }
+
+    /// How many degenerate triangles the build skipped.
+    pub fn skipped(&self) -> usize {
+        self.skipped
+    }
+}
+
+impl<S: Scalar> Geometry<S> for MeshBuf<S> {
+    fn cast(&self, sweep: &Sweep<S>) -> Option<SceneHit<S>> {
+        self.mesh().cast(sweep)
+    }
+}

@@ -1,0 +1,422 @@
+//! `Mesh` against the linear scan: random sweeps on heightfields, closed boxes and soups with
+//! overlaps, slivers and duplicates give the same answer, bit for bit; its active edges are
+//! `Scene`'s; the build is deterministic; extremes are errors, not panics. Every property in
+//! every scalar.
+
+mod common;
+mod meshes;
+
+use ballcast::bvh::nodes_for;
+use ballcast::{
+    Buffer, Degenerates, Geometry, Mesh, MeshError, Node, Scalar, Scene, Sweep, Triangle,
+};
+use common::{Rng, v};
+use fixed::types::{I16F16, I32F32};
+use meshes::{against_linear, boxes, build, heightfield, soup, tri};
+
+fn sweeps_on_all<S: Scalar>(per_shape: usize) {
+    let mut rng = Rng(0x5eed_0001);
+    let hf = heightfield(&mut rng, 12, 1.0, 0.65);
+    against_linear::<S>(&mut rng, &hf, per_shape, 6.0);
+    let b = boxes(&mut rng, 16, 5.0);
+    against_linear::<S>(&mut rng, &b, per_shape, 6.0);
+    let s = soup(&mut rng, 200, 4.0);
+    against_linear::<S>(&mut rng, &s, per_shape, 5.0);
+}
+
+fn matches_linear_scan<S: Scalar>() {
+    sweeps_on_all::<S>(700);
+}
+
+fn matches_linear_scan_long<S: Scalar>() {
+    for seed in 0..10u64 {
+        let mut rng = Rng(0xbeef ^ seed << 20);
+        let hf = heightfield(&mut rng, 40, 1.0, 0.65);
+        against_linear::<S>(&mut rng, &hf, 4000, 20.0);
+        let b = boxes(&mut rng, 60, 15.0);
+        against_linear::<S>(&mut rng, &b, 3000, 16.0);
+        let s = soup(&mut rng, 600, 8.0);
+        against_linear::<S>(&mut rng, &s, 3000, 9.0);
+    }
+}
+
+/// The mesh's prepared triangles, features included, are `Scene`'s on the same input.
+fn active_edges_are_scenes<S: Scalar>() {
+    let mut rng = Rng(0x5eed_0002);
+    let mut shapes = vec![
+        heightfield(&mut rng, 12, 1.0, 0.65),
+        boxes(&mut rng, 16, 5.0),
+        soup(&mut rng, 200, 4.0),
+    ];
+    // Flat: every interior edge inactive; identical copies: none paired.
+    shapes.push(heightfield(&mut rng, 8, 1.0, 0.0));
+    shapes.push(vec![
+        [[0.0, 0.0, 0.0], [0.0, 0.0, 1.0], [1.0, 0.0, 0.0]];
+        40
+    ]);
+    for src in shapes {
+        let input: Vec<Triangle<S>> = src.iter().map(|&t| tri(t)).collect();
+        let owned = build(&input, Degenerates::Skip).unwrap();
+        let mesh = owned.mesh();
+        let mut scene: Box<Scene<S, 512>> = Box::default();
+        let pushed: Vec<Option<usize>> = input.iter().map(|t| scene.push(*t).ok()).collect();
+        let mut inactive = 0;
+        for (i, k) in pushed.into_iter().enumerate() {
+            let Some(k) = k else {
+                assert!(
+                    mesh.triangle(i).is_none(),
+                    "triangle {i} kept but refused by Scene"
+                );
+                continue;
+            };
+            let (a, b) = (mesh.triangle(i).unwrap(), scene.triangle(k).unwrap());
+            assert_eq!(a.to_parts(), b.to_parts(), "triangle {i}");
+            inactive += (0..3).filter(|&e| !b.features().edge(e)).count();
+        }
+        assert_eq!(scene.len(), mesh.len());
+        // The comparison is not vacuous: the heightfields and boxes have inactive edges.
+        assert!(
+            inactive > 0 || !matches!(src.len(), 128 | 192 | 288),
+            "no inactive edge"
+        );
+    }
+}
+
+/// Repeated builds give the same parts; a shuffled input gives the same answers (alphas, and
+/// whether anything is hit) although the tree's tie-breaks differ.
+fn deterministic<S: Scalar>() {
+    let mut rng = Rng(0x5eed_0003);
+    let src = heightfield(&mut rng, 12, 1.0, 0.65);
+    let input: Vec<Triangle<S>> = src.iter().map(|&t| tri(t)).collect();
+    let (a, b) = (
+        build(&input, Degenerates::Refuse).unwrap(),
+        build(&input, Degenerates::Refuse).unwrap(),
+    );
+    assert_eq!(a.mesh(), b.mesh());
+    let mut perm: Vec<usize> = (0..input.len()).collect();
+    for i in (1..perm.len()).rev() {
+        perm.swap(i, (rng.next() * (i + 1) as f64) as usize);
+    }
+    let shuffled: Vec<Triangle<S>> = perm.iter().map(|&i| input[i]).collect();
+    let c = build(&shuffled, Degenerates::Refuse).unwrap();
+    let (ma, mc) = (a.mesh(), c.mesh());
+    for (i, &p) in perm.iter().enumerate() {
+        let (x, y) = (ma.triangle(p).unwrap(), mc.triangle(i).unwrap());
+        assert_eq!(x.features(), y.features(), "features of input triangle {p}");
+    }
+    let mut hits = 0;
+    for _ in 0..300 {
+        let (p0, p1) = (rng.point(6.0), rng.point(6.0));
+        let sweep = Sweep::new(v::<S>(p0), v(p1), S::from_f64(rng.range(0.1, 1.0))).unwrap();
+        let (x, y) = (ma.cast(&sweep), mc.cast(&sweep));
+        assert_eq!(x.map(|h| h.alpha), y.map(|h| h.alpha), "{p0:?} -> {p1:?}");
+        hits += x.is_some() as usize;
+    }
+    assert!(hits > 30);
+}
+
+/// A hash of every byte of a built mesh, pinned: the same in debug and release, on every target.
+fn pinned_bytes<S: Scalar>() -> u64 {
+    let mut rng = Rng(0x5eed_0004);
+    let src = heightfield(&mut rng, 10, 1.0, 0.65);
+    let input: Vec<Triangle<S>> = src.iter().map(|&t| tri(t)).collect();
+    let m = build(&input, Degenerates::Refuse).unwrap();
+    let parts: Vec<_> = m.tris.iter().map(|t| t.to_parts()).collect();
+    let text = format!("{:?}{:?}{:?}{:?}", m.nodes, m.order, m.grid, parts);
+    text.bytes().fold(0xcbf2_9ce4_8422_2325u64, |h, b| {
+        (h ^ b as u64).wrapping_mul(0x100_0000_01b3)
+    })
+}
+
+#[test]
+fn same_bytes_everywhere() {
+    let got = [
+        pinned_bytes::<f32>(),
+        pinned_bytes::<f64>(),
+        pinned_bytes::<I16F16>(),
+        pinned_bytes::<I32F32>(),
+    ];
+    assert_eq!(got, PINNED, "{got:#x?}");
+}
+
+const PINNED: [u64; 4] = [
+    5328521679744985585,
+    3362888627270979197,
+    8839910174079898753,
+    15139092076402055817,
+];
+
+/// A mesh spanning the whole safe range (±4096 in I16F16), sweeps across it.
+fn range_edges<S: Scalar>() {
+    let l = S::LIMIT.to_f64();
+    let mut rng = Rng(0x5eed_0005);
+    let mut src = heightfield(&mut rng, 8, l / 4.0, l / 64.0);
+    // Corners exactly at ±LIMIT.
+    src.push([[-l, -l, -l], [-l, -l, l], [l, -l, l]]);
+    src.push([[l, l, l], [l, l, -l], [-l, l, -l]]);
+    against_linear::<S>(&mut rng, &src, 300, l);
+}
+
+/// Empty, one triangle, all identical: answers as the linear scan; an empty mesh hits nothing.
+fn small_meshes<S: Scalar>() {
+    let mut rng = Rng(0x5eed_0006);
+    let empty = build::<S>(&[], Degenerates::Refuse).unwrap();
+    assert!(empty.mesh().is_empty() && empty.nodes.is_empty());
+    let sweep = Sweep::new(v::<S>([0.0, 1.0, 0.0]), v([0.0, -1.0, 0.0]), S::ONE).unwrap();
+    assert_eq!(empty.mesh().cast(&sweep), None);
+    let one = [[[-2.0, 0.0, -2.0], [-2.0, 0.0, 2.0], [2.0, 0.0, 0.0]]];
+    against_linear::<S>(&mut rng, &one, 200, 3.0);
+    against_linear::<S>(&mut rng, &[one[0]; 37], 200, 3.0);
+}
+
+/// Buffers one short, degenerate and out-of-range triangles: errors naming the cause.
+fn errors_not_panics<S: Scalar>() {
+    let mut rng = Rng(0x5eed_0007);
+    let mut src: Vec<Triangle<S>> = heightfield(&mut rng, 6, 1.0, 0.65)
+        .iter()
+        .map(|&t| tri(t))
+        .collect();
+    let n = src.len();
+    let attempt = |src: &[Triangle<S>], sizes: [usize; 4], deg| {
+        let mut nodes = vec![Node::default(); sizes[0]];
+        let mut tris = vec![Mesh::<S>::filler(); sizes[1]];
+        let mut order = vec![0u32; sizes[2]];
+        let mut scratch = vec![0u64; sizes[3]];
+        Mesh::build(src, deg, &mut nodes, &mut tris, &mut order, &mut scratch)
+            .map(|(m, k)| (m.len(), k))
+    };
+    let full = [nodes_for(n), n, n, 6 * n];
+    assert_eq!(attempt(&src, full, Degenerates::Refuse), Ok((n, 0)));
+    for (k, buffer) in [
+        Buffer::Nodes,
+        Buffer::Triangles,
+        Buffer::Order,
+        Buffer::Scratch,
+    ]
+    .into_iter()
+    .enumerate()
+    {
+        let mut sizes = full;
+        sizes[k] -= 1;
+        let needed = full[k];
+        assert_eq!(
+            attempt(&src, sizes, Degenerates::Refuse),
+            Err(MeshError::Capacity { buffer, needed })
+        );
+    }
+    // Two degenerate triangles (a repeated vertex, collinear vertices) at 5 and 9.
+    let p = v::<S>([1.0, 2.0, 3.0]);
+    src[5] = Triangle::new(p, p, v([0.0, 0.0, 0.0]));
+    src[9] = Triangle::new(v([0.0, 0.0, 0.0]), v([1.0, 1.0, 1.0]), v([2.0, 2.0, 2.0]));
+    let e = attempt(&src, full, Degenerates::Refuse).unwrap_err();
+    assert_eq!(
+        e,
+        MeshError::Triangle {
+            index: 5,
+            error: ballcast::Error::Degenerate
+        }
+    );
+    assert_eq!(
+        e.to_string(),
+        "triangle 5: degenerate triangle: coincident or collinear vertices"
+    );
+    assert_eq!(attempt(&src, full, Degenerates::Skip), Ok((n - 2, 2)));
+    // Out of range is never skipped.
+    src[7] = Triangle::new(
+        v([0.0, 0.0, 0.0]),
+        v([0.0, 0.0, 1.0]),
+        v([S::LIMIT.to_f64() * 2.0, 0.0, 0.0]),
+    );
+    assert!(matches!(
+        attempt(&src, full, Degenerates::Skip),
+        Err(MeshError::Triangle { index: 7, .. })
+    ));
+}
+
+/// `move_and_slide` runs on a mesh and moves exactly as on the linear scan.
+fn slides_as_linear<S: Scalar>() {
+    let mut rng = Rng(0x5eed_0008);
+    let src = heightfield(&mut rng, 12, 1.0, 0.65);
+    let input: Vec<Triangle<S>> = src.iter().map(|&t| tri(t)).collect();
+    let owned = build(&input, Degenerates::Refuse).unwrap();
+    let linear = owned.linear();
+    for _ in 0..200 {
+        let p = [
+            rng.range(-5.0, 5.0),
+            rng.range(0.8, 2.0),
+            rng.range(-5.0, 5.0),
+        ];
+        let d = [
+            rng.range(-1.0, 1.0),
+            rng.range(-2.0, 0.0),
+            rng.range(-1.0, 1.0),
+        ];
+        let r = S::from_f64(rng.range(0.2, 0.5));
+        let a = ballcast::move_and_slide(&owned.mesh(), v::<S>(p), v(d), r).unwrap();
+        let b = ballcast::move_and_slide(linear.as_slice(), v::<S>(p), v(d), r).unwrap();
+        assert_eq!(a, b);
+    }
+}
+
+/// Found by the 10^5-sweep run: a sliver whose long edge is inactive (here flat with its
+/// neighbour) stretches its face test's seam margin far along its active edge, so `cast` reports
+/// a face contact two units beyond the sliver's corner; the tree's boxes must reach it too.
+fn sliver_seam_beyond_its_corner<S: Scalar>() {
+    let floor = [[0.0, 0.0, 0.0], [0.0, 0.0, 1.0], [10.0, 0.0, 0.0]];
+    let sliver = [[0.0, 0.0, 0.0], [10.0, 0.0, 0.0], [5.0, 0.0, -0.01]];
+    let src = [floor, sliver];
+    let input: Vec<Triangle<S>> = src.iter().map(|&t| tri(t)).collect();
+    let owned = build(&input, Degenerates::Refuse).unwrap();
+    let linear = owned.linear();
+    let sweep = Sweep::new(
+        v::<S>([-2.0, 1.0, 0.006]),
+        v([-2.0, -1.0, 0.006]),
+        S::from_f64(0.5),
+    );
+    let sweep = sweep.unwrap();
+    let want = Geometry::cast(linear.as_slice(), &sweep);
+    assert_eq!(
+        want.map(|h| h.index),
+        Some(1),
+        "the linear scan's far contact"
+    );
+    assert_eq!(owned.mesh().cast(&sweep), want);
+}
+
+/// `Mesh::verify`, the check for baked parts: a mesh from `from_parts` passes against its
+/// triangles, and fails once a triangle of the input differs.
+fn verify_baked_parts<S: Scalar>() {
+    let mut rng = Rng(0x5eed_0009);
+    let src = heightfield(&mut rng, 6, 1.0, 0.65);
+    let mut input: Vec<Triangle<S>> = src.iter().map(|&t| tri(t)).collect();
+    let owned = build(&input, Degenerates::Refuse).unwrap();
+    let n = input.len();
+    let verify = |input: &[Triangle<S>]| {
+        let mut nodes = vec![Node::default(); nodes_for(n)];
+        let mut tris = vec![Mesh::<S>::filler(); n];
+        let mut order = vec![0u32; n];
+        let mut scratch = vec![0u64; 6 * n];
+        let deg = Degenerates::Refuse;
+        let mesh = owned.mesh();
+        mesh.verify(input, deg, &mut nodes, &mut tris, &mut order, &mut scratch)
+    };
+    assert_eq!(verify(&input), Ok(()));
+    input[3].v1.y = input[3].v1.y + S::from_f64(0.25);
+    assert_eq!(verify(&input), Err(MeshError::Mismatch));
+}
+
+macro_rules! per_scalar {
+    ($($test:ident $(#[$attr:meta])*),* $(,)?) => {$(
+        mod $test {
+            $(#[$attr])*
+            #[test]
+            fn f32() {
+                super::$test::<f32>()
+            }
+            $(#[$attr])*
+            #[test]
+            fn f64() {
+                super::$test::<f64>()
+            }
+            $(#[$attr])*
+            #[test]
+            fn i16f16() {
+                super::$test::<super::I16F16>()
+            }
+            $(#[$attr])*
+            #[test]
+            fn i32f32() {
+                super::$test::<super::I32F32>()
+            }
+        }
+    )*};
+}
+
+per_scalar!(
+    matches_linear_scan,
+    active_edges_are_scenes,
+    deterministic,
+    range_edges,
+    small_meshes,
+    errors_not_panics,
+    slides_as_linear,
+    sliver_seam_beyond_its_corner,
+    verify_baked_parts,
+    matches_linear_scan_long #[ignore = "10^5 sweeps per scalar: run with --release -- --ignored"],
+);
+
+/// A mesh baked into `static`s through the `const` constructors (here one floor triangle, its
+/// parts written out by hand) equals the run-time build and verifies against its source.
+mod baked {
+    use ballcast::{Edge, Grid, Mesh, Node, Parts, StandardTriangle, Vec3};
+
+    const H: f32 = core::f32::consts::FRAC_1_SQRT_2;
+    static TRIANGLES: [StandardTriangle<f32>; 1] = [StandardTriangle::from_parts(Parts {
+        origin: Vec3::new(0.0, 0.0, 0.0),
+        axes: [
+            Vec3::new(1.0, 0.0, 0.0),
+            Vec3::new(0.0, 1.0, 0.0),
+            Vec3::new(0.0, 0.0, 1.0),
+        ],
+        shape: [0.0, 1.0, 1.0],
+        normal: Vec3::new(0.0, 1.0, 0.0),
+        edges: [
+            Edge {
+                dir: [0.0, 1.0],
+                len: 1.0,
+            },
+            Edge {
+                dir: [H, -H],
+                len: core::f32::consts::SQRT_2,
+            },
+            Edge {
+                dir: [-1.0, 0.0],
+                len: 1.0,
+            },
+        ],
+        features: 0b11_1111,
+        two_sided: false,
+    })];
+    static ORDER: [u32; 1] = [0];
+    // The grid: cells of 2^-23 units; the triangle's box grown by a cell; one leaf of one triangle.
+    static NODES: [Node; 1] = [Node {
+        boxes: [[0, 0, 0, 129, 2, 129], [0; 6], [0; 6], [0; 6]],
+        shift: [16, 0, 16],
+        count: 1,
+        children: [1 << 31, 0, 0, 0],
+    }];
+    static MESH: Mesh<'static, f32> = Mesh::from_parts(
+        &NODES,
+        &TRIANGLES,
+        &ORDER,
+        Grid {
+            exponent: -23,
+            lo: [-1, -1, -1],
+            hi: [8_388_609, 1, 8_388_609],
+        },
+    );
+
+    #[test]
+    fn static_mesh_equals_the_build() {
+        let v = Vec3::new;
+        let source = [ballcast::Triangle::new(
+            v(0.0f32, 0.0, 0.0),
+            v(0.0, 0.0, 1.0),
+            v(1.0, 0.0, 0.0),
+        )];
+        let built = super::build(&source, ballcast::Degenerates::Refuse).unwrap();
+        assert_eq!(built.mesh(), MESH);
+        let (mut nodes, mut tris) = ([Node::default(); 1], [Mesh::<f32>::filler(); 1]);
+        let (mut order, mut scratch) = ([0u32; 1], [0u64; 6]);
+        let deg = ballcast::Degenerates::Refuse;
+        let checked = MESH.verify(
+            &source,
+            deg,
+            &mut nodes,
+            &mut tris,
+            &mut order,
+            &mut scratch,
+        );
+        assert_eq!(checked, Ok(()));
+    }
+}

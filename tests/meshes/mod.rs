@@ -1,0 +1,189 @@
+//! Shared by `tests/mesh.rs`: a mesh's parts in `Vec`s, the generators of heightfields, closed
+//! boxes and soups, and the check of a mesh against the linear scan.
+
+use crate::common::{P, Rng, v};
+use ballcast::bvh::nodes_for;
+use ballcast::{
+    Degenerates, Geometry, Grid, Mesh, MeshError, Node, Scalar, SceneHit, StandardTriangle, Sweep,
+    Triangle,
+};
+
+/// A mesh's parts in `Vec`s.
+pub struct Owned<S: Scalar> {
+    pub nodes: Vec<Node>,
+    pub tris: Vec<StandardTriangle<S>>,
+    pub order: Vec<u32>,
+    pub grid: Grid,
+}
+
+impl<S: Scalar> Owned<S> {
+    pub fn mesh(&self) -> Mesh<'_, S> {
+        Mesh::from_parts(&self.nodes, &self.tris, &self.order, self.grid)
+    }
+
+    /// The linear scan's reference: the same prepared triangles in input order (kept ones only).
+    pub fn linear(&self) -> Vec<StandardTriangle<S>> {
+        let mut by_input: Vec<(u32, StandardTriangle<S>)> = self
+            .order
+            .iter()
+            .copied()
+            .zip(self.tris.iter().copied())
+            .collect();
+        by_input.sort_by_key(|p| p.0);
+        by_input.into_iter().map(|p| p.1).collect()
+    }
+}
+
+pub fn build<S: Scalar>(src: &[Triangle<S>], deg: Degenerates) -> Result<Owned<S>, MeshError> {
+    let n = src.len();
+    let mut nodes = vec![Node::default(); nodes_for(n)];
+    let mut tris = vec![Mesh::<S>::filler(); n];
+    let mut order = vec![0u32; n];
+    let mut scratch = vec![0u64; 6 * n];
+    let (mesh, _) = Mesh::build(src, deg, &mut nodes, &mut tris, &mut order, &mut scratch)?;
+    let (used, kept, grid) = (mesh.nodes().len(), mesh.len(), mesh.grid());
+    nodes.truncate(used);
+    tris.truncate(kept);
+    order.truncate(kept);
+    Ok(Owned {
+        nodes,
+        tris,
+        order,
+        grid,
+    })
+}
+
+pub fn tri<S: Scalar>(t: [P; 3]) -> Triangle<S> {
+    Triangle::new(v(t[0]), v(t[1]), v(t[2]))
+}
+
+/// A heightfield of `w × w` cells of side `cell`, heights within ±`bump`, two triangles per cell
+/// facing +y, with the cell's diagonal chosen at random.
+pub fn heightfield(rng: &mut Rng, w: usize, cell: f64, bump: f64) -> Vec<[P; 3]> {
+    let h: Vec<f64> = (0..(w + 1) * (w + 1))
+        .map(|_| rng.range(-bump, bump))
+        .collect();
+    let p = |i: usize, j: usize| {
+        let half = w as f64 * cell / 2.0;
+        [
+            i as f64 * cell - half,
+            h[i * (w + 1) + j],
+            j as f64 * cell - half,
+        ]
+    };
+    let mut out = Vec::new();
+    for i in 0..w {
+        for j in 0..w {
+            let (a, b, c, d) = (p(i, j), p(i, j + 1), p(i + 1, j + 1), p(i + 1, j));
+            if rng.next() < 0.5 {
+                out.push([a, b, c]);
+                out.push([a, c, d]);
+            } else {
+                out.push([a, b, d]);
+                out.push([b, c, d]);
+            }
+        }
+    }
+    out
+}
+
+/// `count` closed boxes (12 triangles each, facing out), possibly overlapping.
+pub fn boxes(rng: &mut Rng, count: usize, half: f64) -> Vec<[P; 3]> {
+    let mut out = Vec::new();
+    for _ in 0..count {
+        let c = rng.point(half);
+        let e = [0; 3].map(|_| rng.range(0.2, half / 3.0));
+        let corner =
+            |k: usize| [0, 1, 2].map(|a| c[a] + if k >> a & 1 == 1 { e[a] } else { -e[a] });
+        // Faces as corner bit patterns, counter-clockwise seen from outside.
+        for f in [
+            [0, 2, 3, 1],
+            [4, 5, 7, 6],
+            [0, 1, 5, 4],
+            [2, 6, 7, 3],
+            [0, 4, 6, 2],
+            [1, 3, 7, 5],
+        ] {
+            let q = f.map(corner);
+            out.push([q[0], q[1], q[2]]);
+            out.push([q[0], q[2], q[3]]);
+        }
+    }
+    out
+}
+
+/// Random triangles overlapping in a cube, with slivers (one vertex near the opposite edge) and
+/// duplicates (exact copies, some with the winding reversed).
+pub fn soup(rng: &mut Rng, count: usize, half: f64) -> Vec<[P; 3]> {
+    let mut out: Vec<[P; 3]> = Vec::new();
+    while out.len() < count {
+        let roll = rng.next();
+        if roll < 0.15 && !out.is_empty() {
+            let t = out[(rng.next() * out.len() as f64) as usize];
+            out.push(if rng.next() < 0.5 {
+                t
+            } else {
+                [t[0], t[2], t[1]]
+            });
+        } else if roll < 0.3 {
+            let (a, b) = (rng.point(half), rng.point(half));
+            let s = rng.range(0.0, 1.0);
+            let m = [0, 1, 2].map(|k| a[k] + s * (b[k] - a[k]) + rng.range(-1e-3, 1e-3));
+            out.push([a, b, m]);
+        } else {
+            let c = rng.point(half);
+            let s = rng.range(0.3, half / 2.0);
+            out.push([0; 3].map(|_| {
+                let o = [0; 3].map(|_| rng.range(-s, s));
+                [c[0] + o[0], c[1] + o[1], c[2] + o[2]]
+            }));
+        }
+    }
+    out
+}
+
+/// Builds the mesh of `src` (skipping degenerates) and checks `sweeps` random sweeps within
+/// ±`half` against the linear scan; long paths, short moves, and paths aimed at vertices.
+pub fn against_linear<S: Scalar>(rng: &mut Rng, src: &[[P; 3]], sweeps: usize, half: f64) {
+    let input: Vec<Triangle<S>> = src.iter().map(|&t| tri(t)).collect();
+    let owned = build(&input, Degenerates::Skip).unwrap();
+    let mesh = owned.mesh();
+    let linear = owned.linear();
+    let mut kept: Vec<u32> = owned.order.clone();
+    kept.sort();
+    let mut hits = 0;
+    for k in 0..sweeps {
+        let r = match k % 4 {
+            0 => 0.0,
+            1 => rng.range(0.01, 0.2),
+            _ => rng.range(0.2, 1.0),
+        };
+        let p0 = rng.point(half);
+        let p1 = match k % 3 {
+            0 => rng.point(half),
+            1 => {
+                let d = rng.point(0.7);
+                [p0[0] + d[0], p0[1] + d[1] - 0.3, p0[2] + d[2]]
+            }
+            _ => {
+                // Aimed at a vertex, where many triangles tie.
+                let t = src[(rng.next() * src.len() as f64) as usize];
+                let at = t[(rng.next() * 3.0) as usize];
+                let e = rng.range(1.0, 2.0);
+                [0, 1, 2].map(|a| p0[a] + e * (at[a] - p0[a]))
+            }
+        };
+        let Ok(sweep) = Sweep::new(v::<S>(p0), v(p1), S::from_f64(r)) else {
+            continue;
+        };
+        let got = mesh.cast(&sweep);
+        let want = Geometry::cast(linear.as_slice(), &sweep).map(|h| SceneHit {
+            index: kept[h.index] as usize,
+            ..h
+        });
+        assert_eq!(got, want, "sweep {k}: {p0:?} -> {p1:?}, r {r}");
+        hits += got.is_some() as usize;
+    }
+    // The sweeps must exercise the tree: a fair share of them hit something.
+    assert!(hits > sweeps / 10, "only {hits} of {sweeps} sweeps hit");
+}
