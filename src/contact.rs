@@ -112,7 +112,7 @@ impl<S: Scalar> StandardTriangle<S> {
         self.two_sided
     }
 
-    /// The earliest contact of the sweep's ball with the triangle: its face (the seed's test),
+    /// The earliest contact of the sweep's ball with the triangle: its face (the course notes' test),
     /// its active edges and its active vertices.
     ///
     /// Rules, so that results are predictable at the boundaries:

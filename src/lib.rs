@@ -58,7 +58,7 @@
 //! - [`vec3`] holds [`Vec3`].
 //! - [`triangle`] holds [`Triangle`] and [`StandardTriangle`], the precomputed standard frame.
 //! - [`sweep`] holds [`Sweep`] (a validated moving ball) and [`StandardSweep`].
-//! - [`face`] holds the seed's face test, [`standard_face`] and
+//! - [`face`] holds the course notes' face test, [`standard_face`] and
 //!   [`StandardTriangle::face_collision`].
 //! - [`contact`] holds edge and vertex contacts, [`StandardTriangle::cast`] and [`Features`].
 //! - [`scene`] holds [`Scene`], many triangles with active edges from adjacency, and [`SceneHit`].

@@ -51,7 +51,7 @@ impl<S: Scalar> Sweep<S> {
     }
 }
 
-/// A sweep expressed in a triangle's standard frame, validated: the input of the seed's
+/// A sweep expressed in a triangle's standard frame, validated: the input of the course notes'
 /// standardized face test ([`standard_face`](crate::standard_face)).
 ///
 /// Obtain one from [`StandardTriangle::standardize`](crate::StandardTriangle::standardize), or
