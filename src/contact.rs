@@ -78,12 +78,13 @@ impl Default for Features {
 }
 
 /// A contact in the standard frame: alpha, the offset from the touched point to the ball's
-/// centre (`None` for the face, whose normal is +y), and the feature.
-type Touch<S> = (S, Option<Vec3<S>>, Contact);
+/// centre (`None` for the face, whose normal is +y), the feature, and alpha unrounded, as a
+/// fraction `(num, den)`, from which the contact's position is computed in one rounding.
+type Touch<S> = (S, Option<Vec3<S>>, Contact, (S, S));
 
 /// An edge or vertex contact with its alpha still as a fraction `t / len` (see `first_touch`):
 /// two contacts whose rounded alphas tie are still ordered exactly by it.
-type Timed<S> = (Touch<S>, (S, S));
+type Timed<S> = ((S, Option<Vec3<S>>, Contact), (S, S));
 
 impl<S: Scalar> StandardTriangle<S> {
     /// The same triangle with only the given edges and vertices taking part in [`cast`](Self::cast).
@@ -156,7 +157,11 @@ impl<S: Scalar> StandardTriangle<S> {
             s.p0.y = -s.p0.y;
             s.p1.y = -s.p1.y;
         }
-        let (alpha, offset, contact) = self.cast_front(&s)?;
+        let (alpha, offset, contact, (num, den)) = self.cast_front(&s)?;
+        // The centre at contact from the unrounded fraction: a few steps of `S` off, where
+        // `p0 + alpha (p1 - p0)` would carry alpha's rounding times the path's length.
+        let (p0, p1) = (sweep.p0(), sweep.p1());
+        let position = p0 + (p1 - p0).map(|c| S::mul_div(c, num, den));
         let normal = match offset {
             None => self.normal(),
             Some(mut v) => {
@@ -168,6 +173,7 @@ impl<S: Scalar> StandardTriangle<S> {
         };
         Some(Hit {
             alpha,
+            position,
             normal: if back && offset.is_none() {
                 -normal
             } else {
@@ -193,10 +199,10 @@ impl<S: Scalar> StandardTriangle<S> {
             && beta < S::ONE
             && (contains(self, xq, zq) || self.within_seams(xq, zq, r))
         {
-            return Some((beta, None, Contact::Face));
+            return Some((beta, None, Contact::Face, (r - p0.y, p1.y - p0.y)));
         }
         if p0.y < r && (contains(self, p0.x, p0.z) || self.within_seams(p0.x, p0.z, r)) {
-            return Some((S::ZERO, None, Contact::Face));
+            return Some((S::ZERO, None, Contact::Face, (S::ZERO, S::ONE)));
         }
         // Edges and vertices can only be touched once the centre is below height r: from q'
         // (or the start, if already there) to the end.
@@ -239,7 +245,7 @@ impl<S: Scalar> StandardTriangle<S> {
             }
         }
         // Along the plane, only what the ball already overlaps counts.
-        best.map(|(touch, _)| touch)
+        best.map(|((alpha, offset, contact), key)| (alpha, offset, contact, key))
             .filter(|(alpha, ..)| d.y < S::ZERO || *alpha == S::ZERO)
     }
 

@@ -89,8 +89,10 @@ impl<S: Scalar> StandardTriangle<S> {
             return None;
         }
         let alpha = standard_face(self, &self.standardize_from(sweep, (y0, y1)))?;
+        let (p0, p1) = (sweep.p0(), sweep.p1());
         Some(Hit {
             alpha,
+            position: p0 + (p1 - p0).map(|c| S::mul_div(c, r - y0, y1 - y0)),
             normal: self.normal(),
             contact: Contact::Face,
         })

@@ -28,7 +28,11 @@ pub enum Contact {
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Hit<S> {
     /// Fraction of the path from `p0` to `p1` travelled at first contact, in `[0, 1)`.
+    #[doc(alias = "time_of_impact")]
     pub alpha: S,
+    /// The ball's centre at first contact, `p0 + alpha (p1 - p0)` computed from alpha before
+    /// it is rounded: its error is a few steps of `S`, not alpha's step times the path.
+    pub position: Vec3<S>,
     /// Unit contact normal in world orientation, pointing towards the ball's centre.
     pub normal: Vec3<S>,
     /// The feature touched.

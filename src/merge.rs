@@ -84,6 +84,7 @@ impl<S: Scalar> Earliest<S> {
             index,
             Hit {
                 alpha,
+                position,
                 normal,
                 contact,
             },
@@ -116,6 +117,7 @@ impl<S: Scalar> Earliest<S> {
         };
         Some(SceneHit {
             alpha,
+            position,
             normal,
             contact,
             index,

@@ -42,6 +42,20 @@ impl Precision {
         self.epsilon / 2.0 * path + self.height_error(extent)
     }
 
+    /// The largest error expected of a contact's position (`Hit::position`) along the normal,
+    /// for coordinates within `±extent`: the rounding of the heights alone, since the position
+    /// is formed from alpha before alpha is rounded.
+    ///
+    /// ```
+    /// use ballcast::Scalar;
+    /// use fixed::types::I16F16;
+    /// // Eight steps of 2^-16 anywhere in I16F16's range, whatever the path's length.
+    /// assert_eq!(I16F16::PRECISION.position_error(100.0), 8.0 / 65536.0);
+    /// ```
+    pub const fn position_error(&self, extent: f64) -> f64 {
+        self.height_error(extent)
+    }
+
     /// The rounding of a height (a coordinate in a triangle's frame) for coordinates within
     /// `±extent`: four steps of the spacing at `extent` (at least 1) for floats, eight absolute
     /// steps for fixed-point.
@@ -77,6 +91,8 @@ pub struct Verdict {
     pub fits: bool,
     /// Expected largest contact error along the normal (meaningful only if `fits`).
     pub distance_error: f64,
+    /// Expected largest error of the contact's position along the normal.
+    pub position_error: f64,
     /// The smallest radius [`move_and_slide`](crate::move_and_slide) accepts at the extent.
     pub min_radius: f64,
 }
@@ -106,6 +122,7 @@ impl Verdict {
             precision,
             fits: precision.fits(extent, radius),
             distance_error: precision.distance_error(extent, path),
+            position_error: precision.position_error(extent),
             min_radius: precision.min_radius(extent),
         }
     }

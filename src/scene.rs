@@ -46,7 +46,10 @@ impl<S: Scalar> Bounds<S> {
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct SceneHit<S> {
     /// Fraction of the path travelled at first contact, in `[0, 1)`.
+    #[doc(alias = "time_of_impact")]
     pub alpha: S,
+    /// The ball's centre at first contact (see [`Hit::position`](crate::Hit::position)).
+    pub position: Vec3<S>,
     /// Unit contact normal; where several triangles are touched at the same alpha (within four
     /// steps of the scalar's resolution), the normalised sum of their normals in index order.
     pub normal: Vec3<S>,

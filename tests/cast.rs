@@ -4,7 +4,7 @@
 
 mod common;
 
-use ballcast::{Contact, Features, Scalar, StandardTriangle, Sweep, Triangle};
+use ballcast::{Contact, Features, Scalar, StandardTriangle, Sweep, Triangle, Vec3};
 use common::{Case, P, Rng, Tolerance, angle, back, distance_to_triangle, v};
 use fixed::types::{I16F16, I32F32};
 
@@ -216,11 +216,84 @@ fn agrees_with_f64<S: Tolerance>(cases: usize) -> (f64, f64) {
     (worst_d, worst_a)
 }
 
+/// `Hit::position` on random casts at scene scale 10: where alpha says (within alpha's own
+/// rounding over the path), and, along the normal, within `S::POSITION` of f64's on the same
+/// rounded inputs, where `p0 + alpha (p1 - p0)` would be off by alpha's step times the path.
+/// Returns the largest error along the normal on face contacts and on all.
+fn position_is_precise<S: Tolerance>(cases: usize) -> (f64, f64) {
+    let mut rng = Rng(12);
+    let (mut face, mut worst) = (0.0f64, 0.0f64);
+    for i in 0..cases {
+        let c = if i % 2 == 0 {
+            rng.case(10.0)
+        } else {
+            rng.falling_case(10.0)
+        };
+        let c = c.rounded::<S>();
+        let hit = |c: &common::Case| -> Option<(ballcast::Hit<f64>, f64)> {
+            let [a, b, t] = c.tri.map(v::<S>);
+            let st = StandardTriangle::new(&Triangle::new(a, b, t)).ok()?;
+            let h = st.cast(&Sweep::new(v(c.p0), v(c.p1), S::from_f64(c.r)).ok()?)?;
+            let h = ballcast::Hit {
+                alpha: h.alpha.to_f64(),
+                position: Vec3::from(back(h.position)),
+                normal: Vec3::from(back(h.normal)),
+                contact: h.contact,
+            };
+            Some((h, c.r))
+        };
+        let Some((got, _)) = hit(&c) else { continue };
+        let path = common::sub(c.p1, c.p0);
+        let said = common::add(c.p0, common::scale(path, got.alpha));
+        let off = common::norm(common::sub(said, got.position.to_array()));
+        let allowed = S::EPSILON.to_f64() / 2.0 * common::norm(path) + 4.0 * S::spacing(40.0);
+        assert!(
+            off <= allowed,
+            "{}: position {off:e} from alpha's on {c:?}",
+            S::NAME
+        );
+        let [a, b, t] = c.tri.map(v::<f64>);
+        let st = StandardTriangle::new(&Triangle::new(a, b, t)).unwrap();
+        let Some(want) = st.cast(&Sweep::new(v(c.p0), v(c.p1), c.r).unwrap()) else {
+            continue;
+        };
+        if want.contact != got.contact {
+            continue; // a different feature by rounding: compared by the distance tests
+        }
+        let d = common::sub(got.position.to_array(), want.position.to_array());
+        let along = common::dot(d, want.normal.to_array()).abs();
+        assert!(
+            along <= S::POSITION,
+            "{}: position error {along:e} on {c:?}",
+            S::NAME
+        );
+        // The planner's model holds case by case.
+        let extent = c.tri.iter().chain([&c.p0, &c.p1]).flatten();
+        let extent = extent.fold(0.0f64, |m, x| m.max(x.abs()));
+        let planned = S::PRECISION.position_error(extent);
+        assert!(
+            along <= planned,
+            "{}: {along:e} > planned {planned:e}",
+            S::NAME
+        );
+        worst = worst.max(along);
+        if got.contact == Contact::Face {
+            face = face.max(along);
+        }
+    }
+    (face, worst)
+}
+
 macro_rules! per_scalar {
     ($($m:ident: $t:ty),*) => {$(mod $m {
         use super::*;
         #[test]
         fn hand_worked_edge_vertex_and_side_cases() { hand_cases::<$t>() }
+        #[test]
+        fn position_is_precise_in_every_scalar() {
+            let (face, all) = position_is_precise::<$t>(50_000);
+            println!("{}: contact position error along the normal {face:.3e} (faces), {all:.3e} (all)", <$t>::NAME);
+        }
         #[test]
         fn cast_agrees_with_f64() {
             let (d, a) = agrees_with_f64::<$t>(100_000);

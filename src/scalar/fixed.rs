@@ -199,6 +199,22 @@ macro_rules! fixed_scalar {
                 let p = $wmul(s.to_bits(), u.to_bits());
                 <$t>::from_bits(round_shift!(p, $ufrac) as $bits)
             }
+            fn mul_div(a: Self, n: Self, d: Self) -> Self {
+                // The product carries 2F fractional bits; the quotient by d's bits F.
+                let (p, d) = ($wmul(a.to_bits(), n.to_bits()), d.to_bits() as $wide);
+                if d == 0 {
+                    return <$t>::ZERO;
+                }
+                // |p| < 2^(2 BITS - 2): the quotient cannot overflow, so wrapping is exact.
+                let (q, r) = (p.wrapping_div(d), p.wrapping_rem(d));
+                let away = if (p < 0) == (d < 0) { 1 } else { -1 };
+                let q = if 2 * r.unsigned_abs() >= d.unsigned_abs() {
+                    q + away
+                } else {
+                    q
+                };
+                saturate!($t, $bits, $wide, q)
+            }
             fn direction(v: Vec3<Self>) -> Option<(Self, Vec3<$unit>)> {
                 // Components below 2^(BITS-1) square to below 2^(2 BITS - 2): three fit unsigned.
                 let u = v.map(|c| c.to_bits().unsigned_abs());

@@ -97,6 +97,10 @@ macro_rules! float_scalar {
                 Some(Self::unit_normalize(c.map(|x| x / m)))
             }
             #[inline]
+            fn mul_div(a: Self, n: Self, d: Self) -> Self {
+                if d == 0.0 { 0.0 } else { a * n / d }
+            }
+            #[inline]
             fn div_pow2(v: Self, k: u32) -> Self {
                 v / (1u64 << k) as $t
             }

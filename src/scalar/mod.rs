@@ -126,6 +126,9 @@ pub(crate) mod sealed {
         fn height_error(m: Self) -> Self;
         /// `s * u` rounded once.
         fn mul_unit(s: Self, u: Self::Unit) -> Self;
+        /// `a * n / d`, the fixed-point product taken exactly and rounded once (floats: two IEEE
+        /// operations). Needs `|n| <= |d|`; zero for `d == 0`.
+        fn mul_div(a: Self, n: Self, d: Self) -> Self;
         /// The length of `v` and its unit direction; `None` for the zero vector. Needs
         /// components within `8 * LIMIT` (fixed-point: the length is the exact integer square root
         /// of the exact sum of squares, rounded to nearest).

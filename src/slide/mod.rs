@@ -270,7 +270,7 @@ fn run<S: Scalar, G: Geometry<S> + ?Sized>(
             rest = zero;
             break;
         };
-        let center = out.position + rest.scale(hit.alpha);
+        let center = hit.position;
         elapsed = elapsed + (S::ONE - elapsed).mul(hit.alpha);
         *slot = Some(SlideContact {
             hit,
@@ -279,7 +279,13 @@ fn run<S: Scalar, G: Geometry<S> + ?Sized>(
             time: elapsed,
         });
         let (alpha, lift) = stand_off(&hit, rest, skin, S::height_error(extent));
-        out.position = out.position + rest.scale(alpha) + lift;
+        // From the contact's own position (a few steps of `S` off, where alpha's rounding
+        // times the path would be more), backed off along the path; or not moved at all.
+        if alpha == hit.alpha {
+            out.position = hit.position + lift;
+        } else if alpha > S::ZERO {
+            out.position = hit.position - rest.scale(hit.alpha - alpha);
+        }
         let left = rest.scale(S::ONE - alpha);
         add_planes(&mut planes, &hit);
         rest = constrain(left, &planes, displacement);

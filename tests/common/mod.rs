@@ -147,6 +147,11 @@ pub trait Tolerance: Scalar {
     const DISTANCE: f64;
     /// Angle between the reported normal and f64's, radians.
     const ANGLE: f64;
+    /// Error of `Hit::position` along the normal: from the unrounded fraction, so a few steps
+    /// of the scalar at the scene's extent plus the heights' rounding, with no alpha step times
+    /// the path in it (fixed-point); floats' alpha is relative already, and their position is
+    /// as good as their distance (`DISTANCE`), steps at coordinates up to 40 included.
+    const POSITION: f64;
     /// Floats round relative to magnitude; fixed-point has one absolute step everywhere.
     const RELATIVE: bool;
     /// The spacing of representable values near `x`.
@@ -164,24 +169,28 @@ impl Tolerance for f64 {
     const RELATIVE: bool = true;
     const DISTANCE: f64 = 1e-12;
     const ANGLE: f64 = 1e-12;
+    const POSITION: f64 = 1e-12;
 }
 impl Tolerance for f32 {
     const NAME: &'static str = "f32";
     const RELATIVE: bool = true;
     const DISTANCE: f64 = 1e-5;
     const ANGLE: f64 = 1e-5;
+    const POSITION: f64 = 2e-5;
 }
 impl Tolerance for fixed::types::I32F32 {
     const NAME: &'static str = "I32F32";
     const RELATIVE: bool = false;
     const DISTANCE: f64 = 2e-8;
     const ANGLE: f64 = 1e-7;
+    const POSITION: f64 = 2e-8;
 }
 impl Tolerance for fixed::types::I16F16 {
     const NAME: &'static str = "I16F16";
     const RELATIVE: bool = false;
     const DISTANCE: f64 = 5e-4;
     const ANGLE: f64 = 1e-3;
+    const POSITION: f64 = 1e-4;
 }
 
 /// The measured errors of one scalar against the model on one case.
