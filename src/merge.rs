@@ -22,11 +22,16 @@ pub(crate) const TIES: usize = 8;
 /// ball, and a slide uses at most this many.
 pub const PLANES: usize = 4;
 
+/// A tied contact: its triangle's index, alpha, normal and feature.
+type Tie<S> = (usize, S, Vec3<S>, Contact);
+
 /// An accumulator for the contacts of one sweep, fed in any order with [`offer`](Self::offer).
 #[derive(Debug)]
 pub(crate) struct Earliest<S: Scalar> {
     best: Option<(usize, Hit<S>)>,
-    ties: Vec<(usize, Hit<S>), TIES>,
+    /// The tied contacts as `(index, alpha, normal, feature)`: all the merge needs, so that a
+    /// firmware's stack pays for no more.
+    ties: Vec<Tie<S>, TIES>,
     /// Set on the second visit: the window no longer moves.
     fixed: Option<S>,
     /// A tied contact was dropped for room while the window could still shrink.
@@ -64,10 +69,10 @@ impl<S: Scalar> Earliest<S> {
         if first {
             self.best = Some((index, hit));
             let reach = self.reach();
-            self.ties.retain(|(_, h)| h.alpha <= reach);
+            self.ties.retain(|t| t.1 <= reach);
         }
         // Keep the buffer sorted by index, dropping the largest index when full.
-        let at = self.ties.partition_point(|(i, _)| *i < index);
+        let at = self.ties.partition_point(|t| t.0 < index);
         if self.ties.is_full() {
             self.lossy |= self.fixed.is_none();
             if at == TIES {
@@ -76,7 +81,9 @@ impl<S: Scalar> Earliest<S> {
             self.ties.pop();
         }
         // Room was made above: the insert cannot fail.
-        let _ = self.ties.insert(at, (index, hit));
+        let _ = self
+            .ties
+            .insert(at, (index, hit.alpha, hit.normal, hit.contact));
     }
 
     fn finish(self) -> Option<SceneHit<S>> {
@@ -95,19 +102,19 @@ impl<S: Scalar> Earliest<S> {
         let face_has = |n: Vec3<S>| {
             self.ties
                 .iter()
-                .any(|(_, h)| h.contact == Contact::Face && same_plane(h.normal, n))
+                .any(|&(_, _, m, c)| c == Contact::Face && same_plane(m, n))
         };
         let mut planes = [None; PLANES];
         let (mut sum, mut count, mut only) = (Vec3::new(S::ZERO, S::ZERO, S::ZERO), 0, normal);
-        for (_, h) in &self.ties {
-            if h.contact != Contact::Face && face_has(h.normal) {
+        for &(_, _, n, c) in &self.ties {
+            if c != Contact::Face && face_has(n) {
                 continue;
             }
-            (sum, count, only) = (sum + h.normal, count + 1, h.normal);
-            if !planes.iter().flatten().any(|p| same_plane(*p, h.normal))
+            (sum, count, only) = (sum + n, count + 1, n);
+            if !planes.iter().flatten().any(|p| same_plane(*p, n))
                 && let Some(slot) = planes.iter_mut().find(|p| p.is_none())
             {
-                *slot = Some(h.normal);
+                *slot = Some(n);
             }
         }
         let normal = if count > 1 {

@@ -60,7 +60,7 @@ fn contact_time_and_point_are_where_the_ball_touched<S: Tolerance>() {
         S::NAME,
         c.time
     );
-    let (center, point) = (back(c.center), back(c.point));
+    let (center, point) = (back(c.hit.position), back(c.point));
     for (got, want) in [(center, [0.5, 0.5, 0.0]), (point, [0.5, 0.0, 0.0])] {
         assert!(
             common::norm(common::sub(got, want)) < tol,

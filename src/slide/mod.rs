@@ -39,12 +39,12 @@ pub struct Slide<S> {
 /// A contact met by [`move_and_slide`], with where and when it happened.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct SlideContact<S> {
-    /// What the sweep met. Its `alpha` is a fraction of that sweep (what was left of the
-    /// motion at the time), not of the call: see [`time`](Self::time).
+    /// What the sweep met: its `position` is the ball's centre at the moment of contact, its
+    /// `alpha` a fraction of that sweep (what was left of the motion at the time), not of the
+    /// call: see [`time`](Self::time).
     pub hit: SceneHit<S>,
-    /// The ball's centre at the moment of contact.
-    pub center: Vec3<S>,
-    /// The touched point: `center - normal * radius`, with the contact's (merged) normal.
+    /// The touched point: the centre (`hit.position`) less the contact's (merged) normal times
+    /// the radius.
     pub point: Vec3<S>,
     /// The fraction of the call's time step elapsed at contact, in `[0, 1)`: the call's
     /// displacement is taken as travelled at constant speed over the step, and each sweep
@@ -62,8 +62,11 @@ impl<S: Scalar> Slide<S> {
     pub fn clip(&self, velocity: Vec3<S>) -> Result<Vec3<S>, Error> {
         let v = check::point(velocity, S::LIMIT)?;
         let mut planes: Planes<S> = Vec::new();
+        let zero = Vec3::new(S::ZERO, S::ZERO, S::ZERO);
         for c in self.contacts.iter().flatten() {
-            add_planes(&mut planes, &c.hit);
+            if !add_planes(&mut planes, &c.hit) {
+                return Ok(zero);
+            }
         }
         Ok(constrain(v, &planes, v))
     }
@@ -270,12 +273,10 @@ fn run<S: Scalar, G: Geometry<S> + ?Sized>(
             rest = zero;
             break;
         };
-        let center = hit.position;
         elapsed = elapsed + (S::ONE - elapsed).mul(hit.alpha);
         *slot = Some(SlideContact {
             hit,
-            center,
-            point: center - hit.normal.scale(radius),
+            point: hit.position - hit.normal.scale(radius),
             time: elapsed,
         });
         let (alpha, lift) = stand_off(&hit, rest, skin, S::height_error(extent));
@@ -287,8 +288,11 @@ fn run<S: Scalar, G: Geometry<S> + ?Sized>(
             out.position = hit.position - rest.scale(hit.alpha - alpha);
         }
         let left = rest.scale(S::ONE - alpha);
-        add_planes(&mut planes, &hit);
-        rest = constrain(left, &planes, displacement);
+        rest = if add_planes(&mut planes, &hit) {
+            constrain(left, &planes, displacement)
+        } else {
+            zero
+        };
         out.blocked += left - rest;
     }
     out.blocked += rest;

@@ -5,10 +5,9 @@ use crate::merge::{PLANES, same_plane};
 use crate::{Scalar, SceneHit, Vec3, contact::unit};
 use heapless::Vec;
 
-use super::MAX_SLIDES;
-
-/// The planes a call has touched: up to [`PLANES`] per contact.
-pub(super) type Planes<S> = Vec<Vec3<S>, { MAX_SLIDES * PLANES }>;
+/// The distinct planes a call has touched. Eight is more than a ball ever needs (three stop it);
+/// a call that touches more stops where it is (see [`add_planes`]).
+pub(super) type Planes<S> = Vec<Vec3<S>, { 2 * PLANES }>;
 
 /// Where to stop short of a contact met along `rest`, as a fraction of it, and a lift to add.
 /// A ball that travelled stops a skin short, measured along the normal, by backing off along
@@ -44,14 +43,13 @@ pub(super) fn magnitude<S: Scalar>(p: Vec3<S>) -> S {
     crate::scalar::largest(p.x.abs(), p.y.abs(), p.z.abs())
 }
 
-/// Adds a contact's planes to those already touched, each distinct plane once.
-pub(super) fn add_planes<S: Scalar>(planes: &mut Planes<S>, hit: &SceneHit<S>) {
-    for n in hit.planes.iter().flatten() {
-        if !planes.iter().any(|p| same_plane(*p, *n)) {
-            // Room for every plane of every contact: cannot fail.
-            let _ = planes.push(*n);
-        }
-    }
+/// Adds a contact's planes to those already touched, each distinct plane once; false if one
+/// found no room, in which case the caller must not move on (it cannot respect that plane).
+pub(super) fn add_planes<S: Scalar>(planes: &mut Planes<S>, hit: &SceneHit<S>) -> bool {
+    hit.planes
+        .iter()
+        .flatten()
+        .all(|n| planes.iter().any(|p| same_plane(*p, *n)) || planes.push(*n).is_ok())
 }
 
 /// `v` constrained by every plane (unit normals): unchanged if it moves into none; else the

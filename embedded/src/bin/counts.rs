@@ -179,8 +179,24 @@ trait Measure: Scalar {
     fn full_cast(t: &StandardTriangle<Self>, sweeps: &[Sweep<Self>]) -> u32;
 }
 
-measured!(f32, "f32", face_f32, bench_full_f32, bench_early_f32, cast_f32, bench_cast_f32);
-measured!(f64, "f64", face_f64, bench_full_f64, bench_early_f64, cast_f64, bench_cast_f64);
+measured!(
+    f32,
+    "f32",
+    face_f32,
+    bench_full_f32,
+    bench_early_f32,
+    cast_f32,
+    bench_cast_f32
+);
+measured!(
+    f64,
+    "f64",
+    face_f64,
+    bench_full_f64,
+    bench_early_f64,
+    cast_f64,
+    bench_cast_f64
+);
 measured!(
     I16F16,
     "I16F16",
