@@ -12,6 +12,7 @@ use fixed::types::{I16F16, I32F32};
 use std::hint::black_box;
 
 mod inputs;
+mod peer;
 
 use inputs::*;
 
@@ -54,42 +55,14 @@ fn single<S: Scalar>(c: &mut Criterion, name: &str) {
 }
 
 fn parry(c: &mut Criterion) {
-    use parry3d::math::{Pose, Vector};
-    use parry3d::query::{ShapeCastOptions, cast_shapes};
-    use parry3d::shape::{Ball, Triangle as PTriangle};
-    let p = |a: P| Vector::new(a[0] as f32, a[1] as f32, a[2] as f32);
-    let t = PTriangle::new(p(TRIANGLE[0]), p(TRIANGLE[1]), p(TRIANGLE[2]));
-    let opts = ShapeCastOptions {
-        max_time_of_impact: 1.0,
-        target_distance: 0.0,
-        stop_at_penetration: false,
-        compute_impact_geometry_on_penetration: false,
-    };
+    let p = peer::point;
+    let t = parry3d::shape::Triangle::new(p(TRIANGLE[0]), p(TRIANGLE[1]), p(TRIANGLE[2]));
     for (group, mix) in MIXES {
-        let sw: Vec<(Vector, Vector, Ball)> = mix()
-            .iter()
-            .map(|&(a, b, r)| (p(a), p(b) - p(a), Ball::new(r as f32)))
-            .collect();
+        let sw = peer::sweeps(&mix());
         let mut g = c.benchmark_group(group);
         g.throughput(Throughput::Elements(SWEEPS as u64));
         g.bench_function(BenchmarkId::new("parry3d_cast_shapes", "f32"), |b| {
-            b.iter(|| {
-                sw.iter()
-                    .filter(|(p0, d, ball)| {
-                        let from = Pose::translation(p0.x, p0.y, p0.z);
-                        let hit = cast_shapes(
-                            &from,
-                            *d,
-                            ball,
-                            &Pose::IDENTITY,
-                            Vector::ZERO,
-                            black_box(&t),
-                            opts,
-                        );
-                        matches!(hit, Ok(Some(_)))
-                    })
-                    .count()
-            })
+            b.iter(|| peer::hits(&t, &sw))
         });
         g.finish();
     }

@@ -1,4 +1,4 @@
-//! `Mesh` on the bumpy heightfield (1-unit cells, heights within ±0.65 from a fixed
+//! `Mesh` on a bumpy heightfield (1-unit cells, heights within ±0.65 from a fixed
 //! sin/cos formula, front faces up) at 512 / 8 192 / 100 352 triangles, `f32` and `I16F16`:
 //! the build (preparation, active edges and tree, into buffers allocated beforehand), short moves
 //! and long casts; parry3d's `TriMesh` (build and ball shape cast) in the same groups as the peer.
@@ -13,6 +13,7 @@ use fixed::types::I16F16;
 use std::hint::black_box;
 
 mod inputs;
+mod peer;
 
 type P = [f64; 3];
 /// Sweeps per iteration of a query benchmark.
@@ -141,13 +142,11 @@ fn ours<S: Scalar>(c: &mut Criterion, name: &str, w: usize) {
 }
 
 fn parry(c: &mut Criterion, w: usize) {
-    use parry3d::math::{Pose, Vector};
-    use parry3d::query::{ShapeCastOptions, cast_shapes};
-    use parry3d::shape::{Ball, TriMesh};
+    use parry3d::math::Vector;
+    use parry3d::shape::TriMesh;
     let tris = heightfield(w);
     let n = tris.len();
-    let p = |a: P| Vector::new(a[0] as f32, a[1] as f32, a[2] as f32);
-    let vertices: Vec<Vector> = tris.iter().flatten().map(|&a| p(a)).collect();
+    let vertices: Vec<Vector> = tris.iter().flatten().map(|&a| peer::point(a)).collect();
     let indices: Vec<[u32; 3]> = (0..n as u32)
         .map(|k| [3 * k, 3 * k + 1, 3 * k + 2])
         .collect();
@@ -158,41 +157,15 @@ fn parry(c: &mut Criterion, w: usize) {
     });
     g.finish();
     let mesh = TriMesh::new(vertices.clone(), indices.clone()).unwrap();
-    let opts = ShapeCastOptions {
-        max_time_of_impact: 1.0,
-        target_distance: 0.0,
-        stop_at_penetration: false,
-        compute_impact_geometry_on_penetration: false,
-    };
     let mut rng = inputs::Rng(0x4D45_5348 + w as u64);
     let short = short_moves(w, &mut rng);
     let long = long_casts(w, &mut rng);
     for (what, raw) in [("short_move", &short), ("long_cast", &long)] {
-        let sweeps: Vec<(Vector, Vector, Ball)> = raw
-            .iter()
-            .map(|&(a, b, r)| (p(a), p(b) - p(a), Ball::new(r as f32)))
-            .collect();
+        let sweeps = peer::sweeps(raw);
         let mut g = c.benchmark_group(format!("mesh_{what}_{n}"));
         g.throughput(Throughput::Elements(QUERIES as u64));
         g.bench_function(BenchmarkId::from_parameter("parry3d_TriMesh"), |b| {
-            b.iter(|| {
-                sweeps
-                    .iter()
-                    .filter(|(p0, d, ball)| {
-                        let from = Pose::translation(p0.x, p0.y, p0.z);
-                        let hit = cast_shapes(
-                            &from,
-                            *d,
-                            ball,
-                            &Pose::IDENTITY,
-                            Vector::ZERO,
-                            black_box(&mesh),
-                            opts,
-                        );
-                        matches!(hit, Ok(Some(_)))
-                    })
-                    .count()
-            })
+            b.iter(|| peer::hits(&mesh, &sweeps))
         });
         g.finish();
     }
