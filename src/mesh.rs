@@ -149,6 +149,8 @@ impl<'a, S: Scalar> Mesh<'a, S> {
 
     /// Prepares `sources`, computes their active edges and builds the tree, into the given
     /// buffers; returns the mesh borrowing them and the number of degenerate triangles skipped.
+    /// Active edges follow [`Scene`](crate::Scene)'s shared-edge rule (flat or valley: off);
+    /// unlike a `Scene`, a mesh does not yet switch off edges covered across T-junctions.
     ///
     /// Buffers: `nodes` at least [`nodes_for`](crate::bvh::nodes_for)`(kept)` (kept = input less
     /// skipped; `nodes_for(sources.len())` always suffices), `triangles` and `order` one per input
