@@ -6,6 +6,8 @@ use crate::Scalar;
 use fixed::types::{I16F16, I32F32};
 
 /// What the planner knows of a scalar type: its safe range and how it rounds.
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Precision {
     /// The type's name.
@@ -83,6 +85,8 @@ impl Precision {
 }
 
 /// The planner's verdict on one scalar.
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Verdict {
     /// The scalar.

@@ -15,6 +15,7 @@ use crate::{Error, Scalar, Vec3, check};
 /// assert_eq!(Sweep::new(s.p0(), Vec3::new(f32::NAN, 0.0, 0.0), 1.0).unwrap_err(), Error::NonFinite);
 /// # Ok::<(), Error>(())
 /// ```
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Sweep<S> {
     p0: Vec3<S>,
@@ -56,6 +57,7 @@ impl<S: Scalar> Sweep<S> {
 ///
 /// Obtain one from [`StandardTriangle::standardize`](crate::StandardTriangle::standardize), or
 /// build one directly from standard-frame coordinates with [`StandardSweep::new`].
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct StandardSweep<S> {
     pub(crate) p0: Vec3<S>,

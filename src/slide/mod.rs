@@ -26,6 +26,8 @@ use rules::{Planes, add_planes, constrain, magnitude, stand_off};
 pub const MAX_SLIDES: usize = 4;
 
 /// The outcome of [`move_and_slide`]: a plain `Copy` struct.
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Slide<S> {
     /// Where the ball's centre ends.
@@ -37,6 +39,8 @@ pub struct Slide<S> {
 }
 
 /// A contact met by [`move_and_slide`], with where and when it happened.
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct SlideContact<S> {
     /// What the sweep met: its `position` is the ball's centre at the moment of contact, its
@@ -108,6 +112,7 @@ impl<S: Scalar> Slide<S> {
 /// assert!((out.position.y - 0.51).abs() < 1e-6);
 /// # Ok::<(), ballcast::Error>(())
 /// ```
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Slider<S> {
     radius: S,
