@@ -130,12 +130,7 @@ fn ours<S: Scalar>(c: &mut Criterion, name: &str, w: usize) {
         let mut g = c.benchmark_group(format!("mesh_{what}_{n}"));
         g.throughput(Throughput::Elements(QUERIES as u64));
         g.bench_function(BenchmarkId::from_parameter(name), |b| {
-            b.iter(|| {
-                sweeps
-                    .iter()
-                    .filter(|s| black_box(&mesh).cast(s).is_some())
-                    .count()
-            })
+            b.iter(|| hits(&mesh, sweeps))
         });
         g.finish();
     }
@@ -172,6 +167,14 @@ fn parry(c: &mut Criterion, w: usize) {
 }
 
 /// The room of `benches/cast.rs` (256 triangles, short moves) as a `Scene` and as a `Mesh`.
+/// How many of the sweeps hit the geometry.
+fn hits<S: Scalar, G: ballcast::Geometry<S>>(geometry: &G, sweeps: &[Sweep<S>]) -> usize {
+    sweeps
+        .iter()
+        .filter(|s| black_box(geometry).cast(s).is_some())
+        .count()
+}
+
 fn room(c: &mut Criterion) {
     let (tris, raw) = inputs::room(256);
     let src: Vec<Triangle<f32>> = tris.iter().map(|&t| inputs::tri(t)).collect();
@@ -184,22 +187,8 @@ fn room(c: &mut Criterion) {
     let sweeps = to_sweeps::<f32>(&raw);
     let mut g = c.benchmark_group("room_256");
     g.throughput(Throughput::Elements(sweeps.len() as u64));
-    g.bench_function("scene_f32", |b| {
-        b.iter(|| {
-            sweeps
-                .iter()
-                .filter(|s| black_box(&scene).cast(s).is_some())
-                .count()
-        })
-    });
-    g.bench_function("mesh_f32", |b| {
-        b.iter(|| {
-            sweeps
-                .iter()
-                .filter(|s| black_box(&mesh).cast(s).is_some())
-                .count()
-        })
-    });
+    g.bench_function("scene_f32", |b| b.iter(|| hits(&scene, &sweeps)));
+    g.bench_function("mesh_f32", |b| b.iter(|| hits(&mesh, &sweeps)));
     g.finish();
 }
 

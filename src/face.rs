@@ -1,6 +1,6 @@
 //! The face test of the HMC CS121 course notes: when does a moving ball first touch the front face of a triangle?
 //!
-//! [`standard_face`] follows the notes' standardized face collision algorithm line by line, on a
+//! [`standard_face`] follows the course notes' standardized face collision algorithm line by line, on a
 //! triangle in standard orientation: v0 at the origin, v2 = (x2, 0, 0) on the positive x axis,
 //! v1 = (x1, 0, z1) with z1 > 0, front face looking along +y.
 //! [`StandardTriangle::face_collision`] is the whole algorithm: transform the sweep into the
@@ -10,7 +10,7 @@ use crate::{Contact, Hit, Scalar, StandardSweep, StandardTriangle, Sweep};
 use core::cmp::Ordering;
 
 /// The standardized face collision algorithm: the fraction `beta` of the path from `p0` to `p1`
-/// at which the ball of radius `r` touches the front face, or `None` (the notes' alpha = 1).
+/// at which the ball of radius `r` touches the front face, or `None` (the course notes' alpha = 1).
 ///
 /// With `y0`, `y1` the heights of the start and end (see `face_point`, which computes `beta`
 /// and `q'`, and `contains`, the half-plane tests):
@@ -34,7 +34,7 @@ pub fn standard_face<S: Scalar>(tri: &StandardTriangle<S>, s: &StandardSweep<S>)
     (contains(tri, xq, zq) && beta >= S::ZERO && beta < S::ONE).then_some(beta)
 }
 
-/// The first half of the notes' test: `beta` and `q' = (xq, 0, zq)`, if the ball reaches height
+/// The first half of the course notes' test: `beta` and `q' = (xq, 0, zq)`, if the ball reaches height
 /// `r` within the path while moving towards the front.
 pub(crate) fn face_point<S: Scalar>(s: &StandardSweep<S>) -> Option<(S, S, S)> {
     let (p0, p1, r) = (s.p0, s.p1, s.radius);
@@ -81,7 +81,7 @@ impl<S: Scalar> StandardTriangle<S> {
     /// # Ok::<(), ballcast::Error>(())
     /// ```
     pub fn face_collision(&self, sweep: &Sweep<S>) -> Option<Hit<S>> {
-        // The heights alone settle most sweeps (the notes' first test, or beta >= 1): the rest of
+        // The heights alone settle most sweeps (the course notes' first test, or beta >= 1): the rest of
         // the transform is only computed when q' is needed.
         let (y0, y1) = self.heights(sweep);
         let r = sweep.radius();

@@ -21,7 +21,7 @@ pub enum Contact {
 /// A contact found along a sweep: a plain `Copy` struct.
 ///
 /// `alpha` is the fraction of the path travelled before contact, `0 <= alpha < 1`; a query that
-/// finds nothing returns `None`, the notes' alpha = 1. `normal` is the unit contact normal in
+/// finds nothing returns `None`, the course notes' alpha = 1. `normal` is the unit contact normal in
 /// world orientation, from the touched feature towards the ball's centre.
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
