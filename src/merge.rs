@@ -105,7 +105,7 @@ impl<S: Scalar> Earliest<S> {
                 .any(|&(_, _, m, c)| c == Contact::Face && same_plane(m, n))
         };
         let mut planes = [None; PLANES];
-        let (mut sum, mut count, mut only) = (Vec3::new(S::ZERO, S::ZERO, S::ZERO), 0, normal);
+        let (mut sum, mut count, mut only) = (Vec3::ZERO, 0, normal);
         for &(_, _, n, c) in &self.ties {
             if c != Contact::Face && face_has(n) {
                 continue;

@@ -266,7 +266,7 @@ impl<S: Scalar> StandardTriangle<S> {
     /// The standardized vertices `[v0, v1, v2]`: `(0,0,0)`, `(x1,0,z1)` and `(x2,0,0)`.
     pub fn vertices(&self) -> [Vec3<S>; 3] {
         [
-            Vec3::new(S::ZERO, S::ZERO, S::ZERO),
+            Vec3::ZERO,
             Vec3::new(self.x1, S::ZERO, self.z1),
             Vec3::new(self.x2, S::ZERO, S::ZERO),
         ]

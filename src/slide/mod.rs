@@ -66,7 +66,7 @@ impl<S: Scalar> Slide<S> {
     pub fn clip(&self, velocity: Vec3<S>) -> Result<Vec3<S>, Error> {
         let v = check::point(velocity, S::LIMIT)?;
         let mut planes: Planes<S> = Vec::new();
-        let zero = Vec3::new(S::ZERO, S::ZERO, S::ZERO);
+        let zero = Vec3::ZERO;
         for c in self.contacts.iter().flatten() {
             if !add_planes(&mut planes, &c.hit) {
                 return Ok(zero);
@@ -260,7 +260,7 @@ fn run<S: Scalar, G: Geometry<S> + ?Sized>(
         return Err(Error::RadiusTooSmall);
     }
     let skin = ball.skin(extent);
-    let zero = Vec3::new(S::ZERO, S::ZERO, S::ZERO);
+    let zero = Vec3::ZERO;
     let mut out = Slide {
         position,
         blocked: zero,

@@ -32,7 +32,7 @@ pub(super) fn stand_off<S: Scalar>(
             S::ZERO
         };
         let settled = magnitude(rest).mul(alpha) <= rounding;
-        let zero = Vec3::new(S::ZERO, S::ZERO, S::ZERO);
+        let zero = Vec3::ZERO;
         return (if settled { S::ZERO } else { alpha }, zero);
     }
     (hit.alpha, hit.normal.scale(skin))
@@ -57,7 +57,7 @@ pub(super) fn add_planes<S: Scalar>(planes: &mut Planes<S>, hit: &SceneHit<S>) -
 /// no other plane (beyond rounding); else zero. Zero too if the result runs against `primal`,
 /// or is no larger than the rounding of the normals times `v`.
 pub(super) fn constrain<S: Scalar>(v: Vec3<S>, planes: &[Vec3<S>], primal: Vec3<S>) -> Vec3<S> {
-    let zero = Vec3::new(S::ZERO, S::ZERO, S::ZERO);
+    let zero = Vec3::ZERO;
     let slack = -S::height_error(magnitude(v));
     let clear = |w: Vec3<S>| planes.iter().all(|n| S::dot(w, *n) >= slack);
     // What is left after removing a large push into a plane carries the normal's rounding
