@@ -8,6 +8,7 @@
 //! active while one of the triangle's two edges through it does. These are Jolt's *active edges*
 //! (`Jolt/Geometry/ActiveEdges.h`), decided here by exact comparisons in the scalar.
 
+use crate::merge::same_plane;
 use crate::{Scalar, StandardTriangle, Triangle, Vec3};
 use core::cmp::Ordering;
 
@@ -19,9 +20,7 @@ pub(crate) fn hides<S: Scalar>(
     tb: &StandardTriangle<S>,
     apex: Vec3<S>,
 ) -> bool {
-    let diff = ta.normal() - tb.normal();
-    let tol = S::div_pow2(S::ONE, 10);
-    let flat = diff.x.abs() <= tol && diff.y.abs() <= tol && diff.z.abs() <= tol;
+    let flat = same_plane(ta.normal(), tb.normal());
     let one_sided = !ta.is_two_sided() && !tb.is_two_sided();
     // `apex` lies in range (it was validated), so `to_standard` cannot fail.
     let valley = ta.to_standard(apex).is_ok_and(|p| p.y > S::ZERO);
