@@ -7,12 +7,14 @@
 //! `move_and_slide`, removes from its velocity whatever pointed into the contacts, and applies
 //! a little rolling resistance. Everything is fixed: no randomness at run time. Each scalar
 //! prints its contacts, where the ball ends, its final speed, and how far its path ever strayed
-//! from the f64 run.
+//! from the f64 run, and a picture goes to `target/demo.svg`: the level and the four paths from
+//! above and from the side, and each scalar's distance from the f64 path over time.
 //!
 //! Run: `cargo run --release --example demo`
 
 use ballcast::{Scalar, Scene, Triangle, Vec3, move_and_slide};
 use fixed::types::{I16F16, I32F32};
+use plotters::prelude::*;
 
 const STEPS: usize = 1200; // 20 s at 60 Hz
 const DT: f64 = 1.0 / 60.0;
@@ -95,6 +97,99 @@ fn simulate<S: Scalar>(name: &'static str) -> Run {
     run
 }
 
+/// How far `path` is from `reference` at each step.
+fn divergence(path: &[[f64; 3]], reference: &[[f64; 3]]) -> Vec<f64> {
+    path.iter()
+        .zip(reference)
+        .map(|(a, b)| (0..3).map(|k| (a[k] - b[k]).powi(2)).sum::<f64>().sqrt())
+        .collect()
+}
+
+const COLOURS: [RGBColor; 4] = [BLACK, BLUE, GREEN, RED];
+
+/// The picture: the level's triangle edges and every scalar's path from above (x, z) and from the
+/// side (x, y), and each scalar's distance from the f64 path over time (log scale).
+fn picture(runs: &[Run], file: &std::path::Path) -> Result<(), Box<dyn std::error::Error>> {
+    let root = SVGBackend::new(file, (1100, 900)).into_drawing_area();
+    root.fill(&WHITE)?;
+    let (views, lower) = root.split_vertically(520);
+    let views = views.split_evenly((1, 2));
+    let tris = triangles();
+    // (horizontal, vertical) coordinate of each view, and its caption.
+    // The paths agree to a fraction of a line's width here: the lower panel tells them apart.
+    let axes = [
+        ((0, 2), "from above: x, z (the four paths overlap)"),
+        ((0, 1), "from the side: x, y"),
+    ];
+    for (area, ((h, v), caption)) in views.iter().zip(axes) {
+        let range = |k: usize| {
+            let all = tris.iter().flatten().map(|p| p[k]);
+            all.clone().fold(f64::INFINITY, f64::min) - 0.5..all.fold(0.0, f64::max) + 0.5
+        };
+        let mut chart = ChartBuilder::on(area)
+            .caption(caption, ("sans-serif", 18))
+            .margin(12)
+            .x_label_area_size(30)
+            .y_label_area_size(40)
+            .build_cartesian_2d(range(h), range(v))?;
+        chart.configure_mesh().disable_mesh().draw()?;
+        let grey = RGBColor(205, 205, 205);
+        chart.draw_series(tris.iter().map(|t| {
+            let mut outline: Vec<(f64, f64)> = t.iter().map(|p| (p[h], p[v])).collect();
+            outline.push(outline[0]);
+            PathElement::new(outline, grey)
+        }))?;
+        for (run, colour) in runs.iter().zip(COLOURS) {
+            chart
+                .draw_series(LineSeries::new(
+                    run.path.iter().map(|p| (p[h], p[v])),
+                    colour.stroke_width(2),
+                ))?
+                .label(run.name)
+                .legend(move |(x, y)| PathElement::new([(x, y), (x + 20, y)], colour));
+        }
+        chart
+            .configure_series_labels()
+            .background_style(WHITE.mix(0.8))
+            .border_style(BLACK)
+            .draw()?;
+    }
+    // Distances below this floor (f64's own zero among them) are drawn at it.
+    let floor = 1e-9;
+    let seconds = STEPS as f64 * DT;
+    let mut chart = ChartBuilder::on(&lower)
+        .caption("distance from the f64 path", ("sans-serif", 18))
+        .margin(12)
+        .x_label_area_size(36)
+        .y_label_area_size(60)
+        .build_cartesian_2d(0.0..seconds, (floor..1.0).log_scale())?;
+    chart
+        .configure_mesh()
+        .x_desc("simulated time (s)")
+        .y_desc("distance (scene units)")
+        .y_label_formatter(&|v| format!("{v:.0e}"))
+        .draw()?;
+    for (run, colour) in runs.iter().zip(COLOURS).skip(1) {
+        let d = divergence(&run.path, &runs[0].path);
+        let points = d
+            .iter()
+            .enumerate()
+            .map(|(i, &x)| ((i + 1) as f64 * DT, x.max(floor)));
+        chart
+            .draw_series(LineSeries::new(points, colour.stroke_width(2)))?
+            .label(run.name)
+            .legend(move |(x, y)| PathElement::new([(x, y), (x + 20, y)], colour));
+    }
+    chart
+        .configure_series_labels()
+        .position(SeriesLabelPosition::LowerRight)
+        .background_style(WHITE.mix(0.8))
+        .border_style(BLACK)
+        .draw()?;
+    root.present()?;
+    Ok(())
+}
+
 fn main() {
     let runs = [
         simulate::<f64>("f64"),
@@ -110,16 +205,21 @@ fn main() {
     println!("| scalar | contacts | final position | final speed | largest divergence from f64 |");
     println!("|---|---|---|---|---|");
     for run in &runs {
-        let divergence = run
-            .path
-            .iter()
-            .zip(reference)
-            .map(|(a, b)| (0..3).map(|k| (a[k] - b[k]).powi(2)).sum::<f64>().sqrt())
+        let divergence = divergence(&run.path, reference)
+            .into_iter()
             .fold(0.0, f64::max);
         let [x, y, z] = run.path[STEPS - 1];
         println!(
             "| {} | {} | ({x:.4}, {y:.4}, {z:.4}) | {:.2e} | {divergence:.3e} |",
             run.name, run.contacts, run.speed
         );
+    }
+    let file = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("target/demo.svg");
+    match picture(&runs, &file) {
+        Ok(()) => println!("picture: {}", file.display()),
+        Err(e) => {
+            eprintln!("could not write {}: {e}", file.display());
+            std::process::exit(1);
+        }
     }
 }
