@@ -8,7 +8,9 @@
 //! p99, max over the cases both report a hit), the normal's angle error, hit/miss disagreements
 //! (all, and outside the rounding band) and the safe range used. It writes the table to
 //! `docs/tradeoff.md` and the plot (p99 distance error against ns per test, log–log) to
-//! `docs/tradeoff.svg`.
+//! `docs/tradeoff.svg` (drawn with `plotters`). The accuracy rows run on all cores (`rayon`),
+//! each from its own seeded cases, so the numbers are those of a single-threaded run; a progress
+//! bar (`indicatif`) counts the cases on stderr. The timing runs after, on one thread.
 //!
 //! Cases: half uniform (triangle within ±s, path within ±4s, radius 0.01s–0.2s), half falling
 //! through the triangle's plane from the front (about a third of those hit), at scales s = 1, 10,
@@ -31,6 +33,9 @@
 
 use ballcast::{Contact, Error, Features, Scalar, StandardTriangle, Sweep, Triangle};
 use fixed::types::{I16F16, I32F32};
+use indicatif::{ProgressBar, ProgressStyle};
+use plotters::prelude::*;
+use rayon::prelude::*;
 use std::fmt::Write as _;
 use std::hint::black_box;
 use std::time::Instant;
@@ -177,7 +182,20 @@ fn instructions(scalar: &str, label: &str) -> Option<f64> {
     })
 }
 
-fn measure<S: Measured>(label: &'static str) -> Row {
+/// `cases`, counted on `bar` in steps of 4096.
+fn counted<'a, T>(
+    cases: impl Iterator<Item = T> + 'a,
+    bar: &'a ProgressBar,
+) -> impl Iterator<Item = T> + 'a {
+    cases.enumerate().map(move |(i, c)| {
+        if i % 4096 == 4095 {
+            bar.inc(4096);
+        }
+        c
+    })
+}
+
+fn measure<S: Measured>(label: &'static str, bar: &ProgressBar) -> Row {
     let (s, off) = geometry::<S>(label);
     let limit = S::LIMIT.to_f64();
     let reach = 4.0 * s + off;
@@ -201,11 +219,12 @@ fn measure<S: Measured>(label: &'static str) -> Row {
     };
     if reach > limit {
         row.skipped = Some(format!("4s + offset = {reach} > LIMIT = {limit}"));
+        bar.inc(CASES as u64);
         return row;
     }
     if S::NAME == "f64" {
         // The reference: only speed and the hit count.
-        for c in cases(label, s, off).take(CASES) {
+        for c in counted(cases(label, s, off).take(CASES), bar) {
             match cast::<f64>(&c, c.r) {
                 Ok(h) => {
                     row.valid += 1;
@@ -220,7 +239,7 @@ fn measure<S: Measured>(label: &'static str) -> Row {
     let band = 2.0 * tol;
     let eps = S::EPSILON.to_f64();
     let (mut dist, mut angles) = (Vec::new(), Vec::new());
-    for c in cases(label, s, off).take(CASES) {
+    for c in counted(cases(label, s, off).take(CASES), bar) {
         let c = c.rounded::<S>();
         let (Ok(got), Ok(want)) = (cast::<S>(&c, c.r), cast::<f64>(&c, c.r)) else {
             row.rejected += 1;
@@ -336,206 +355,86 @@ fn table(rows: &[Row]) -> String {
     t
 }
 
-/// The plot: p99 distance error against ns per test, both log scale, one point per scalar and
-/// scale, as hand-written SVG.
-fn svg(rows: &[Row]) -> String {
-    let (w, h) = (860.0, 560.0);
-    let (l, r, top, bot) = (90.0, 190.0, 50.0, 70.0);
-    let pts: Vec<&Row> = rows
-        .iter()
-        .filter(|r| r.skipped.is_none() && r.scalar != "f64" && r.dist[1].is_finite())
-        .collect();
+/// A log-scale axis range around `values`, from a power of ten (so the axis has labels) to
+/// `room` times the largest (so the points' labels fit).
+fn around(values: impl Iterator<Item = f64>, room: f64) -> std::ops::Range<f64> {
+    let (lo, hi) = values.fold((f64::INFINITY, 0.0f64), |(l, h), v| (l.min(v), h.max(v)));
+    10f64.powf(lo.log10().floor())..hi * room
+}
+
+/// The plot: p99 distance error against ns per cast, both log scale, one point per scalar and
+/// scale (f64, the reference, at the floor that stands for zero error); points of one scalar
+/// that nearly coincide share a label.
+fn plot(rows: &[Row], file: &str) -> Result<(), Box<dyn std::error::Error>> {
     let floor = 1e-16;
-    let ys: Vec<f64> = pts.iter().map(|r| r.dist[1].max(floor)).collect();
-    let xs: Vec<f64> = rows
+    let error = |r: &Row| if r.scalar == "f64" { 0.0 } else { r.dist[1] }.max(floor);
+    let timed: Vec<&Row> = rows
         .iter()
-        .filter(|r| r.ns.is_finite())
-        .map(|r| r.ns)
+        .filter(|r| r.skipped.is_none() && r.ns.is_finite() && error(r).is_finite())
         .collect();
-    let dec = |v: &[f64], lo: bool| {
-        let f = if lo { f64::min } else { f64::max };
-        let m = v
-            .iter()
-            .copied()
-            .fold(if lo { f64::INFINITY } else { 0.0 }, f);
-        if lo {
-            m.log10().floor()
-        } else {
-            m.log10().ceil()
-        }
-    };
-    let (x0, mut x1) = (dec(&xs, true), dec(&xs, false));
-    let (y0, mut y1) = (dec(&ys, true), dec(&ys, false));
-    if x1 <= x0 {
-        x1 = x0 + 1.0;
-    }
-    if y1 <= y0 {
-        y1 = y0 + 1.0;
-    }
-    let px = |ns: f64| l + (ns.log10() - x0) / (x1 - x0) * (w - l - r);
-    let py = |err: f64| h - bot - (err.log10() - y0) / (y1 - y0) * (h - top - bot);
-    let mut s = String::new();
-    let _ = writeln!(
-        s,
-        r#"<svg xmlns="http://www.w3.org/2000/svg" width="{w}" height="{h}" viewBox="0 0 {w} {h}" font-family="sans-serif" font-size="12">"#
-    );
-    let _ = writeln!(s, r#"<rect width="{w}" height="{h}" fill="white"/>"#);
-    let _ = writeln!(
-        s,
-        r#"<text x="{}" y="24" font-size="15" text-anchor="middle">ballcast cast: p99 contact distance error vs f64 against time per test</text>"#,
-        (l + w - r) / 2.0
-    );
-    // Grid and tick labels, one per decade (with 2 and 5 minor lines on x).
-    for k in (x0 as i32)..=(x1 as i32) {
-        for m in [1.0, 2.0, 5.0] {
-            let v = m * 10f64.powi(k);
-            if v.log10() > x1 + 1e-9 {
-                continue;
+    let root = SVGBackend::new(file, (860, 560)).into_drawing_area();
+    root.fill(&WHITE)?;
+    let mut chart = ChartBuilder::on(&root)
+        .caption(
+            "ballcast cast: p99 contact distance error against f64, and time per cast",
+            ("sans-serif", 16),
+        )
+        .margin(15)
+        .x_label_area_size(45)
+        .y_label_area_size(70)
+        .build_cartesian_2d(
+            around(timed.iter().map(|r| r.ns), 1.6).log_scale(),
+            around(timed.iter().map(|r| error(r)), 10.0).log_scale(),
+        )?;
+    chart
+        .configure_mesh()
+        .x_desc("ns per cast (median)")
+        .y_desc("p99 distance error along the normal (scene units; 0 drawn at 1e-16)")
+        .x_label_formatter(&|v| format!("{v:.0}"))
+        .y_label_formatter(&|v| format!("{v:.0e}"))
+        .draw()?;
+    let font = |c: RGBColor| ("sans-serif", 11).into_font().color(&c);
+    for (name, colour) in [
+        ("f64", BLACK),
+        ("f32", BLUE),
+        ("I32F32", GREEN),
+        ("I16F16", RED),
+    ] {
+        // (ns, error, label): a point within 8 % in time and a factor 1.5 in error of an
+        // earlier one of the same scalar joins its label.
+        let mut points: Vec<(f64, f64, String)> = Vec::new();
+        for r in timed.iter().filter(|r| r.scalar == name) {
+            let (x, y) = (r.ns, error(r));
+            let label = if r.scale == "far" {
+                "far".into()
+            } else {
+                format!("s={}", r.scale)
+            };
+            let near = |p: &&mut (f64, f64, String)| {
+                (p.0 / x).ln().abs() < 0.08 && (p.1 / y).ln().abs() < 0.4
+            };
+            match points.iter_mut().find(|p| near(p)) {
+                Some(p) => p.2 = format!("{}, {label}", p.2),
+                None => points.push((x, y, label)),
             }
-            let x = px(v);
-            let stroke = if m == 1.0 { "#bbb" } else { "#e4e4e4" };
-            let _ = writeln!(
-                s,
-                r#"<line x1="{x:.1}" y1="{top}" x2="{x:.1}" y2="{}" stroke="{stroke}"/>"#,
-                h - bot
-            );
-            let _ = writeln!(
-                s,
-                r#"<text x="{x:.1}" y="{}" text-anchor="middle">{v}</text>"#,
-                h - bot + 16.0
-            );
         }
+        chart
+            .draw_series(points.into_iter().map(|(x, y, label)| {
+                EmptyElement::at((x, y))
+                    + Circle::new((0, 0), 5, colour.filled())
+                    + Text::new(label, (8, -4), font(colour))
+            }))?
+            .label(name)
+            .legend(move |(x, y)| Circle::new((x + 8, y), 5, colour.filled()));
     }
-    for k in (y0 as i32)..=(y1 as i32) {
-        let y = py(10f64.powi(k));
-        let _ = writeln!(
-            s,
-            r##"<line x1="{l}" y1="{y:.1}" x2="{}" y2="{y:.1}" stroke="#bbb"/>"##,
-            w - r
-        );
-        let _ = writeln!(
-            s,
-            r#"<text x="{}" y="{:.1}" text-anchor="end">1e{k}</text>"#,
-            l - 6.0,
-            y + 4.0
-        );
-    }
-    let _ = writeln!(
-        s,
-        r#"<rect x="{l}" y="{top}" width="{}" height="{}" fill="none" stroke="black"/>"#,
-        w - l - r,
-        h - top - bot
-    );
-    let _ = writeln!(
-        s,
-        r#"<text x="{}" y="{}" text-anchor="middle">ns per cast (median, log scale)</text>"#,
-        (l + w - r) / 2.0,
-        h - bot + 40.0
-    );
-    let _ = writeln!(
-        s,
-        r#"<text transform="translate(24 {}) rotate(-90)" text-anchor="middle">p99 distance error along the normal (scene units, log scale)</text>"#,
-        (top + h - bot) / 2.0
-    );
-    // f64's time per scale: ticks along the bottom.
-    for row in rows
-        .iter()
-        .filter(|r| r.scalar == "f64" && r.ns.is_finite())
-    {
-        let x = px(row.ns);
-        let _ = writeln!(
-            s,
-            r##"<line x1="{x:.1}" y1="{}" x2="{x:.1}" y2="{}" stroke="#555" stroke-dasharray="3 2"/>"##,
-            h - bot - 14.0,
-            h - bot
-        );
-    }
-    if let Some(x) = rows
-        .iter()
-        .filter(|r| r.scalar == "f64" && r.ns.is_finite())
-        .map(|r| px(r.ns))
-        .reduce(f64::max)
-    {
-        let _ = writeln!(
-            s,
-            r##"<text x="{:.1}" y="{}" font-size="11" fill="#555">f64</text>"##,
-            x + 4.0,
-            h - bot - 4.0
-        );
-    }
-    let color = |n: &str| match n {
-        "f32" => "#1f77b4",
-        "I32F32" => "#2ca02c",
-        _ => "#d62728",
-    };
-    // Points, then labels: points of one scalar closer than a label's height share one label.
-    let mut labels: Vec<(f64, f64, &str, String)> = Vec::new();
-    for (row, &y) in pts.iter().zip(&ys) {
-        let (x, y) = (px(row.ns), py(y));
-        let c = color(row.scalar);
-        let _ = writeln!(
-            s,
-            r#"<circle cx="{x:.1}" cy="{y:.1}" r="5" fill="{c}" stroke="black" stroke-width="0.5"/>"#
-        );
-        let label = if row.scale == "far" {
-            "far".to_string()
-        } else {
-            format!("s={}", row.scale)
-        };
-        match labels
-            .iter_mut()
-            .find(|(lx, ly, lc, _)| *lc == c && (lx - x).abs() < 40.0 && (ly - y).abs() < 12.0)
-        {
-            Some(l) => l.3 = format!("{}, {label}", l.3),
-            None => labels.push((x, y, c, label)),
-        }
-    }
-    for (x, y, c, label) in labels {
-        let _ = writeln!(
-            s,
-            r#"<text x="{:.1}" y="{:.1}" fill="{c}" font-size="11">{label}</text>"#,
-            x + 8.0,
-            y + 4.0
-        );
-    }
-    // Legend.
-    let lx = w - r + 15.0;
-    let _ = writeln!(
-        s,
-        r#"<text x="{lx}" y="{}" font-weight="bold">scalar</text>"#,
-        top + 10.0
-    );
-    for (i, n) in ["f32", "I32F32", "I16F16"].iter().enumerate() {
-        let y = top + 30.0 + 20.0 * i as f64;
-        let _ = writeln!(
-            s,
-            r#"<circle cx="{}" cy="{}" r="5" fill="{}" stroke="black" stroke-width="0.5"/><text x="{}" y="{}">{n}</text>"#,
-            lx + 5.0,
-            y - 4.0,
-            color(n),
-            lx + 16.0,
-            y
-        );
-    }
-    let notes = [
-        "labels: scene scale s",
-        "(triangles ±s, paths ±4s);",
-        "far: s=10 offset by",
-        "1e4 (f32), 0.9·LIMIT (fixed)",
-        "dashed ticks at bottom:",
-        "f64 ns per scale",
-        "(the reference, error 0)",
-        "errors of 0 drawn at 1e-16",
-    ];
-    for (i, t) in notes.iter().enumerate() {
-        let _ = writeln!(
-            s,
-            r##"<text x="{lx}" y="{}" font-size="11" fill="#333">{t}</text>"##,
-            top + 110.0 + 15.0 * i as f64
-        );
-    }
-    s += "</svg>\n";
-    s
+    chart
+        .configure_series_labels()
+        .position(SeriesLabelPosition::UpperRight)
+        .background_style(WHITE.mix(0.8))
+        .border_style(BLACK)
+        .draw()?;
+    root.present()?;
+    Ok(())
 }
 
 /// `cast` over prepared cases, isolated for callgrind's `--toggle-collect`.
@@ -586,17 +485,29 @@ fn main() {
         return kernel(&args[2], &args[3], args[4].parse().expect("n"));
     }
     let start = Instant::now();
-    let mut rows = Vec::new();
-    for label in SCALES {
-        rows.push(measure::<f64>(label));
-        rows.push(measure::<f32>(label));
-        rows.push(measure::<I32F32>(label));
-        rows.push(measure::<I16F16>(label));
-        eprintln!(
-            "scale {label} done after {:.1} s",
-            start.elapsed().as_secs_f64()
-        );
-    }
+    // Every (scale, scalar) row is independent of the others and draws its cases from its own
+    // seeded generator, so rows measured side by side on all cores give the numbers one core
+    // gives, in the same order.
+    let jobs: Vec<(&'static str, &'static str)> = SCALES
+        .into_iter()
+        .flat_map(|l| ["f64", "f32", "I32F32", "I16F16"].map(|n| (n, l)))
+        .collect();
+    let bar = ProgressBar::new((jobs.len() * CASES) as u64).with_style(
+        ProgressStyle::with_template("{msg} {wide_bar} {percent}% ({eta} left)")
+            .expect("a valid template"),
+    );
+    bar.set_message("measuring accuracy");
+    let mut rows: Vec<Row> = jobs
+        .par_iter()
+        .map(|&(scalar, label)| match scalar {
+            "f64" => measure::<f64>(label, &bar),
+            "f32" => measure::<f32>(label, &bar),
+            "I32F32" => measure::<I32F32>(label, &bar),
+            _ => measure::<I16F16>(label, &bar),
+        })
+        .collect();
+    bar.finish_and_clear();
+    eprintln!("measured after {:.1} s", start.elapsed().as_secs_f64());
     // Timing: every row's repetitions interleaved, so that load from elsewhere on the machine
     // spreads over all rows rather than landing on one; the median of REPS per row.
     let mut timers: Vec<Option<Box<dyn FnMut() -> f64>>> = rows
@@ -630,7 +541,7 @@ fn main() {
     println!("{t}");
     let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/docs");
     std::fs::create_dir_all(dir).expect("docs/");
-    std::fs::write(format!("{dir}/tradeoff.svg"), svg(&rows)).expect("write svg");
+    plot(&rows, &format!("{dir}/tradeoff.svg")).expect("write docs/tradeoff.svg");
     // Wall-clock times depend on what else runs; record the machine's load with them.
     let load = std::fs::read_to_string("/proc/loadavg")
         .map(|l| l.split_whitespace().take(3).collect::<Vec<_>>().join(" "))
