@@ -62,7 +62,7 @@ mod traverse;
 
 pub use build::nodes_for;
 pub(crate) use build::{BuildError, MORTON_BITS, build, item, item_index, morton};
-pub(crate) use traverse::{Segment, traverse};
+pub(crate) use traverse::{Segment, rounding_pad, traverse};
 
 /// Most triangles in a leaf.
 pub const LEAF: usize = 4;

@@ -66,6 +66,8 @@
 //!   borrowed from flash, a caller's buffer or `Vec`s, answering exactly as a linear scan;
 //!   [`bvh`] holds its tree ([`Node`], [`Grid`]): layout, build and traversal. With the `alloc`
 //!   feature, `mesh_buf` holds `MeshBuf`, a mesh owning its parts in `Vec`s.
+//! - [`heightfield`] holds [`Heightfield`], a terrain as a grid of 16-bit heights (about 1.5
+//!   bytes per triangle), answering exactly as the same triangles in a mesh.
 //! - [`slide`] holds [`move_and_slide`], the collision response (Quake's fly-move, constrained
 //!   by every plane touched), [`Slide`], and the [`skin`](slide::skin) and
 //!   [`min_radius`](slide::min_radius) it works with.
@@ -101,6 +103,7 @@ pub mod contact;
 mod cover;
 pub mod error;
 pub mod face;
+pub mod heightfield;
 pub mod hit;
 pub mod interop;
 mod merge;
@@ -121,6 +124,7 @@ pub use bvh::{Grid, Node};
 pub use contact::Features;
 pub use error::Error;
 pub use face::standard_face;
+pub use heightfield::{Heightfield, HeightfieldError};
 pub use hit::{Contact, Hit};
 pub use merge::PLANES;
 pub use mesh::{Buffer, Degenerates, Mesh, MeshError};

@@ -14,6 +14,20 @@ struct Entry {
     lo: [i32; 3],
 }
 
+/// How far a box must be grown for a ball of radius `r` whose path's largest component is
+/// `length`, among coordinates up to `magnitude`: the radius plus a bound on every rounding
+/// between the exact segment and what `cast` computes (the [module docs](super) give the terms).
+pub(crate) fn rounding_pad<S: Scalar>(r: f64, length: f64, magnitude: f64) -> f64 {
+    let eps = S::PRECISION.epsilon;
+    let per_unit = if S::PRECISION.relative {
+        1.0
+    } else {
+        1.0 / 1024.0
+    };
+    r + eps * 64.0 * (1.0 + 3.0 * length)
+        + (64.0 * eps * per_unit + 1.0 / (1u64 << 40) as f64) * 3.0 * magnitude
+}
+
 /// The swept segment in grid units, with what every box test needs.
 pub(crate) struct Segment {
     q0: [f64; 3],
@@ -37,16 +51,8 @@ impl Segment {
         let mesh = cells.fold(0.0f64, |m, &c| m.max((c as f64).abs())) / s;
         let d = [p1[0] - p0[0], p1[1] - p0[1], p1[2] - p0[2]];
         let magnitude = big(p0).max(big(p1)).max(mesh);
-        let eps = S::PRECISION.epsilon;
-        let per_unit = if S::PRECISION.relative {
-            1.0
-        } else {
-            1.0 / 1024.0
-        };
-        let pad = r
-            + eps * 64.0 * (1.0 + 3.0 * big(d))
-            + (64.0 * eps * per_unit + 1.0 / (1u64 << 40) as f64) * 3.0 * magnitude;
-        let seam = r / 64.0 + 4.0 * eps;
+        let pad = rounding_pad::<S>(r, big(d), magnitude);
+        let seam = r / 64.0 + 4.0 * S::PRECISION.epsilon;
         let q0 = p0.map(|x| x * s);
         let d = d.map(|x| x * s);
         Self {

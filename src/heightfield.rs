@@ -1,0 +1,340 @@
+//! [`Heightfield`]: a terrain stored as a grid of 16-bit heights, about 1.5 bytes per triangle,
+//! answering exactly as the same triangles in a [`Mesh`](crate::Mesh) or a linear scan.
+//!
+//! # Layout
+//! `columns × rows` square cells of side `spacing` in the x–z plane; vertex `(i, k)` (column `i`
+//! along x, row `k` along z) is `origin + (i spacing, heights[k (columns + 1) + i] unit, k spacing)`.
+//! Cell `c = k columns + i` holds triangles `2c` and `2c + 1`, split along the diagonal from
+//! `(i, k)` to `(i + 1, k + 1)`:
+//!
+//! ```text
+//!  z  (i,k+1) ---- (i+1,k+1)        2c:     (i,k), (i,k+1), (i+1,k+1)
+//!  ^     |  2c  /     |             2c + 1: (i,k), (i+1,k+1), (i+1,k)
+//!  |     |    /  2c+1 |             counter-clockwise seen from +y: front faces up
+//!  |  (i,k) ------ (i+1,k)  -> x
+//! ```
+//!
+//! One byte per cell ([`Heightfield::cells`]) holds the active-edge bits of its two triangles
+//! (bits 0–2 and 3–5, edge `e` from vertex `e` to `e + 1`) and the [`HOLE`] bit: a hole cell has
+//! no triangles, and the edges around it are open. [`Heightfield::build`] computes the edge bits
+//! with the rule of a [`Scene`](crate::Scene) (flat or valley across a shared edge: inactive;
+//! ridge or open: active), from the triangles prepared exactly as a mesh would prepare them, so
+//! the same triangles give the same answers in every form. Memory: 2 bytes per vertex and 1
+//! per cell, about 1.5 bytes per triangle (a prepared triangle is 112 bytes in `f32`).
+//!
+//! # Query
+//! The sweep's footprint in x–z, grown by the radius and a bound on every rounding (as the
+//! tree of a [`Mesh`](crate::Mesh) grows its boxes, [`bvh`](crate::bvh)), is walked row by row
+//! of cells in the direction of travel, each row only over the columns the grown path crosses
+//! within it (a scanline of the swept capsule's bounds). A cell's box, from its four heights, is
+//! clipped against the segment by the slab test; a triangle whose box the segment reaches before
+//! the earliest contact found so far is prepared on the spot and cast. Rows beyond that contact
+//! end the walk. The cost grows with the path's length in cells, not with the grid's size; the
+//! answer is the linear scan's, bit for bit, because the bounds are conservative and simultaneous
+//! contacts merge in index order whatever the visiting order.
+
+mod walk;
+
+use crate::adjacency::{deactivate, hides};
+use crate::{Error, Scalar, StandardTriangle, Triangle, Vec3};
+use core::fmt;
+
+/// The hole bit of a cell byte: the cell has no triangles.
+pub const HOLE: u8 = 1 << 6;
+/// Most triangles a heightfield holds (triangle indices stay below 2^31).
+pub const MAX_TRIANGLES: usize = 1 << 31;
+
+/// A grid of heights forming a terrain, borrowing its heights and cell bytes.
+///
+/// Made by [`Heightfield::build`] from heights and holes, or by [`Heightfield::from_parts`] (a
+/// `const fn`) from baked ones. See the [module docs](self) for the layout and the query.
+///
+/// ```
+/// use ballcast::{Heightfield, Sweep, Vec3};
+/// // 2 × 2 cells of side 1 around the origin, heights in steps of 0.25: a bump in the middle.
+/// let heights = [0i16, 0, 0, 0, 4, 0, 0, 0, 0];
+/// let mut cells = [0u8; 4];
+/// let ground = Heightfield::build(Vec3::new(-1.0f32, 0.0, -1.0), 1.0, 0.25, 2, 2, &heights, |_, _| false, &mut cells)?;
+/// let hit = ground.cast(&Sweep::new(Vec3::new(0.0, 3.0, 0.0), Vec3::new(0.0, -1.0, 0.0), 0.5)?).unwrap();
+/// assert_eq!(hit.position.y, 1.5); // on the bump's top vertex, height 1
+/// # Ok::<(), ballcast::HeightfieldError>(())
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Heightfield<'a, S: Scalar> {
+    origin: Vec3<S>,
+    spacing: S,
+    unit: S,
+    columns: u32,
+    rows: u32,
+    heights: &'a [i16],
+    cells: &'a [u8],
+    class: u8,
+}
+
+/// Why [`Heightfield::build`] refused.
+#[non_exhaustive]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum HeightfieldError {
+    /// `heights` does not hold `(columns + 1) (rows + 1)` values, or a side is zero.
+    Size {
+        /// Heights expected.
+        needed: usize,
+        /// Heights given.
+        given: usize,
+    },
+    /// `cells` holds fewer than `columns × rows` bytes.
+    Capacity {
+        /// Bytes needed.
+        needed: usize,
+    },
+    /// More than [`MAX_TRIANGLES`] triangles.
+    TooMany,
+    /// `spacing` is not positive and finite, or `unit` or `origin` not finite.
+    Spacing,
+    /// The grid reaches beyond the scalar's safe range ([`Scalar::LIMIT`]).
+    OutOfRange,
+    /// A triangle was refused by [`StandardTriangle::new`] (out of the scalar's range, or
+    /// degenerate at its precision).
+    Triangle {
+        /// Its index (cell `index / 2`).
+        index: usize,
+        /// Why.
+        error: Error,
+    },
+}
+
+impl fmt::Display for HeightfieldError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Self::Size { needed, given } => write!(
+                f,
+                "heightfield needs (columns + 1) x (rows + 1) = {needed} heights, got {given}"
+            ),
+            Self::Capacity { needed } => write!(f, "cell buffer too small: {needed} bytes needed"),
+            Self::TooMany => f.write_str("more than 2^31 triangles"),
+            Self::Spacing => {
+                f.write_str("spacing not positive and finite, or unit or origin not finite")
+            }
+            Self::OutOfRange => f.write_str("heightfield reaches beyond the scalar's safe range"),
+            Self::Triangle { index, error } => write!(f, "heightfield triangle {index}: {error}"),
+        }
+    }
+}
+
+impl core::error::Error for HeightfieldError {}
+
+impl<'a, S: Scalar> Heightfield<'a, S> {
+    /// A heightfield from parts made by [`build`](Self::build) (or baked from them), in a
+    /// `const` context, so it can be a `static`. Nothing is checked here: check baked parts
+    /// against [`build`](Self::build) in a test. Parts from elsewhere can give wrong answers,
+    /// never a panic or undefined behaviour.
+    #[allow(clippy::too_many_arguments)]
+    pub const fn from_parts(
+        origin: Vec3<S>,
+        spacing: S,
+        unit: S,
+        columns: u32,
+        rows: u32,
+        heights: &'a [i16],
+        cells: &'a [u8],
+        class: u8,
+    ) -> Self {
+        Self {
+            origin,
+            spacing,
+            unit,
+            columns,
+            rows,
+            heights,
+            cells,
+            class,
+        }
+    }
+
+    /// Validates the grid, prepares every triangle once (refusing any that
+    /// [`StandardTriangle::new`] refuses, by index) and writes each cell's byte (active edges,
+    /// [`HOLE`] where `hole(column, row)`) into `cells`. Time `O(N)`, no allocation.
+    ///
+    /// Errors: [`HeightfieldError`]: sizes that do not match or overflow, a spacing that is not
+    /// positive and finite, a grid beyond the scalar's range, a degenerate triangle.
+    #[allow(clippy::too_many_arguments)]
+    pub fn build(
+        origin: Vec3<S>,
+        spacing: S,
+        unit: S,
+        columns: u32,
+        rows: u32,
+        heights: &'a [i16],
+        hole: impl Fn(u32, u32) -> bool,
+        cells: &'a mut [u8],
+    ) -> Result<Self, HeightfieldError> {
+        let (w, h) = (columns as usize, rows as usize);
+        let n = w.checked_mul(h).filter(|&n| n <= MAX_TRIANGLES / 2);
+        let Some(n) = n else {
+            return Err(HeightfieldError::TooMany);
+        };
+        let needed = (w + 1) * (h + 1);
+        if n == 0 || heights.len() != needed {
+            let given = heights.len();
+            return Err(HeightfieldError::Size { needed, given });
+        }
+        if cells.len() < n {
+            return Err(HeightfieldError::Capacity { needed: n });
+        }
+        if !(spacing > S::ZERO && spacing.is_finite() && unit.is_finite() && origin.is_finite()) {
+            return Err(HeightfieldError::Spacing);
+        }
+        // The grid's far corner and heights in f64 first: a scalar's conversion saturates.
+        let limit = S::LIMIT.to_f64();
+        let (lo, hi) = heights
+            .iter()
+            .fold((0i16, 0i16), |(l, u), &v| (l.min(v), u.max(v)));
+        let o = origin.to_array().map(S::to_f64);
+        let (sp, u) = (spacing.to_f64(), unit.to_f64());
+        let ends = [
+            [o[0], o[0] + sp * w as f64],
+            [o[1] + u * lo as f64, o[1] + u * hi as f64],
+            [o[2], o[2] + sp * h as f64],
+        ];
+        if ends.iter().flatten().any(|v| v.abs() > limit) {
+            return Err(HeightfieldError::OutOfRange);
+        }
+        let mut field = Self::from_parts(origin, spacing, unit, columns, rows, heights, &[], 0);
+        for (c, byte) in cells[..n].iter_mut().enumerate() {
+            *byte = if hole(c as u32 % columns, c as u32 / columns) {
+                HOLE
+            } else {
+                0b11_1111
+            };
+        }
+        // Each shared edge once, from the later triangle: its cell's diagonal, and the edges to
+        // the cells on its left (`2c`) and below (`2c + 1`), as a mesh links them.
+        let mut class = 0u32;
+        for c in 0..n {
+            if cells[c] & HOLE != 0 {
+                continue;
+            }
+            let (i, k) = (c % w, c / w);
+            for t in [2 * c, 2 * c + 1] {
+                let later = field.prepare_at(t)?;
+                let earlier = match t % 2 {
+                    0 => (i > 0).then(|| (2 * (c - 1) + 1, 0, 1)),
+                    _ => Some((2 * c, 0, 2)),
+                };
+                let below = (t % 2 == 1 && k > 0).then(|| (2 * (c - w), 2, 1));
+                for (m, edge, theirs) in [earlier, below].into_iter().flatten() {
+                    if cells[m / 2] & HOLE != 0 {
+                        continue;
+                    }
+                    let other = field.prepare_at(m)?;
+                    let apex = field.triangle(m).map(|t| t.vertices()[(theirs + 2) % 3]);
+                    if apex.is_some_and(|a| hides(&later, &other, a)) {
+                        cells[t / 2] &= !(1 << (3 * (t % 2) + edge));
+                        cells[m / 2] &= !(1 << (3 * (m % 2) + theirs));
+                    }
+                }
+            }
+        }
+        for t in 0..2 * n {
+            if cells[t / 2] & HOLE == 0 {
+                let all_active = (cells[t / 2] >> (3 * (t % 2))) & 0b111 == 0b111;
+                let st = field.prepare_at(t)?;
+                let [_, b, c] = st.vertices();
+                let shape = [b.x, b.z, c.x].map(S::to_f64);
+                class = class.max(crate::bvh::seam_class(all_active, shape));
+            }
+        }
+        field.cells = cells;
+        field.class = class as u8;
+        Ok(field)
+    }
+
+    /// Triangle `index` as prepared by [`StandardTriangle::new`], before active edges.
+    fn prepare_at(&self, index: usize) -> Result<StandardTriangle<S>, HeightfieldError> {
+        let t = self.triangle(index).ok_or(HeightfieldError::TooMany)?;
+        StandardTriangle::new(&t).map_err(|error| HeightfieldError::Triangle { index, error })
+    }
+
+    /// Vertex `(column, row)`, if on the grid.
+    pub fn vertex(&self, column: u32, row: u32) -> Option<Vec3<S>> {
+        if column > self.columns || row > self.rows {
+            return None;
+        }
+        let at = row as usize * (self.columns as usize + 1) + column as usize;
+        let h = *self.heights.get(at)?;
+        let step = |n: f64| S::from_f64(n);
+        Some(Vec3::new(
+            self.origin.x + self.spacing.mul(step(column as f64)),
+            self.origin.y + self.unit.mul(step(h as f64)),
+            self.origin.z + self.spacing.mul(step(row as f64)),
+        ))
+    }
+
+    /// Triangle `index` (cell `index / 2`; see the [module docs](self)), holes included.
+    pub fn triangle(&self, index: usize) -> Option<Triangle<S>> {
+        let c = index / 2;
+        let w = self.columns.max(1) as usize;
+        if c >= w * self.rows as usize {
+            return None;
+        }
+        let (i, k) = ((c % w) as u32, (c / w) as u32);
+        let v = |di: u32, dk: u32| self.vertex(i + di, k + dk);
+        let (a, d) = (v(0, 0)?, v(1, 1)?);
+        Some(match index % 2 {
+            0 => Triangle::new(a, v(0, 1)?, d),
+            _ => Triangle::new(a, d, v(1, 0)?),
+        })
+    }
+
+    /// Triangle `index` prepared with its active edges, as a mesh of the same triangles holds
+    /// it; `None` for a hole or beyond the grid.
+    pub fn prepared(&self, index: usize) -> Option<StandardTriangle<S>> {
+        let byte = *self.cells.get(index / 2)?;
+        if byte & HOLE != 0 {
+            return None;
+        }
+        let mut st = self.prepare_at(index).ok()?;
+        let bits = byte >> (3 * (index % 2));
+        for e in 0..3 {
+            if bits & (1 << e) == 0 {
+                deactivate(&mut st, e);
+            }
+        }
+        Some(st)
+    }
+
+    /// Cells along x and along z.
+    pub fn size(&self) -> (u32, u32) {
+        (self.columns, self.rows)
+    }
+
+    /// Triangles, holes included: `2 columns rows`.
+    pub fn len(&self) -> usize {
+        2 * self.columns as usize * self.rows as usize
+    }
+
+    /// Whether the grid has no cells (never true of a built heightfield).
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+
+    /// The heights, row by row (x fastest).
+    pub fn heights(&self) -> &'a [i16] {
+        self.heights
+    }
+
+    /// The cell bytes: active edges and [`HOLE`].
+    pub fn cells(&self) -> &'a [u8] {
+        self.cells
+    }
+
+    /// The seam class of the worst triangle (the [`bvh`](crate::bvh) docs explain it).
+    pub fn class(&self) -> u8 {
+        self.class
+    }
+
+    /// The position of vertex `(0, 0)` at height 0, the cell side and the height step.
+    pub fn frame(&self) -> (Vec3<S>, S, S) {
+        (self.origin, self.spacing, self.unit)
+    }
+}

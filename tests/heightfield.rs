@@ -1,0 +1,341 @@
+//! `Heightfield` against the same triangles in a `Mesh` and a linear scan: the same prepared
+//! triangles (active edges included), the same answers bit for bit on terrains with holes,
+//! steep cells and flat regions; bad grids are errors, not panics. Every property in every
+//! scalar.
+
+mod common;
+#[allow(dead_code)] // the mesh tests use the rest
+mod meshes;
+
+use ballcast::{
+    Degenerates, Geometry, Heightfield, HeightfieldError, Scalar, SceneHit, Sweep, Triangle, Vec3,
+    heightfield::HOLE,
+};
+use common::{Rng, v};
+use fixed::types::{I16F16, I32F32};
+
+/// A terrain's inputs: heights, holes and frame.
+struct Terrain {
+    columns: u32,
+    rows: u32,
+    heights: Vec<i16>,
+    holes: Vec<bool>,
+    origin: [f64; 3],
+    spacing: f64,
+    unit: f64,
+}
+
+/// A random terrain of `columns × rows` cells: rolling heights with a flat block, a steep
+/// block and holes (about one cell in twelve).
+fn terrain(rng: &mut Rng, columns: u32, rows: u32) -> Terrain {
+    let (w, h) = (columns as usize + 1, rows as usize + 1);
+    let mut heights = Vec::with_capacity(w * h);
+    for k in 0..h {
+        for i in 0..w {
+            let flat = i < w / 3 && k < h / 3;
+            let steep = i > w / 2 && k > h / 2;
+            let y = match () {
+                _ if flat => 8,
+                _ if steep => rng.range(-400.0, 400.0) as i16,
+                _ => rng.range(-40.0, 40.0) as i16,
+            };
+            heights.push(y);
+        }
+    }
+    let holes = (0..columns * rows)
+        .map(|_| rng.next() < 1.0 / 12.0)
+        .collect();
+    Terrain {
+        columns,
+        rows,
+        heights,
+        holes,
+        origin: [-(columns as f64) / 2.0, -0.5, -(rows as f64) / 2.0],
+        spacing: [0.5, 1.0, 1.25][(rng.next() * 3.0) as usize],
+        unit: 1.0 / 64.0,
+    }
+}
+
+impl Terrain {
+    fn build<'a, S: Scalar>(
+        &'a self,
+        cells: &'a mut [u8],
+    ) -> Result<Heightfield<'a, S>, HeightfieldError> {
+        let (c, holes) = (self.columns, &self.holes);
+        Heightfield::build(
+            v(self.origin),
+            S::from_f64(self.spacing),
+            S::from_f64(self.unit),
+            c,
+            self.rows,
+            &self.heights,
+            |i, k| holes[(k * c + i) as usize],
+            cells,
+        )
+    }
+}
+
+/// The heightfield's triangles without holes, in index order, and the index of each.
+fn triangles<S: Scalar>(hf: &Heightfield<'_, S>) -> (Vec<Triangle<S>>, Vec<usize>) {
+    let kept: Vec<usize> = (0..hf.len())
+        .filter(|&t| hf.cells()[t / 2] & HOLE == 0)
+        .collect();
+    (
+        kept.iter().map(|&t| hf.triangle(t).unwrap()).collect(),
+        kept,
+    )
+}
+
+/// Every kept triangle, prepared with its active edges, is the mesh's, byte for byte: the
+/// heightfield's edge rule is the mesh's (and `Scene`'s).
+fn prepared_as_mesh<S: Scalar>() {
+    let mut rng = Rng(0x4f1e_0001);
+    let t = terrain(&mut rng, 14, 11);
+    let mut cells = vec![0u8; 14 * 11];
+    let hf = t.build::<S>(&mut cells).unwrap();
+    let (input, kept) = triangles(&hf);
+    let owned = meshes::build(&input, Degenerates::Refuse).unwrap();
+    let mesh = owned.mesh();
+    let mut inactive = 0;
+    for (j, &t) in kept.iter().enumerate() {
+        let (a, b) = (hf.prepared(t).unwrap(), *mesh.triangle(j).unwrap());
+        assert_eq!(a.to_parts(), b.to_parts(), "triangle {t}");
+        inactive += (0..3).filter(|&e| !a.features().edge(e)).count();
+    }
+    // Not vacuous: the flat block's interior edges are off.
+    assert!(inactive > 20, "{inactive} inactive edges");
+    assert!(hf.prepared(kept.len() * 4).is_none());
+}
+
+fn same_hit<S: Scalar>(a: Option<SceneHit<S>>, b: Option<SceneHit<S>>, what: &str) {
+    assert_eq!(format!("{a:?}"), format!("{b:?}"), "{what}");
+}
+
+/// Random short moves and long casts over random terrains: the heightfield's answer is the
+/// linear scan's (and the mesh's), bit for bit, with indices mapped.
+fn matches_linear_scan_n<S: Scalar>(terrains: u64, sweeps: usize) {
+    let mut hits = 0;
+    for seed in 0..terrains {
+        let mut rng = Rng(0x4f1e_0100 ^ seed << 16);
+        let (c, r) = (
+            4 + (rng.next() * 20.0) as u32,
+            4 + (rng.next() * 20.0) as u32,
+        );
+        let t = terrain(&mut rng, c, r);
+        let mut cells = vec![0u8; (c * r) as usize];
+        let hf = t.build::<S>(&mut cells).unwrap();
+        let (input, kept) = triangles(&hf);
+        let owned = meshes::build(&input, Degenerates::Refuse).unwrap();
+        let linear = owned.linear();
+        let half = [c as f64 * t.spacing / 2.0, 4.0, r as f64 * t.spacing / 2.0];
+        for n in 0..sweeps {
+            let p0 = [0, 1, 2].map(|a| rng.range(-half[a] - 1.0, half[a] + 1.0));
+            let p1 = if n % 2 == 0 {
+                // A short move near where it starts.
+                [0, 1, 2].map(|a| p0[a] + rng.range(-0.8, 0.8))
+            } else {
+                [0, 1, 2].map(|a| rng.range(-half[a] - 1.0, half[a] + 1.0))
+            };
+            let radius = S::from_f64(rng.range(0.05, 1.0));
+            let sweep = Sweep::new(v::<S>(p0), v(p1), radius).unwrap();
+            let mut want = linear.as_slice().cast(&sweep);
+            if let Some(h) = want.as_mut() {
+                h.index = kept[h.index];
+            }
+            let got = hf.cast(&sweep);
+            same_hit(got, want, &format!("{p0:?} -> {p1:?}, r {radius:?}"));
+            let mut mesh = owned.mesh().cast(&sweep);
+            if let Some(h) = mesh.as_mut() {
+                h.index = kept[h.index];
+            }
+            same_hit(got, mesh, "mesh");
+            hits += got.is_some() as usize;
+        }
+    }
+    assert!(hits > (terrains as usize * sweeps) / 5, "{hits} hits");
+}
+
+fn matches_linear_scan<S: Scalar>() {
+    matches_linear_scan_n::<S>(6, 400);
+}
+
+fn matches_linear_scan_long<S: Scalar>() {
+    matches_linear_scan_n::<S>(50, 2000);
+}
+
+/// `move_and_slide` runs on a heightfield (it is a `Geometry`) as on the same triangles' mesh.
+fn slides_as_mesh<S: Scalar>() {
+    let mut rng = Rng(0x4f1e_0003);
+    let t = terrain(&mut rng, 10, 10);
+    let mut cells = vec![0u8; 100];
+    let hf = t.build::<S>(&mut cells).unwrap();
+    let (input, _) = triangles(&hf);
+    let owned = meshes::build(&input, Degenerates::Refuse).unwrap();
+    let r = S::from_f64(0.4);
+    let step = v::<S>([0.3, -0.4, 0.2]);
+    let (mut a, mut b) = (v::<S>([-3.0, 3.0, -3.0]), v::<S>([-3.0, 3.0, -3.0]));
+    let mut touched = 0;
+    for _ in 0..40 {
+        let (x, y) = (
+            ballcast::move_and_slide(&hf, a, step, r).unwrap(),
+            ballcast::move_and_slide(&owned.mesh(), b, step, r).unwrap(),
+        );
+        assert_eq!(x.position, y.position);
+        touched += x.contacts.iter().flatten().count();
+        (a, b) = (x.position, y.position);
+    }
+    assert!(touched > 0);
+}
+
+/// Bad grids are refused with the error that says why; nothing panics.
+fn errors_not_panics<S: Scalar>() {
+    let heights = [0i16; 9];
+    let mut cells = [0u8; 4];
+    let o = Vec3::<S>::ZERO;
+    let (one, unit) = (S::ONE, S::from_f64(0.01));
+    let build = |sp: S, c: u32, r: u32, h: &[i16], cells: &mut [u8]| {
+        Heightfield::build(o, sp, unit, c, r, h, |_, _| false, cells).map(|_| ())
+    };
+    let size = |needed, given| Err(HeightfieldError::Size { needed, given });
+    assert_eq!(build(one, 2, 2, &heights[..8], &mut cells), size(9, 8));
+    assert_eq!(build(one, 0, 2, &heights[..3], &mut cells), size(3, 3));
+    let capacity = Err(HeightfieldError::Capacity { needed: 4 });
+    assert_eq!(build(one, 2, 2, &heights, &mut cells[..3]), capacity);
+    assert_eq!(
+        build(one, u32::MAX, u32::MAX, &heights, &mut cells),
+        Err(HeightfieldError::TooMany)
+    );
+    for bad in [S::ZERO, S::ZERO - one] {
+        assert_eq!(
+            build(bad, 2, 2, &heights, &mut cells),
+            Err(HeightfieldError::Spacing)
+        );
+    }
+    let far = S::from_f64(S::LIMIT.to_f64() / 1.5);
+    assert_eq!(
+        build(far, 2, 2, &heights, &mut cells),
+        Err(HeightfieldError::OutOfRange)
+    );
+    // Far from the origin, a float cannot tell cells of one step apart: a degenerate triangle,
+    // named. Fixed point's absolute steps keep every cell whole.
+    let far = Heightfield::build(
+        v::<S>([S::LIMIT.to_f64() / 2.0, 0.0, 0.0]),
+        S::EPSILON,
+        unit,
+        2,
+        2,
+        &heights,
+        |_, _| false,
+        &mut cells,
+    );
+    if S::PRECISION.relative {
+        let degenerate = ballcast::Error::Degenerate;
+        let want = HeightfieldError::Triangle {
+            index: 0,
+            error: degenerate,
+        };
+        assert_eq!(far.map(|_| ()), Err(want));
+    } else {
+        assert!(far.is_ok(), "{far:?}");
+    }
+}
+
+/// A terrain across the scalar's whole safe range: built and queried, edge to edge.
+fn range_edges<S: Scalar>() {
+    let reach = S::LIMIT.to_f64() * 0.9;
+    let mut heights = vec![0i16; 9 * 9];
+    heights[40] = 1000;
+    let spacing = S::from_f64(2.0 * reach / 8.0);
+    let unit = S::from_f64(reach / 2000.0);
+    let mut cells = [0u8; 64];
+    let origin = v::<S>([-reach, 0.0, -reach]);
+    let hf = Heightfield::build(
+        origin,
+        spacing,
+        unit,
+        8,
+        8,
+        &heights,
+        |_, _| false,
+        &mut cells,
+    )
+    .unwrap();
+    let sweep = Sweep::new(
+        v::<S>([0.0, reach * 0.8, 0.0]),
+        v::<S>([0.0, -reach * 0.5, 0.0]),
+        S::from_f64(reach / 100.0),
+    )
+    .unwrap();
+    let hit = hf.cast(&sweep).expect("lands on the peak");
+    let (input, kept) = triangles(&hf);
+    let mut want = input
+        .iter()
+        .map(|t| ballcast::StandardTriangle::new(t).unwrap())
+        .collect::<Vec<_>>();
+    for (j, &t) in kept.iter().enumerate() {
+        want[j] = hf.prepared(t).unwrap();
+    }
+    let mut want = want.as_slice().cast(&sweep);
+    if let Some(h) = want.as_mut() {
+        h.index = kept[h.index];
+    }
+    same_hit(Some(hit), want, "range edge");
+}
+
+/// A heightfield from its parts (as a `static` would be made) answers as the built one.
+fn from_parts_as_built<S: Scalar>() {
+    let mut rng = Rng(0x4f1e_0004);
+    let t = terrain(&mut rng, 6, 5);
+    let mut cells = vec![0u8; 30];
+    let built = t.build::<S>(&mut cells).unwrap();
+    let (o, sp, unit) = built.frame();
+    let (c, r) = built.size();
+    let baked = Heightfield::from_parts(
+        o,
+        sp,
+        unit,
+        c,
+        r,
+        built.heights(),
+        built.cells(),
+        built.class(),
+    );
+    assert_eq!(baked, built);
+}
+
+macro_rules! per_scalar {
+    ($($test:ident $(#[$attr:meta])*),* $(,)?) => {$(
+        mod $test {
+            $(#[$attr])*
+            #[test]
+            fn f32() {
+                super::$test::<f32>()
+            }
+            $(#[$attr])*
+            #[test]
+            fn f64() {
+                super::$test::<f64>()
+            }
+            $(#[$attr])*
+            #[test]
+            fn i16f16() {
+                super::$test::<super::I16F16>()
+            }
+            $(#[$attr])*
+            #[test]
+            fn i32f32() {
+                super::$test::<super::I32F32>()
+            }
+        }
+    )*};
+}
+
+per_scalar!(
+    prepared_as_mesh,
+    matches_linear_scan,
+    slides_as_mesh,
+    errors_not_panics,
+    range_edges,
+    from_parts_as_built,
+    matches_linear_scan_long #[ignore = "10^5 sweeps per scalar: run with --release -- --ignored"],
+);
