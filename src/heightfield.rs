@@ -68,6 +68,7 @@ pub struct Heightfield<'a, S: Scalar> {
     rows: u32,
     heights: &'a [i16],
     cells: &'a [u8],
+    bounds: [i16; 2],
     class: u8,
 }
 
@@ -137,6 +138,7 @@ impl<'a, S: Scalar> Heightfield<'a, S> {
         rows: u32,
         heights: &'a [i16],
         cells: &'a [u8],
+        bounds: [i16; 2],
         class: u8,
     ) -> Self {
         Self {
@@ -147,6 +149,7 @@ impl<'a, S: Scalar> Heightfield<'a, S> {
             rows,
             heights,
             cells,
+            bounds,
             class,
         }
     }
@@ -199,7 +202,17 @@ impl<'a, S: Scalar> Heightfield<'a, S> {
         if ends.iter().flatten().any(|v| v.abs() > limit) {
             return Err(HeightfieldError::OutOfRange);
         }
-        let mut field = Self::from_parts(origin, spacing, unit, columns, rows, heights, &[], 0);
+        let mut field = Self::from_parts(
+            origin,
+            spacing,
+            unit,
+            columns,
+            rows,
+            heights,
+            &[],
+            [lo, hi],
+            0,
+        );
         for (c, byte) in cells[..n].iter_mut().enumerate() {
             *byte = if hole(c as u32 % columns, c as u32 / columns) {
                 HOLE
@@ -326,6 +339,11 @@ impl<'a, S: Scalar> Heightfield<'a, S> {
     /// The cell bytes: active edges and [`HOLE`].
     pub fn cells(&self) -> &'a [u8] {
         self.cells
+    }
+
+    /// The lowest and the highest of the heights.
+    pub fn bounds(&self) -> [i16; 2] {
+        self.bounds
     }
 
     /// The seam class of the worst triangle (the [`bvh`](crate::bvh) docs explain it).

@@ -298,6 +298,7 @@ fn from_parts_as_built<S: Scalar>() {
         r,
         built.heights(),
         built.cells(),
+        built.bounds(),
         built.class(),
     );
     assert_eq!(baked, built);

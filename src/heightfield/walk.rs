@@ -15,8 +15,8 @@ struct Path {
 }
 
 impl Path {
-    /// Where the segment, over `[0, limit]`, enters the box `lo..hi` grown by the pad.
-    fn enter(&self, lo: [f64; 3], hi: [f64; 3], limit: f64) -> Option<f64> {
+    /// Where the segment, over `[0, limit]`, enters and leaves the box `lo..hi` grown by the pad.
+    fn clip(&self, lo: [f64; 3], hi: [f64; 3], limit: f64) -> Option<(f64, f64)> {
         let (mut t0, mut t1) = (0.0f64, limit);
         for a in 0..3 {
             let (near, far) = (lo[a] - self.pad - self.p0[a], hi[a] + self.pad - self.p0[a]);
@@ -32,7 +32,48 @@ impl Path {
             t0 = t0.max(ta.min(tb));
             t1 = t1.min(ta.max(tb));
         }
-        (t0 <= t1).then_some(t0)
+        (t0 <= t1).then_some((t0, t1))
+    }
+}
+
+impl Path {
+    /// Whether the path, over `[t0, t1]`, comes within the pad of the half of a cell (corner
+    /// `c` in x–z) on one side of its diagonal: `above` (z − x growing) for the cell's first
+    /// triangle. Seen from above, a ball within its radius of a triangle is within it of the
+    /// triangle's shadow.
+    fn beside_diagonal(&self, c: [f64; 2], above: bool, (t0, t1): (f64, f64)) -> bool {
+        let side = |t: f64| {
+            let (x, z) = (self.p0[0] + t * self.d[0], self.p0[2] + t * self.d[2]);
+            (z - c[1]) - (x - c[0])
+        };
+        let (a, b) = (side(t0), side(t1));
+        // `pad √2` bounds the distance across the diagonal, with room for rounding.
+        let reach = 1.5 * self.pad;
+        if above {
+            !(a.max(b) < -reach)
+        } else {
+            !(a.min(b) > reach)
+        }
+    }
+
+    /// Whether the path, over `[t0, t1]`, comes within the pad of the plane through `v`:
+    /// every contact needs the ball within its radius of the triangle's plane. The distance
+    /// along the path is linear, so its ends decide.
+    fn near_plane(&self, v: [[f64; 3]; 3], (t0, t1): (f64, f64)) -> bool {
+        let sub = |a: [f64; 3], b: [f64; 3]| [0, 1, 2].map(|k| a[k] - b[k]);
+        let dot = |a: [f64; 3], b: [f64; 3]| a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+        let (e, f) = (sub(v[1], v[0]), sub(v[2], v[0]));
+        let n = [
+            e[1] * f[2] - e[2] * f[1],
+            e[2] * f[0] - e[0] * f[2],
+            e[0] * f[1] - e[1] * f[0],
+        ];
+        // Distances times |n|, where the path enters the triangle's box and where it leaves.
+        let (start, along) = (dot(n, sub(self.p0, v[0])), dot(n, self.d));
+        let (d0, d1) = (start + t0 * along, start + t1 * along);
+        let reach = self.pad * libm::sqrt(dot(n, n));
+        // A NaN (never expected) keeps the triangle.
+        !(d0.min(d1) > reach || d0.max(d1) < -reach)
     }
 }
 
@@ -67,65 +108,84 @@ impl<S: Scalar> Heightfield<'_, S> {
         earliest(|acc| self.walk(sweep, &path, o, acc))
     }
 
-    /// Visits the cells the grown path crosses, row by row in the direction of travel, and
-    /// casts the triangles whose boxes the path reaches within the current reach.
+    /// Visits the cells the grown path crosses within the terrain's box, row by row in the
+    /// direction of travel, and casts the triangles whose boxes (and planes, and halves of the
+    /// cell) the path comes near before the current reach.
     fn walk(&self, sweep: &Sweep<S>, path: &Path, o: [f64; 3], acc: &mut Earliest<S>) {
         let (w, h) = (self.columns as i64, self.rows as i64);
         let (sp, unit) = (self.spacing.to_f64(), self.unit.to_f64());
-        let (p0, d, pad) = (path.p0, path.d, path.pad);
         let limit = |acc: &Earliest<S>| acc.reach().to_f64() + 1.0 / (1u64 << 50) as f64;
+        let y = |h: f64| o[1] + h * unit;
+        let (ylo, yhi) = (y(self.bounds[0] as f64), y(self.bounds[1] as f64));
+        let whole = (
+            [o[0], ylo.min(yhi), o[2]],
+            [o[0] + sp * w as f64, ylo.max(yhi), o[2] + sp * h as f64],
+        );
+        // The part of the path near the terrain at all: above or below it nothing is reached.
+        let Some((ta, tb)) = path.clip(whole.0, whole.1, limit(acc)) else {
+            return;
+        };
         // The cell (along one axis) holding coordinate `v`, clamped to `0..n`.
         let cell = |v: f64, a: usize, n: i64| {
             let c = libm::floor((v - o[a]) / sp);
             if c < 0.0 { 0 } else { (c as i64).min(n - 1) }
         };
         let span = |a: usize, t0: f64, t1: f64| {
-            let (u, v) = (p0[a] + d[a] * t0, p0[a] + d[a] * t1);
-            (u.min(v) - pad, u.max(v) + pad)
+            let (u, v) = (path.p0[a] + path.d[a] * t0, path.p0[a] + path.d[a] * t1);
+            (u.min(v) - path.pad, u.max(v) + path.pad)
         };
-        let (zlo, zhi) = span(2, 0.0, 1.0);
-        if zhi < o[2] || zlo > o[2] + sp * h as f64 {
-            return;
-        }
+        let (zlo, zhi) = span(2, ta, tb);
         let (k0, k1) = (cell(zlo, 2, h), cell(zhi, 2, h));
-        let up = d[2] >= 0.0;
+        let (up, right) = (path.d[2] >= 0.0, path.d[0] >= 0.0);
         for n in 0..=(k1 - k0) {
             let k = if up { k0 + n } else { k1 - n };
             // The part of the path within this row's strip, grown; strips come in travel order,
             // so once one starts beyond the reach, so do the rest.
             let z = [o[2] + sp * k as f64, o[2] + sp * (k + 1) as f64];
+            let lim = limit(acc).min(tb);
             let strip = ([f64::MIN, f64::MIN, z[0]], [f64::MAX, f64::MAX, z[1]]);
-            let lim = limit(acc);
-            let Some(t0) = path.enter(strip.0, strip.1, lim) else {
-                continue;
+            let Some((t0, t1)) = path.clip(strip.0, strip.1, lim) else {
+                break;
             };
-            let t1 = exit(path, z, lim);
-            let (xlo, xhi) = span(0, t0, t1);
-            if xhi < o[0] || xlo > o[0] + sp * w as f64 {
-                continue;
-            }
+            let (xlo, xhi) = span(0, t0.max(ta), t1);
             let (i0, i1) = (cell(xlo, 0, w), cell(xhi, 0, w));
-            let right = d[0] >= 0.0;
             for m in 0..=(i1 - i0) {
                 let i = if right { i0 + m } else { i1 - m };
-                let c = (k * w + i) as usize;
-                let Some(&byte) = self.cells.get(c) else {
-                    return;
-                };
-                if byte & HOLE != 0 {
-                    continue;
-                }
                 let x = [o[0] + sp * i as f64, o[0] + sp * (i + 1) as f64];
+                let lim = limit(acc);
+                // Cells come in travel order along x too: once one's slab starts beyond the
+                // reach, so do the rest of the row's.
+                if path.inv[0].is_finite() {
+                    let near = if right {
+                        x[0] - path.pad
+                    } else {
+                        x[1] + path.pad
+                    };
+                    if (near - path.p0[0]) * path.inv[0] > lim {
+                        break;
+                    }
+                }
+                let c = (k * w + i) as usize;
+                match self.cells.get(c) {
+                    Some(&byte) if byte & HOLE == 0 => {}
+                    Some(_) => continue,
+                    None => return,
+                }
                 let at = |di: i64, dk: i64| {
                     let v = (k + dk) * (w + 1) + i + di;
-                    self.heights.get(v as usize).map_or(0.0, |&y| y as f64)
+                    y(self.heights.get(v as usize).map_or(0.0, |&h| h as f64))
                 };
-                let (h00, h01, h11, h10) = (at(0, 0), at(0, 1), at(1, 1), at(1, 0));
-                for (t, [a, b, e]) in [(2 * c, [h00, h01, h11]), (2 * c + 1, [h00, h11, h10])] {
-                    let (lo, hi) = (a.min(b).min(e) * unit, a.max(b).max(e) * unit);
-                    let y = [o[1] + lo.min(hi), o[1] + lo.max(hi)];
-                    let reached = path.enter([x[0], y[0], z[0]], [x[1], y[1], z[1]], limit(acc));
-                    if reached.is_some()
+                let (p00, p01) = ([x[0], at(0, 0), z[0]], [x[0], at(0, 1), z[1]]);
+                let (p11, p10) = ([x[1], at(1, 1), z[1]], [x[1], at(1, 0), z[0]]);
+                let (lo, hi) = [p01[1], p11[1], p10[1]]
+                    .iter()
+                    .fold((p00[1], p00[1]), |(l, u), &v| (l.min(v), u.max(v)));
+                let Some(span) = path.clip([x[0], lo, z[0]], [x[1], hi, z[1]], lim) else {
+                    continue;
+                };
+                for (t, v) in [(2 * c, [p00, p01, p11]), (2 * c + 1, [p00, p11, p10])] {
+                    if path.beside_diagonal([x[0], z[0]], t % 2 == 0, span)
+                        && path.near_plane(v, span)
                         && let Some(tri) = self.prepared(t)
                         && let Some(hit) = tri.cast(sweep)
                     {
@@ -135,18 +195,6 @@ impl<S: Scalar> Heightfield<'_, S> {
             }
         }
     }
-}
-
-/// Where the path, over `[0, limit]`, leaves the strip `z[0]..z[1]` grown by the pad.
-fn exit(path: &Path, z: [f64; 2], limit: f64) -> f64 {
-    if !path.inv[2].is_finite() {
-        return limit;
-    }
-    let (a, b) = (
-        (z[0] - path.pad - path.p0[2]) * path.inv[2],
-        (z[1] + path.pad - path.p0[2]) * path.inv[2],
-    );
-    a.max(b).min(limit)
 }
 
 impl<S: Scalar> Geometry<S> for Heightfield<'_, S> {
