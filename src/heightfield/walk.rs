@@ -50,9 +50,9 @@ impl Path {
         // `pad √2` bounds the distance across the diagonal, with room for rounding.
         let reach = 1.5 * self.pad;
         if above {
-            !(a.max(b) < -reach)
+            !is_less(a.max(b), -reach)
         } else {
-            !(a.min(b) > reach)
+            !is_less(reach, a.min(b))
         }
     }
 
@@ -72,9 +72,13 @@ impl Path {
         let (start, along) = (dot(n, sub(self.p0, v[0])), dot(n, self.d));
         let (d0, d1) = (start + t0 * along, start + t1 * along);
         let reach = self.pad * libm::sqrt(dot(n, n));
-        // A NaN (never expected) keeps the triangle.
-        !(d0.min(d1) > reach || d0.max(d1) < -reach)
+        !(is_less(reach, d0.min(d1)) || is_less(d0.max(d1), -reach))
     }
+}
+
+/// `a < b`, false where either is NaN (never expected): a NaN keeps a triangle.
+fn is_less(a: f64, b: f64) -> bool {
+    a.partial_cmp(&b) == Some(core::cmp::Ordering::Less)
 }
 
 impl<S: Scalar> Heightfield<'_, S> {
