@@ -67,9 +67,9 @@ fn compare<S: Scalar>(c: &mut Criterion, name: &str, w: usize) {
         &mut scratch,
     )
     .unwrap();
-    let mesh_bytes = mesh.nodes().len() * size_of::<Node>()
-        + n * (size_of::<StandardTriangle<S>>() + size_of::<u32>());
-    let field_bytes = hf.heights().len() * size_of::<i16>() + hf.cells().len();
+    let mesh_bytes =
+        size_of_val(mesh.nodes()) + n * (size_of::<StandardTriangle<S>>() + size_of::<u32>());
+    let field_bytes = size_of_val(hf.heights()) + hf.cells().len();
     eprintln!(
         "{name} {n} triangles: heightfield {:.2} bytes per triangle, mesh {:.1}",
         field_bytes as f64 / n as f64,
