@@ -1,4 +1,4 @@
-//! `Heightfield` against the prepared `Mesh` of the same triangles: the terrain of
+//! `Heightfield` and `CompactMesh` against the prepared `Mesh` of the same triangles: the terrain of
 //! `benches/mesh.rs` with its heights in steps of 1/1024 (so both hold exactly the same
 //! triangles), at 512 / 8 192 / 100 352 triangles, `f32` and `I16F16`, short moves and long
 //! casts in the same groups; the bytes per triangle of each form on stderr.
@@ -6,9 +6,8 @@
 //! Run: `cargo bench --bench heightfield -- --warm-up-time 1 --measurement-time 3`
 
 use ballcast::bvh::nodes_for;
-use ballcast::heightfield::HOLE;
 use ballcast::{
-    Degenerates, Geometry, Heightfield, Mesh, Node, Scalar, StandardTriangle, Sweep, Triangle,
+    CompactMesh, Degenerates, Geometry, Mesh, MeshIndex, Node, Scalar, StandardTriangle, Sweep,
 };
 use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
 use fixed::types::I16F16;
@@ -17,10 +16,7 @@ use std::hint::black_box;
 mod inputs;
 mod terrain;
 
-use terrain::{QUERIES, height, long_casts, short_moves};
-
-/// Heights in steps of this many units.
-const UNIT: f64 = 1.0 / 1024.0;
+use terrain::{Level, QUERIES, long_casts, short_moves};
 
 fn hits<S: Scalar, G: Geometry<S>>(geometry: &G, sweeps: &[Sweep<S>]) -> usize {
     sweeps
@@ -30,36 +26,14 @@ fn hits<S: Scalar, G: Geometry<S>>(geometry: &G, sweeps: &[Sweep<S>]) -> usize {
 }
 
 fn compare<S: Scalar>(c: &mut Criterion, name: &str, w: usize) {
-    let half = w as f64 / 2.0;
-    let heights: Vec<i16> = (0..(w + 1) * (w + 1))
-        .map(|v| {
-            let (x, z) = ((v % (w + 1)) as f64 - half, (v / (w + 1)) as f64 - half);
-            (height(x, z) / UNIT).round() as i16
-        })
-        .collect();
-    let mut cells = vec![0u8; w * w];
-    let origin = inputs::v::<S>([-half, 0.0, -half]);
-    let (one, unit) = (S::ONE, S::from_f64(UNIT));
-    let (cols, rows) = (w as u32, w as u32);
-    let hf = Heightfield::build(
-        origin,
-        one,
-        unit,
-        cols,
-        rows,
-        &heights,
-        |_, _| false,
-        &mut cells,
-    )
-    .unwrap();
-    let src: Vec<Triangle<S>> = (0..hf.len()).filter_map(|t| hf.triangle(t)).collect();
-    let n = src.len();
-    assert!(hf.cells().iter().all(|&b| b & HOLE == 0));
+    let level = Level::<S>::new(w);
+    let hf = level.heightfield();
+    let (src, n) = (&level.triangles, level.triangles.len());
     let mut nodes = vec![Node::default(); nodes_for(n)];
     let mut tris = vec![Mesh::<S>::filler(); n];
     let (mut order, mut scratch) = (vec![0u32; n], vec![0u64; 6 * n]);
     let (mesh, _) = Mesh::build(
-        &src,
+        src,
         Degenerates::Refuse,
         &mut nodes,
         &mut tris,
@@ -78,15 +52,50 @@ fn compare<S: Scalar>(c: &mut Criterion, name: &str, w: usize) {
     let mut rng = inputs::Rng(0x4D45_5348 + w as u64);
     let short = inputs::sweeps::<S>(&short_moves(w, &mut rng));
     let long = inputs::sweeps::<S>(&long_casts(w, &mut rng));
-    for (what, sweeps) in [("short_move", &short), ("long_cast", &long)] {
-        assert_eq!(hits(&hf, sweeps), hits(&mesh, sweeps));
+    // The compact mesh: the grid's vertices shared, u16 indices where vertices and triangles fit.
+    if level.vertices.len().max(level.triangles.len()) <= u16::MAX as usize + 1 {
+        groups::<S, u16>(c, name, &level, &mesh, [&short, &long]);
+    } else {
+        groups::<S, u32>(c, name, &level, &mesh, [&short, &long]);
+    }
+}
+
+/// The three forms side by side on both kinds of sweep.
+fn groups<S: Scalar, I: MeshIndex + Default>(
+    c: &mut Criterion,
+    name: &str,
+    level: &Level<S>,
+    mesh: &Mesh<'_, S>,
+    [short, long]: [&[Sweep<S>]; 2],
+) {
+    let (hf, n) = (level.heightfield(), mesh.len());
+    let (vertices, indices) = (&level.vertices, &level.indices);
+    let (mut t, mut o, mut b) = (
+        vec![[I::default(); 3]; n],
+        vec![I::default(); n],
+        vec![0u8; n],
+    );
+    let compact = CompactMesh::compact(mesh, vertices, indices, &mut t, &mut o, &mut b).unwrap();
+    let bytes =
+        size_of_val(mesh.nodes()) + size_of_val(vertices.as_slice()) + n * (4 * size_of::<I>() + 1);
+    eprintln!(
+        "{name} {n} triangles: compact mesh {:.1} bytes per triangle ({}-byte indices)",
+        bytes as f64 / n as f64,
+        size_of::<I>()
+    );
+    for (what, sweeps) in [("short_move", short), ("long_cast", long)] {
+        assert_eq!(hits(&hf, sweeps), hits(mesh, sweeps));
+        assert_eq!(hits(&compact, sweeps), hits(mesh, sweeps));
         let mut g = c.benchmark_group(format!("terrain_{what}_{n}"));
         g.throughput(Throughput::Elements(QUERIES as u64));
         g.bench_function(BenchmarkId::new("heightfield", name), |b| {
             b.iter(|| hits(&hf, sweeps))
         });
         g.bench_function(BenchmarkId::new("mesh", name), |b| {
-            b.iter(|| hits(&mesh, sweeps))
+            b.iter(|| hits(mesh, sweeps))
+        });
+        g.bench_function(BenchmarkId::new("compact", name), |b| {
+            b.iter(|| hits(&compact, sweeps))
         });
         g.finish();
     }

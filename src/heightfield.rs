@@ -57,7 +57,7 @@ pub const MAX_TRIANGLES: usize = 1 << 31;
 /// let ground = Heightfield::build(Vec3::new(-1.0f32, 0.0, -1.0), 1.0, 0.25, 2, 2, &heights, |_, _| false, &mut cells)?;
 /// let hit = ground.cast(&Sweep::new(Vec3::new(0.0, 3.0, 0.0), Vec3::new(0.0, -1.0, 0.0), 0.5)?).unwrap();
 /// assert_eq!(hit.position.y, 1.5); // on the bump's top vertex, height 1
-/// # Ok::<(), ballcast::HeightfieldError>(())
+/// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Heightfield<'a, S: Scalar> {

@@ -66,6 +66,8 @@
 //!   borrowed from flash, a caller's buffer or `Vec`s, answering exactly as a linear scan;
 //!   [`bvh`] holds its tree ([`Node`], [`Grid`]): layout, build and traversal. With the `alloc`
 //!   feature, `mesh_buf` holds `MeshBuf`, a mesh owning its parts in `Vec`s.
+//! - [`compact`] holds [`CompactMesh`], a mesh's tree over shared vertices and indexed
+//!   triangles (about 19 bytes per triangle), answering exactly as the prepared mesh.
 //! - [`heightfield`] holds [`Heightfield`], a terrain as a grid of 16-bit heights (about 1.5
 //!   bytes per triangle), answering exactly as the same triangles in a mesh.
 //! - [`slide`] holds [`move_and_slide`], the collision response (Quake's fly-move, constrained
@@ -99,6 +101,7 @@ extern crate alloc;
 mod adjacency;
 pub mod bvh;
 mod check;
+pub mod compact;
 pub mod contact;
 mod cover;
 pub mod error;
@@ -121,6 +124,7 @@ pub mod triangle;
 pub mod vec3;
 
 pub use bvh::{Grid, Node};
+pub use compact::{CompactError, CompactMesh, MeshIndex};
 pub use contact::Features;
 pub use error::Error;
 pub use face::standard_face;

@@ -44,3 +44,92 @@ pub fn long_casts(w: usize, rng: &mut Rng) -> Vec<(P, P, f64)> {
     }
     out
 }
+
+/// The terrain as one level in every form's inputs: `w × w` cells of side 1 centred on the
+/// origin, heights in steps of 1/1024 (so every form holds exactly the same triangles).
+pub struct Level<S: ballcast::Scalar> {
+    pub w: usize,
+    pub heights: Vec<i16>,
+    pub cells: Vec<u8>,
+    pub bounds: [i16; 2],
+    pub class: u8,
+    /// The heightfield's triangles in index order, and its vertices and index triples.
+    pub triangles: Vec<ballcast::Triangle<S>>,
+    pub vertices: Vec<ballcast::Vec3<S>>,
+    pub indices: Vec<[u32; 3]>,
+}
+
+impl<S: ballcast::Scalar> Level<S> {
+    pub fn new(w: usize) -> Self {
+        let half = w as f64 / 2.0;
+        let heights: Vec<i16> = (0..(w + 1) * (w + 1))
+            .map(|v| {
+                let (x, z) = ((v % (w + 1)) as f64 - half, (v / (w + 1)) as f64 - half);
+                (height(x, z) * 1024.0).round() as i16
+            })
+            .collect();
+        let mut cells = vec![0u8; w * w];
+        let hf = Self::build(w, &heights, &mut cells);
+        let (bounds, class) = (hf.bounds(), hf.class());
+        let triangles = (0..hf.len()).filter_map(|t| hf.triangle(t)).collect();
+        let vertices = (0..(w + 1) * (w + 1))
+            .map(|v| {
+                hf.vertex((v % (w + 1)) as u32, (v / (w + 1)) as u32)
+                    .unwrap()
+            })
+            .collect();
+        let grid = |i: usize, k: usize| (k * (w + 1) + i) as u32;
+        let indices = (0..2 * w * w)
+            .map(|t| {
+                let (c, half) = (t / 2, t % 2);
+                let (i, k) = (c % w, c / w);
+                let (a, d) = (grid(i, k), grid(i + 1, k + 1));
+                if half == 0 {
+                    [a, grid(i, k + 1), d]
+                } else {
+                    [a, d, grid(i + 1, k)]
+                }
+            })
+            .collect();
+        Self {
+            w,
+            heights,
+            cells,
+            bounds,
+            class,
+            triangles,
+            vertices,
+            indices,
+        }
+    }
+
+    fn build<'a>(
+        w: usize,
+        heights: &'a [i16],
+        cells: &'a mut [u8],
+    ) -> ballcast::Heightfield<'a, S> {
+        let half = w as f64 / 2.0;
+        let origin = crate::inputs::v::<S>([-half, 0.0, -half]);
+        let unit = S::from_f64(1.0 / 1024.0);
+        let n = w as u32;
+        ballcast::Heightfield::build(origin, S::ONE, unit, n, n, heights, |_, _| false, cells)
+            .unwrap()
+    }
+
+    pub fn heightfield(&self) -> ballcast::Heightfield<'_, S> {
+        let half = self.w as f64 / 2.0;
+        let origin = crate::inputs::v::<S>([-half, 0.0, -half]);
+        let (unit, n) = (S::from_f64(1.0 / 1024.0), self.w as u32);
+        ballcast::Heightfield::from_parts(
+            origin,
+            S::ONE,
+            unit,
+            n,
+            n,
+            &self.heights,
+            &self.cells,
+            self.bounds,
+            self.class,
+        )
+    }
+}

@@ -1,0 +1,294 @@
+//! [`CompactMesh`]: a [`Mesh`]'s tree over shared vertices and indexed triangles, about 19
+//! bytes per triangle of a terrain in `f32` or `I16F16` (a prepared mesh: 120), answering exactly
+//! as the prepared mesh.
+//!
+//! # Layout
+//! The prepared mesh's [`Node`]s and [`Grid`] as they are; per triangle, in the tree's leaf
+//! order, its three vertex indices, its input index (both [`MeshIndex`]: `u16` for up to 65 535
+//! vertices and triangles, else `u32`) and one byte: the [`Features`] bits (active edges and
+//! vertices) and bit 6 for a two-sided triangle. The vertices are the caller's, shared.
+//!
+//! # Query
+//! The tree is walked as [`Mesh::cast`] walks it; each triangle of a leaf reached is rebuilt
+//! from its vertices, prepared by [`StandardTriangle::new`] (the prepared mesh's own
+//! preparation, so the result is the same, bit for bit) with its stored features, and cast.
+//! Preparing costs a few hundred instructions per triangle reached: a query costs more than on
+//! the prepared mesh, in exchange for a sixth of the memory.
+
+use crate::bvh::{self, Grid, Node, Segment};
+use crate::merge::earliest;
+use crate::{Features, Geometry, Mesh, Scalar, SceneHit, StandardTriangle, Sweep, Triangle, Vec3};
+use core::fmt;
+
+/// The two-sided bit of a triangle's byte.
+const TWO_SIDED: u8 = 1 << 6;
+
+/// An index into a compact mesh's vertices or input triangles: `u16` or `u32`.
+pub trait MeshIndex: Copy + sealed::Sealed {
+    /// The largest index this type holds.
+    const MAX: usize;
+    /// The index as a `usize`.
+    fn get(self) -> usize;
+    /// `i` in this type (callers check [`MAX`](Self::MAX) first).
+    fn new(i: usize) -> Self;
+}
+
+mod sealed {
+    pub trait Sealed {}
+    impl Sealed for u16 {}
+    impl Sealed for u32 {}
+}
+
+impl MeshIndex for u16 {
+    const MAX: usize = u16::MAX as usize;
+    fn get(self) -> usize {
+        self as usize
+    }
+    fn new(i: usize) -> Self {
+        i as u16
+    }
+}
+
+impl MeshIndex for u32 {
+    const MAX: usize = u32::MAX as usize;
+    fn get(self) -> usize {
+        self as usize
+    }
+    fn new(i: usize) -> Self {
+        i as u32
+    }
+}
+
+/// A mesh of shared vertices and indexed triangles behind a [`Mesh`]'s tree, borrowing its
+/// parts. See the [module docs](self).
+///
+/// ```
+/// use ballcast::{CompactMesh, Degenerates, Mesh, Node, Sweep, Triangle, Vec3};
+/// let v = Vec3::new;
+/// let vertices = [v(0.0f32, 0.0, 0.0), v(0.0, 0.0, 2.0), v(2.0, 0.0, 2.0), v(2.0, 0.0, 0.0)];
+/// let indices = [[0u32, 1, 2], [0, 2, 3]];
+/// let tris = indices.map(|[a, b, c]| Triangle::new(vertices[a as usize], vertices[b as usize], vertices[c as usize]));
+/// let (mut nodes, mut prepared, mut order) = ([Node::default(); 1], [Mesh::<f32>::filler(); 2], [0u32; 2]);
+/// let (mesh, _) = Mesh::build(&tris, Degenerates::Refuse, &mut nodes, &mut prepared, &mut order, &mut [0u64; 12])?;
+/// let (mut triangles, mut input, mut bytes) = ([[0u16; 3]; 2], [0u16; 2], [0u8; 2]);
+/// let compact = CompactMesh::compact(&mesh, &vertices, &indices, &mut triangles, &mut input, &mut bytes)?;
+/// let ball = Sweep::new(v(1.0, 3.0, 1.0), v(1.0, -1.0, 1.0), 0.5)?;
+/// assert_eq!(compact.cast(&ball), mesh.cast(&ball));
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct CompactMesh<'a, S: Scalar, I: MeshIndex = u16> {
+    nodes: &'a [Node],
+    grid: Grid,
+    vertices: &'a [Vec3<S>],
+    triangles: &'a [[I; 3]],
+    order: &'a [I],
+    bytes: &'a [u8],
+}
+
+/// Why [`CompactMesh::compact`] refused.
+#[non_exhaustive]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum CompactError {
+    /// An output buffer holds fewer than `needed` entries (one per triangle of the mesh).
+    Capacity {
+        /// Entries needed.
+        needed: usize,
+    },
+    /// A vertex or triangle index beyond what the index type holds.
+    Index {
+        /// The index.
+        index: usize,
+        /// The index type's largest.
+        max: usize,
+    },
+    /// Input triangle `index` is not what the mesh prepared (other vertices or indices than
+    /// those it was built from), or refers to a vertex that does not exist.
+    Mismatch {
+        /// Its index in the input.
+        index: usize,
+    },
+}
+
+impl fmt::Display for CompactError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Self::Capacity { needed } => write!(f, "buffer too small: {needed} entries needed"),
+            Self::Index { index, max } => {
+                write!(f, "index {index} beyond the index type's largest, {max}")
+            }
+            Self::Mismatch { index } => write!(
+                f,
+                "triangle {index} differs from the mesh's (other vertices, or a vertex missing)"
+            ),
+        }
+    }
+}
+
+impl core::error::Error for CompactError {}
+
+impl<'a, S: Scalar, I: MeshIndex> CompactMesh<'a, S, I> {
+    /// A compact mesh from parts made by [`compact`](Self::compact) (or baked from them), in
+    /// a `const` context, so it can be a `static`. Nothing is checked here; parts from
+    /// elsewhere can give wrong answers, never a panic or undefined behaviour.
+    pub const fn from_parts(
+        nodes: &'a [Node],
+        grid: Grid,
+        vertices: &'a [Vec3<S>],
+        triangles: &'a [[I; 3]],
+        order: &'a [I],
+        bytes: &'a [u8],
+    ) -> Self {
+        Self {
+            nodes,
+            grid,
+            vertices,
+            triangles,
+            order,
+            bytes,
+        }
+    }
+
+    /// The compact form of `mesh`, built from the triangles `indices` (input order) over
+    /// `vertices`: writes each triangle's vertex indices, input index and feature byte in the
+    /// mesh's leaf order into the three buffers (one entry per triangle of the mesh) and borrows
+    /// the mesh's tree. Every triangle is prepared again and checked against the mesh's, so the
+    /// answers are the prepared mesh's. Time `O(N)`, no allocation.
+    ///
+    /// Errors: [`CompactError`]: a buffer too small, an index beyond `I`, a triangle that is
+    /// not the mesh's.
+    pub fn compact(
+        mesh: &Mesh<'a, S>,
+        vertices: &'a [Vec3<S>],
+        indices: &[[u32; 3]],
+        triangles: &'a mut [[I; 3]],
+        order: &'a mut [I],
+        bytes: &'a mut [u8],
+    ) -> Result<Self, CompactError> {
+        let n = mesh.len();
+        if triangles.len() < n || order.len() < n || bytes.len() < n {
+            return Err(CompactError::Capacity { needed: n });
+        }
+        let fits = |index: usize| {
+            (index <= I::MAX)
+                .then_some(())
+                .ok_or(CompactError::Index { index, max: I::MAX })
+        };
+        fits(vertices.len().saturating_sub(1))?;
+        for (s, (prepared, &input)) in mesh.triangles().iter().zip(mesh.order()).enumerate() {
+            let index = input as usize;
+            fits(index)?;
+            let mismatch = CompactError::Mismatch { index };
+            let corners = indices.get(index).ok_or(mismatch)?;
+            let rebuilt = triangle(vertices, corners.map(|c| c as usize)).ok_or(mismatch)?;
+            let byte = prepared.features().bits() | (TWO_SIDED * prepared.is_two_sided() as u8);
+            let again = prepare(&rebuilt, byte).ok_or(mismatch)?;
+            if again.to_parts() != prepared.to_parts() {
+                return Err(mismatch);
+            }
+            triangles[s] = corners.map(|c| I::new(c as usize));
+            order[s] = I::new(index);
+            bytes[s] = byte;
+        }
+        let (triangles, order, bytes): (&'a [[I; 3]], &'a [I], &'a [u8]) =
+            (&triangles[..n], &order[..n], &bytes[..n]);
+        Ok(Self::from_parts(
+            mesh.nodes(),
+            mesh.grid(),
+            vertices,
+            triangles,
+            order,
+            bytes,
+        ))
+    }
+
+    /// Number of triangles.
+    pub fn len(&self) -> usize {
+        self.triangles.len()
+    }
+
+    /// Whether the mesh holds no triangle.
+    pub fn is_empty(&self) -> bool {
+        self.triangles.is_empty()
+    }
+
+    /// The tree's nodes and grid, the vertices, and per triangle in leaf order its vertex
+    /// indices, input index and feature byte: what [`from_parts`](Self::from_parts) takes.
+    #[allow(clippy::type_complexity)]
+    pub fn parts(
+        &self,
+    ) -> (
+        &'a [Node],
+        Grid,
+        &'a [Vec3<S>],
+        &'a [[I; 3]],
+        &'a [I],
+        &'a [u8],
+    ) {
+        (
+            self.nodes,
+            self.grid,
+            self.vertices,
+            self.triangles,
+            self.order,
+            self.bytes,
+        )
+    }
+
+    /// The earliest contact along the sweep: the prepared mesh's answer, bit for bit.
+    pub fn cast(&self, sweep: &Sweep<S>) -> Option<SceneHit<S>> {
+        let seg = Segment::new(sweep, &self.grid);
+        let slot = |s: usize| -> Option<(usize, StandardTriangle<S>)> {
+            let corners = self.triangles.get(s)?.map(I::get);
+            let t = triangle(self.vertices, corners)?;
+            Some((self.order.get(s)?.get(), prepare(&t, *self.bytes.get(s)?)?))
+        };
+        let mut sound = true;
+        let hit = earliest(|acc| {
+            sound &= bvh::traverse(self.nodes, &self.grid, &seg, acc, |acc, slots| {
+                for s in slots {
+                    if let Some((i, t)) = slot(s)
+                        && let Some(hit) = t.cast(sweep)
+                    {
+                        acc.offer(i, hit);
+                    }
+                }
+            });
+        });
+        if sound {
+            return hit;
+        }
+        // Malformed parts (never from `compact`): test every triangle.
+        earliest(|acc| {
+            for s in 0..self.triangles.len() {
+                if let Some((i, t)) = slot(s)
+                    && let Some(hit) = t.cast(sweep)
+                {
+                    acc.offer(i, hit);
+                }
+            }
+        })
+    }
+}
+
+/// The triangle of `vertices` at `corners`, if they exist.
+fn triangle<S: Scalar>(vertices: &[Vec3<S>], corners: [usize; 3]) -> Option<Triangle<S>> {
+    let [a, b, c] = corners.map(|i| vertices.get(i).copied());
+    Some(Triangle::new(a?, b?, c?))
+}
+
+/// `t` prepared with the features and sidedness of `byte`.
+fn prepare<S: Scalar>(t: &Triangle<S>, byte: u8) -> Option<StandardTriangle<S>> {
+    let st = StandardTriangle::new(t).ok()?;
+    let features = Features::from_bits(byte & Features::ALL.bits());
+    Some(
+        st.with_features(features)
+            .with_two_sided(byte & TWO_SIDED != 0),
+    )
+}
+
+impl<S: Scalar, I: MeshIndex> Geometry<S> for CompactMesh<'_, S, I> {
+    fn cast(&self, sweep: &Sweep<S>) -> Option<SceneHit<S>> {
+        CompactMesh::cast(self, sweep)
+    }
+}

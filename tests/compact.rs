@@ -1,0 +1,122 @@
+//! `CompactMesh` against the prepared `Mesh` it compacts: the same answers, bit for bit, on
+//! heightfields, closed boxes and soups; buffers too small, indices beyond `u16` and triangles
+//! that are not the mesh's are errors. Every property in every scalar.
+
+mod common;
+#[allow(dead_code)] // the mesh tests use the rest
+mod meshes;
+
+use ballcast::{CompactError, CompactMesh, Degenerates, Scalar, Sweep, Vec3};
+use common::{P, Rng, v};
+use fixed::types::{I16F16, I32F32};
+use meshes::{boxes, build, heightfield, soup, tri};
+use std::collections::HashMap;
+
+/// Shared vertices (exact coordinates merged) and index triples of a triangle list.
+fn indexed<S: Scalar>(src: &[[P; 3]]) -> (Vec<Vec3<S>>, Vec<[u32; 3]>) {
+    let (mut vertices, mut seen) = (Vec::new(), HashMap::new());
+    let indices = src
+        .iter()
+        .map(|t| {
+            t.map(|p| {
+                *seen.entry(p.map(f64::to_bits)).or_insert_with(|| {
+                    vertices.push(v::<S>(p));
+                    vertices.len() as u32 - 1
+                })
+            })
+        })
+        .collect();
+    (vertices, indices)
+}
+
+fn matches_prepared_mesh<S: Scalar>() {
+    let mut rng = Rng(0xc0_4ac7);
+    let shapes = [
+        (heightfield(&mut rng, 12, 1.0, 0.65), 6.0),
+        (boxes(&mut rng, 16, 5.0), 6.0),
+        (soup(&mut rng, 200, 4.0), 5.0),
+    ];
+    let mut hits = 0;
+    for (src, half) in shapes {
+        let (vertices, indices) = indexed::<S>(&src);
+        let input: Vec<_> = src.iter().map(|&t| tri::<S>(t)).collect();
+        let owned = build(&input, Degenerates::Skip).unwrap();
+        let mesh = owned.mesh();
+        let n = mesh.len();
+        let (mut t, mut o, mut b) = (vec![[0u16; 3]; n], vec![0u16; n], vec![0u8; n]);
+        let compact =
+            CompactMesh::compact(&mesh, &vertices, &indices, &mut t, &mut o, &mut b).unwrap();
+        assert_eq!(compact.len(), n);
+        for _ in 0..700 {
+            let (p0, p1) = (rng.point(half), rng.point(half));
+            let r = S::from_f64(rng.range(0.05, 1.0));
+            let sweep = Sweep::new(v::<S>(p0), v(p1), r).unwrap();
+            let (x, y) = (compact.cast(&sweep), mesh.cast(&sweep));
+            assert_eq!(format!("{x:?}"), format!("{y:?}"), "{p0:?} -> {p1:?}");
+            hits += x.is_some() as usize;
+        }
+    }
+    assert!(hits > 300, "{hits} hits");
+}
+
+fn errors_not_panics<S: Scalar>() {
+    let mut rng = Rng(0xc0_4ac8);
+    let src = heightfield(&mut rng, 4, 1.0, 0.5);
+    let (vertices, indices) = indexed::<S>(&src);
+    let input: Vec<_> = src.iter().map(|&t| tri::<S>(t)).collect();
+    let owned = build(&input, Degenerates::Refuse).unwrap();
+    let mesh = owned.mesh();
+    let n = mesh.len();
+    let (mut t, mut o, mut b) = (vec![[0u16; 3]; n], vec![0u16; n], vec![0u8; n]);
+    let short = CompactMesh::compact(&mesh, &vertices, &indices, &mut t, &mut o[..n - 1], &mut b);
+    assert_eq!(short.map(|_| ()), Err(CompactError::Capacity { needed: n }));
+    // Another winding of triangle 5: not what the mesh prepared.
+    let mut other = indices.clone();
+    other[5].swap(1, 2);
+    let wrong = CompactMesh::compact(&mesh, &vertices, &other, &mut t, &mut o, &mut b);
+    assert_eq!(wrong.map(|_| ()), Err(CompactError::Mismatch { index: 5 }));
+    // An index into no vertex.
+    other[5] = [0, 1, vertices.len() as u32];
+    let missing = CompactMesh::compact(&mesh, &vertices, &other, &mut t, &mut o, &mut b);
+    assert_eq!(
+        missing.map(|_| ()),
+        Err(CompactError::Mismatch { index: 5 })
+    );
+    // More vertices than u16 holds.
+    let mut many = vertices.clone();
+    many.resize(70_000, Vec3::ZERO);
+    let wide = CompactMesh::compact(&mesh, &many, &indices, &mut t, &mut o, &mut b);
+    let max = u16::MAX as usize;
+    assert_eq!(
+        wide.map(|_| ()),
+        Err(CompactError::Index { index: 69_999, max })
+    );
+    // ... which u32 takes.
+    let (mut t32, mut o32) = (vec![[0u32; 3]; n], vec![0u32; n]);
+    assert!(CompactMesh::compact(&mesh, &many, &indices, &mut t32, &mut o32, &mut b).is_ok());
+}
+
+macro_rules! per_scalar {
+    ($($test:ident),* $(,)?) => {$(
+        mod $test {
+            #[test]
+            fn f32() {
+                super::$test::<f32>()
+            }
+            #[test]
+            fn f64() {
+                super::$test::<f64>()
+            }
+            #[test]
+            fn i16f16() {
+                super::$test::<super::I16F16>()
+            }
+            #[test]
+            fn i32f32() {
+                super::$test::<super::I32F32>()
+            }
+        }
+    )*};
+}
+
+per_scalar!(matches_prepared_mesh, errors_not_panics);
