@@ -16,7 +16,8 @@
 //! the prepared mesh, in exchange for a sixth of the memory.
 
 use crate::bvh::{self, Grid, Node, Segment};
-use crate::merge::earliest;
+use crate::cull::Path;
+use crate::merge::{Earliest, earliest};
 use crate::{Features, Geometry, Mesh, Scalar, SceneHit, StandardTriangle, Sweep, Triangle, Vec3};
 use core::fmt;
 
@@ -84,6 +85,7 @@ pub struct CompactMesh<'a, S: Scalar, I: MeshIndex = u16> {
     triangles: &'a [[I; 3]],
     order: &'a [I],
     bytes: &'a [u8],
+    class: u8,
 }
 
 /// Why [`CompactMesh::compact`] refused.
@@ -138,6 +140,7 @@ impl<'a, S: Scalar, I: MeshIndex> CompactMesh<'a, S, I> {
         triangles: &'a [[I; 3]],
         order: &'a [I],
         bytes: &'a [u8],
+        class: u8,
     ) -> Self {
         Self {
             nodes,
@@ -146,6 +149,7 @@ impl<'a, S: Scalar, I: MeshIndex> CompactMesh<'a, S, I> {
             triangles,
             order,
             bytes,
+            class,
         }
     }
 
@@ -175,6 +179,7 @@ impl<'a, S: Scalar, I: MeshIndex> CompactMesh<'a, S, I> {
                 .ok_or(CompactError::Index { index, max: I::MAX })
         };
         fits(vertices.len().saturating_sub(1))?;
+        let mut class = 0;
         for (s, (prepared, &input)) in mesh.triangles().iter().zip(mesh.order()).enumerate() {
             let index = input as usize;
             fits(index)?;
@@ -186,6 +191,10 @@ impl<'a, S: Scalar, I: MeshIndex> CompactMesh<'a, S, I> {
             if again.to_parts() != prepared.to_parts() {
                 return Err(mismatch);
             }
+            let all_active = (0..3).all(|e| prepared.features().edge(e));
+            let [_, b, c] = prepared.vertices();
+            let shape = [b.x, b.z, c.x].map(S::to_f64);
+            class = class.max(bvh::seam_class(all_active, shape) as u8);
             triangles[s] = corners.map(|c| I::new(c as usize));
             order[s] = I::new(index);
             bytes[s] = byte;
@@ -199,6 +208,7 @@ impl<'a, S: Scalar, I: MeshIndex> CompactMesh<'a, S, I> {
             triangles,
             order,
             bytes,
+            class,
         ))
     }
 
@@ -238,16 +248,29 @@ impl<'a, S: Scalar, I: MeshIndex> CompactMesh<'a, S, I> {
     /// The earliest contact along the sweep: the prepared mesh's answer, bit for bit.
     pub fn cast(&self, sweep: &Sweep<S>) -> Option<SceneHit<S>> {
         let seg = Segment::new(sweep, &self.grid);
+        let cells = self.grid.lo.iter().chain(&self.grid.hi);
+        let extent =
+            cells.fold(0.0f64, |m, &c| m.max((c as f64).abs())) / Grid::scale(self.grid.exponent);
+        let path = Path::new(sweep, extent, self.class);
+        let corners = |s: usize| Some(self.triangles.get(s)?.map(I::get));
         let slot = |s: usize| -> Option<(usize, StandardTriangle<S>)> {
-            let corners = self.triangles.get(s)?.map(I::get);
-            let t = triangle(self.vertices, corners)?;
+            let t = triangle(self.vertices, corners(s)?)?;
             Some((self.order.get(s)?.get(), prepare(&t, *self.bytes.get(s)?)?))
         };
         let mut sound = true;
-        let hit = earliest(|acc| {
+        let hit = earliest(|acc: &mut Earliest<S>| {
             sound &= bvh::traverse(self.nodes, &self.grid, &seg, acc, |acc, slots| {
                 for s in slots {
-                    if let Some((i, t)) = slot(s)
+                    // The triangle's box and plane first: preparing costs far more.
+                    let limit = S::to_f64(acc.reach()) + 1.0 / (1u64 << 50) as f64;
+                    let Some(v) = corners(s).and_then(|c| world(self.vertices, c)) else {
+                        continue;
+                    };
+                    let lo = [0, 1, 2].map(|a| v[0][a].min(v[1][a]).min(v[2][a]));
+                    let hi = [0, 1, 2].map(|a| v[0][a].max(v[1][a]).max(v[2][a]));
+                    if let Some(span) = path.clip(lo, hi, limit)
+                        && path.near_plane(v, span)
+                        && let Some((i, t)) = slot(s)
                         && let Some(hit) = t.cast(sweep)
                     {
                         acc.offer(i, hit);
@@ -269,6 +292,12 @@ impl<'a, S: Scalar, I: MeshIndex> CompactMesh<'a, S, I> {
             }
         })
     }
+}
+
+/// The corners of `vertices` at `corners` in `f64`, if they exist.
+fn world<S: Scalar>(vertices: &[Vec3<S>], corners: [usize; 3]) -> Option<[[f64; 3]; 3]> {
+    let [a, b, c] = corners.map(|i| vertices.get(i).map(|p| p.to_array().map(S::to_f64)));
+    Some([a?, b?, c?])
 }
 
 /// The triangle of `vertices` at `corners`, if they exist.

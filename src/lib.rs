@@ -104,6 +104,7 @@ mod check;
 pub mod compact;
 pub mod contact;
 mod cover;
+mod cull;
 pub mod error;
 pub mod face;
 pub mod heightfield;

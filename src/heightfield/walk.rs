@@ -2,83 +2,26 @@
 //! [`heightfield`](super)).
 
 use super::{HOLE, Heightfield};
+use crate::cull::{Path, is_less};
 use crate::merge::{Earliest, earliest};
 use crate::{Geometry, Scalar, SceneHit, Sweep};
 
-/// The sweep in world units (`f64`), with what every box test needs.
-struct Path {
-    p0: [f64; 3],
-    d: [f64; 3],
-    inv: [f64; 3],
-    /// How far every box is grown: the radius, every rounding, and the seam margins.
-    pad: f64,
-}
-
-impl Path {
-    /// Where the segment, over `[0, limit]`, enters and leaves the box `lo..hi` grown by the pad.
-    fn clip(&self, lo: [f64; 3], hi: [f64; 3], limit: f64) -> Option<(f64, f64)> {
-        let (mut t0, mut t1) = (0.0f64, limit);
-        for a in 0..3 {
-            let (near, far) = (lo[a] - self.pad - self.p0[a], hi[a] + self.pad - self.p0[a]);
-            if !self.inv[a].is_finite() {
-                // Parallel to the slab (or as good as): inside it all along, or never.
-                let d = self.d[a].abs();
-                if near > d || far < -d {
-                    return None;
-                }
-                continue;
-            }
-            let (ta, tb) = (near * self.inv[a], far * self.inv[a]);
-            t0 = t0.max(ta.min(tb));
-            t1 = t1.min(ta.max(tb));
-        }
-        (t0 <= t1).then_some((t0, t1))
+/// Whether the path, over `[t0, t1]`, comes within the pad of the half of a cell (corner `c` in
+/// x–z) on one side of its diagonal: `above` (z − x growing) for the cell's first triangle. Seen
+/// from above, a ball within its radius of a triangle is within it of the triangle's shadow.
+fn beside_diagonal(path: &Path, c: [f64; 2], above: bool, (t0, t1): (f64, f64)) -> bool {
+    let side = |t: f64| {
+        let (x, z) = (path.p0[0] + t * path.d[0], path.p0[2] + t * path.d[2]);
+        (z - c[1]) - (x - c[0])
+    };
+    let (a, b) = (side(t0), side(t1));
+    // `pad √2` bounds the distance across the diagonal, with room for rounding.
+    let reach = 1.5 * path.pad;
+    if above {
+        !is_less(a.max(b), -reach)
+    } else {
+        !is_less(reach, a.min(b))
     }
-}
-
-impl Path {
-    /// Whether the path, over `[t0, t1]`, comes within the pad of the half of a cell (corner
-    /// `c` in x–z) on one side of its diagonal: `above` (z − x growing) for the cell's first
-    /// triangle. Seen from above, a ball within its radius of a triangle is within it of the
-    /// triangle's shadow.
-    fn beside_diagonal(&self, c: [f64; 2], above: bool, (t0, t1): (f64, f64)) -> bool {
-        let side = |t: f64| {
-            let (x, z) = (self.p0[0] + t * self.d[0], self.p0[2] + t * self.d[2]);
-            (z - c[1]) - (x - c[0])
-        };
-        let (a, b) = (side(t0), side(t1));
-        // `pad √2` bounds the distance across the diagonal, with room for rounding.
-        let reach = 1.5 * self.pad;
-        if above {
-            !is_less(a.max(b), -reach)
-        } else {
-            !is_less(reach, a.min(b))
-        }
-    }
-
-    /// Whether the path, over `[t0, t1]`, comes within the pad of the plane through `v`:
-    /// every contact needs the ball within its radius of the triangle's plane. The distance
-    /// along the path is linear, so its ends decide.
-    fn near_plane(&self, v: [[f64; 3]; 3], (t0, t1): (f64, f64)) -> bool {
-        let sub = |a: [f64; 3], b: [f64; 3]| [0, 1, 2].map(|k| a[k] - b[k]);
-        let dot = |a: [f64; 3], b: [f64; 3]| a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-        let (e, f) = (sub(v[1], v[0]), sub(v[2], v[0]));
-        let n = [
-            e[1] * f[2] - e[2] * f[1],
-            e[2] * f[0] - e[0] * f[2],
-            e[0] * f[1] - e[1] * f[0],
-        ];
-        // Distances times |n|, where the path enters the triangle's box and where it leaves.
-        let (start, along) = (dot(n, sub(self.p0, v[0])), dot(n, self.d));
-        let (d0, d1) = (start + t0 * along, start + t1 * along);
-        let reach = self.pad * libm::sqrt(dot(n, n));
-        !(is_less(reach, d0.min(d1)) || is_less(d0.max(d1), -reach))
-    }
-}
-
-/// `a < b`, false where either is NaN (never expected): a NaN keeps a triangle.
-fn is_less(a: f64, b: f64) -> bool {
-    a.partial_cmp(&b) == Some(core::cmp::Ordering::Less)
 }
 
 impl<S: Scalar> Heightfield<'_, S> {
@@ -87,28 +30,12 @@ impl<S: Scalar> Heightfield<'_, S> {
     /// order, bit for bit, simultaneous contacts merged as in [`Scene::cast`](crate::Scene::cast).
     /// Its cost grows with the cells the grown path crosses.
     pub fn cast(&self, sweep: &Sweep<S>) -> Option<SceneHit<S>> {
-        let f = |p: crate::Vec3<S>| p.to_array().map(S::to_f64);
-        let (p0, p1, o) = (f(sweep.p0()), f(sweep.p1()), f(self.origin));
-        let d = [0, 1, 2].map(|a| p1[a] - p0[a]);
+        let o = self.origin.to_array().map(S::to_f64);
         let (sp, unit) = (self.spacing.to_f64(), self.unit.to_f64());
-        let big = |a: [f64; 3]| a.iter().fold(0.0f64, |m, x| m.max(x.abs()));
-        let extent = [
-            sp * self.columns as f64,
-            unit.abs() * 32768.0,
-            sp * self.rows as f64,
-        ];
-        let magnitude = big(p0).max(big(p1)).max(big(o) + big(extent));
-        let r = sweep.radius().to_f64();
-        // 2^class seam margins, exactly.
-        let seams = f64::from_bits(((1023 + self.class.min(31) as u32) as u64) << 52);
-        let pad = crate::bvh::rounding_pad::<S>(r, big(d), magnitude)
-            + (r / 64.0 + 4.0 * S::PRECISION.epsilon) * seams;
-        let path = Path {
-            p0,
-            d,
-            inv: d.map(|x| 1.0 / x),
-            pad,
-        };
+        let (w, h) = (self.columns as f64, self.rows as f64);
+        let far = [sp * w, unit.abs() * 32768.0, sp * h];
+        let extent = (0..3).fold(0.0f64, |m, a| m.max(o[a].abs() + far[a]));
+        let path = Path::new(sweep, extent, self.class);
         earliest(|acc| self.walk(sweep, &path, o, acc))
     }
 
@@ -188,7 +115,7 @@ impl<S: Scalar> Heightfield<'_, S> {
                     continue;
                 };
                 for (t, v) in [(2 * c, [p00, p01, p11]), (2 * c + 1, [p00, p11, p10])] {
-                    if path.beside_diagonal([x[0], z[0]], t % 2 == 0, span)
+                    if beside_diagonal(path, [x[0], z[0]], t % 2 == 0, span)
                         && path.near_plane(v, span)
                         && let Some(tri) = self.prepared(t)
                         && let Some(hit) = tri.cast(sweep)

@@ -1,0 +1,85 @@
+//! Conservative culling of one triangle against a swept ball, before it is prepared: its box,
+//! then its plane, in `f64`, grown by the radius and a bound on every rounding. Shared by the
+//! forms that prepare triangles on the fly ([`Heightfield`](crate::Heightfield),
+//! [`CompactMesh`](crate::CompactMesh)).
+
+use crate::{Scalar, Sweep};
+
+/// The sweep in world units (`f64`), with what every box test needs.
+pub(crate) struct Path {
+    pub(crate) p0: [f64; 3],
+    pub(crate) d: [f64; 3],
+    pub(crate) inv: [f64; 3],
+    /// How far every box is grown: the radius, every rounding, and the seam margins.
+    pub(crate) pad: f64,
+}
+
+impl Path {
+    /// The path of `sweep` among geometry whose coordinates reach `extent` in magnitude, grown
+    /// by the radius, a bound on every rounding (as a [`Mesh`](crate::Mesh)'s tree grows its
+    /// boxes) and `2^class` seam margins (the [`bvh`](crate::bvh) docs explain both).
+    pub(crate) fn new<S: Scalar>(sweep: &Sweep<S>, extent: f64, class: u8) -> Self {
+        let f = |p: crate::Vec3<S>| p.to_array().map(S::to_f64);
+        let (p0, p1) = (f(sweep.p0()), f(sweep.p1()));
+        let d = [0, 1, 2].map(|a| p1[a] - p0[a]);
+        let big = |a: [f64; 3]| a.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+        let magnitude = big(p0).max(big(p1)).max(extent);
+        let r = sweep.radius().to_f64();
+        // 2^class, exactly.
+        let seams = f64::from_bits(((1023 + class.min(31) as u32) as u64) << 52);
+        let pad = crate::bvh::rounding_pad::<S>(r, big(d), magnitude)
+            + (r / 64.0 + 4.0 * S::PRECISION.epsilon) * seams;
+        Self {
+            p0,
+            d,
+            inv: d.map(|x| 1.0 / x),
+            pad,
+        }
+    }
+
+    /// Where the segment, over `[0, limit]`, enters and leaves the box `lo..hi` grown by the pad.
+    pub(crate) fn clip(&self, lo: [f64; 3], hi: [f64; 3], limit: f64) -> Option<(f64, f64)> {
+        let (mut t0, mut t1) = (0.0f64, limit);
+        for a in 0..3 {
+            let (near, far) = (lo[a] - self.pad - self.p0[a], hi[a] + self.pad - self.p0[a]);
+            if !self.inv[a].is_finite() {
+                // Parallel to the slab (or as good as): inside it all along, or never.
+                let d = self.d[a].abs();
+                if near > d || far < -d {
+                    return None;
+                }
+                continue;
+            }
+            let (ta, tb) = (near * self.inv[a], far * self.inv[a]);
+            t0 = t0.max(ta.min(tb));
+            t1 = t1.min(ta.max(tb));
+        }
+        (t0 <= t1).then_some((t0, t1))
+    }
+}
+
+impl Path {
+    /// Whether the path, over `[t0, t1]`, comes within the pad of the plane through `v`:
+    /// every contact needs the ball within its radius of the triangle's plane. The distance
+    /// along the path is linear, so its ends decide.
+    pub(crate) fn near_plane(&self, v: [[f64; 3]; 3], (t0, t1): (f64, f64)) -> bool {
+        let sub = |a: [f64; 3], b: [f64; 3]| [0, 1, 2].map(|k| a[k] - b[k]);
+        let dot = |a: [f64; 3], b: [f64; 3]| a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+        let (e, f) = (sub(v[1], v[0]), sub(v[2], v[0]));
+        let n = [
+            e[1] * f[2] - e[2] * f[1],
+            e[2] * f[0] - e[0] * f[2],
+            e[0] * f[1] - e[1] * f[0],
+        ];
+        // Distances times |n|, where the path enters the triangle's box and where it leaves.
+        let (start, along) = (dot(n, sub(self.p0, v[0])), dot(n, self.d));
+        let (d0, d1) = (start + t0 * along, start + t1 * along);
+        let reach = self.pad * libm::sqrt(dot(n, n));
+        !(is_less(reach, d0.min(d1)) || is_less(d0.max(d1), -reach))
+    }
+}
+
+/// `a < b`, false where either is NaN (never expected): a NaN keeps a triangle.
+pub(crate) fn is_less(a: f64, b: f64) -> bool {
+    a.partial_cmp(&b) == Some(core::cmp::Ordering::Less)
+}
