@@ -222,8 +222,9 @@ impl<'a, S: Scalar, I: MeshIndex> CompactMesh<'a, S, I> {
         self.triangles.is_empty()
     }
 
-    /// The tree's nodes and grid, the vertices, and per triangle in leaf order its vertex
-    /// indices, input index and feature byte: what [`from_parts`](Self::from_parts) takes.
+    /// The tree's nodes and grid, the vertices, per triangle in leaf order its vertex indices,
+    /// input index and feature byte, and the worst seam class: what
+    /// [`from_parts`](Self::from_parts) takes.
     #[allow(clippy::type_complexity)]
     pub fn parts(
         &self,
@@ -234,6 +235,7 @@ impl<'a, S: Scalar, I: MeshIndex> CompactMesh<'a, S, I> {
         &'a [[I; 3]],
         &'a [I],
         &'a [u8],
+        u8,
     ) {
         (
             self.nodes,
@@ -242,6 +244,7 @@ impl<'a, S: Scalar, I: MeshIndex> CompactMesh<'a, S, I> {
             self.triangles,
             self.order,
             self.bytes,
+            self.class,
         )
     }
 
