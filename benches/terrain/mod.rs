@@ -1,4 +1,5 @@
 //! The terrain of the mesh and heightfield benches and their two kinds of sweep.
+#![allow(dead_code)] // each bench and example uses a different part
 
 use crate::inputs::Rng;
 
