@@ -122,7 +122,7 @@ pub(crate) mod sealed {
         fn dot(a: Vec3<Self>, b: Vec3<Self>) -> Self;
         /// A bound on the rounding of a height (a coordinate in a triangle's frame) for points
         /// within `±m`: four steps of the spacing at `m` for floats, eight steps for fixed-point
-        /// (the planner's model, [`crate::Precision::distance_error`]). Needs `m` within `LIMIT`.
+        /// (the planner's model, [`crate::Precision::distance_error`]). Needs `m` within `4 * LIMIT`.
         fn height_error(m: Self) -> Self;
         /// `s * u` rounded once.
         fn mul_unit(s: Self, u: Self::Unit) -> Self;
