@@ -332,6 +332,11 @@ impl<S: Scalar> StandardTriangle<S> {
         )
     }
 
+    /// The frame's y axis (the front normal) in unit-vector precision.
+    pub(crate) fn up(&self) -> Vec3<S::Unit> {
+        self.uy
+    }
+
     /// Standardized `x1`, `z1`, `x2`, for the face test.
     pub(crate) fn shape(&self) -> (S, S, S) {
         (self.x1, self.z1, self.x2)
