@@ -164,7 +164,7 @@ impl<S: Scalar> StandardTriangle<S> {
         let position = if offset.is_none() {
             self.face_position(p0, d, sweep.radius(), (num, den), back)
         } else {
-            p0 + d.map(|c| S::mul_div(c, num, den))
+            p0 + S::scale_fraction(d, num, den)
         };
         let normal = match offset {
             None => self.normal(),

@@ -117,7 +117,7 @@ impl<S: Scalar> StandardTriangle<S> {
         (num, den): (S, S),
         back: bool,
     ) -> Vec3<S> {
-        let at = p0 + d.map(|c| S::mul_div(c, num, den));
+        let at = p0 + S::scale_fraction(d, num, den);
         if !S::PRECISION.relative || num == S::ZERO {
             return at;
         }

@@ -104,6 +104,10 @@ macro_rules! float_scalar {
                 if d == 0.0 { 0.0 } else { a * n / d }
             }
             #[inline]
+            fn scale_fraction(v: Vec3<Self>, n: Self, d: Self) -> Vec3<Self> {
+                v.map(|c| Self::mul_div(c, n, d))
+            }
+            #[inline]
             fn div_pow2(v: Self, k: u32) -> Self {
                 v / (1u64 << k) as $t
             }
