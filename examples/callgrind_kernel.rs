@@ -8,11 +8,12 @@
 //! those calls and nothing of the set-up; the loop's own bookkeeping (a few instructions per
 //! call) is included.
 //!
-//! Run: `callgrind_kernel <face|cast|face_near|cast_near|scene> <f32|f64|I32F32|I16F16> <n>` (n a
-//! multiple of 64; `_near`: the same loops on the sweeps near a triangle, `near_sweeps`); it
-//! prints `calls <n> hits <h>`.
+//! Run: `callgrind_kernel <face|cast|face_near|cast_near|scene|prepare> <f32|f64|I32F32|I16F16> <n>`
+//! (n a multiple of 64; `_near`: the same loops on the sweeps near a triangle, `near_sweeps`;
+//! `prepare`: `StandardTriangle::new` on 256 triangles of a terrain (`terrain`), n a multiple of 256); it
+//! prints `calls <n> hits <h>` (for `prepare`, `hits` counts triangles accepted).
 
-use ballcast::{Scene, StandardTriangle, Sweep};
+use ballcast::{Scene, StandardTriangle, Sweep, Triangle};
 use fixed::types::{I16F16, I32F32};
 use std::hint::black_box;
 
@@ -22,7 +23,7 @@ mod inputs;
 use inputs::*;
 
 macro_rules! kernels {
-    ($($s:ty => $face:ident, $cast:ident, $scene:ident, $run:ident);*) => {$(
+    ($($s:ty => $face:ident, $cast:ident, $scene:ident, $prepare:ident, $run:ident);*) => {$(
         #[inline(never)]
         #[unsafe(no_mangle)]
         #[allow(non_snake_case)]
@@ -62,6 +63,19 @@ macro_rules! kernels {
             hits
         }
 
+        #[inline(never)]
+        #[unsafe(no_mangle)]
+        #[allow(non_snake_case)]
+        pub fn $prepare(tris: &[Triangle<$s>], n: usize) -> usize {
+            let mut ok = 0;
+            for _ in 0..n / tris.len() {
+                for t in tris {
+                    ok += StandardTriangle::new(black_box(t)).is_ok() as usize;
+                }
+            }
+            ok
+        }
+
         #[allow(non_snake_case)]
         fn $run(function: &str, n: usize) -> usize {
             match function {
@@ -84,24 +98,28 @@ macro_rules! kernels {
                     let sw = sweeps::<$s>(&raw);
                     $scene(black_box(&scene), black_box(&sw), n)
                 }
-                _ => panic!("unknown function {function}: face, cast, face_near, cast_near or scene"),
+                "prepare" => {
+                    let tris: Vec<Triangle<$s>> = terrain(256).iter().map(|t| tri(*t)).collect();
+                    $prepare(black_box(&tris), n)
+                }
+                _ => panic!("unknown function {function}: face, cast, face_near, cast_near, scene or prepare"),
             }
         }
     )*};
 }
 
 kernels!(
-    f32 => ck_face_f32, ck_cast_f32, ck_scene_f32, run_f32;
-    f64 => ck_face_f64, ck_cast_f64, ck_scene_f64, run_f64;
-    I32F32 => ck_face_I32F32, ck_cast_I32F32, ck_scene_I32F32, run_I32F32;
-    I16F16 => ck_face_I16F16, ck_cast_I16F16, ck_scene_I16F16, run_I16F16
+    f32 => ck_face_f32, ck_cast_f32, ck_scene_f32, ck_prepare_f32, run_f32;
+    f64 => ck_face_f64, ck_cast_f64, ck_scene_f64, ck_prepare_f64, run_f64;
+    I32F32 => ck_face_I32F32, ck_cast_I32F32, ck_scene_I32F32, ck_prepare_I32F32, run_I32F32;
+    I16F16 => ck_face_I16F16, ck_cast_I16F16, ck_scene_I16F16, ck_prepare_I16F16, run_I16F16
 );
 
 fn main() {
     let args: Vec<String> = std::env::args().collect();
     assert!(
         args.len() == 4,
-        "usage: callgrind_kernel <face|cast|face_near|cast_near|scene> <f32|f64|I32F32|I16F16> <n>"
+        "usage: callgrind_kernel <face|cast|face_near|cast_near|scene|prepare> <f32|f64|I32F32|I16F16> <n>"
     );
     let n: usize = args[3].parse().expect("n");
     assert!(n.is_multiple_of(SWEEPS), "n must be a multiple of {SWEEPS}");

@@ -160,8 +160,12 @@ impl<S: Scalar> StandardTriangle<S> {
         let (alpha, offset, contact, (num, den)) = self.cast_front(&s)?;
         // The centre at contact from the unrounded fraction: a few steps of `S` off, where
         // `p0 + alpha (p1 - p0)` would carry alpha's rounding times the path's length.
-        let (p0, p1) = (sweep.p0(), sweep.p1());
-        let position = p0 + (p1 - p0).map(|c| S::mul_div(c, num, den));
+        let (p0, d) = (sweep.p0(), sweep.p1() - sweep.p0());
+        let position = if offset.is_none() {
+            self.face_position(p0, d, sweep.radius(), (num, den), back)
+        } else {
+            p0 + S::scale_fraction(d, num, den)
+        };
         let normal = match offset {
             None => self.normal(),
             Some(mut v) => {

@@ -6,7 +6,7 @@
 //! [`StandardTriangle::face_collision`] is the whole algorithm: transform the sweep into the
 //! triangle's precomputed frame, run the standardized test, report the world normal.
 
-use crate::{Contact, Hit, Scalar, StandardSweep, StandardTriangle, Sweep};
+use crate::{Contact, Hit, Scalar, StandardSweep, StandardTriangle, Sweep, Vec3};
 use core::cmp::Ordering;
 
 /// The standardized face collision algorithm: the fraction `beta` of the path from `p0` to `p1`
@@ -92,9 +92,44 @@ impl<S: Scalar> StandardTriangle<S> {
         let (p0, p1) = (sweep.p0(), sweep.p1());
         Some(Hit {
             alpha,
-            position: p0 + (p1 - p0).map(|c| S::mul_div(c, r - y0, y1 - y0)),
+            position: self.face_position(p0, p1 - p0, r, (r - y0, y1 - y0), false),
             normal: self.normal(),
             contact: Contact::Face,
         })
+    }
+}
+
+impl<S: Scalar> StandardTriangle<S> {
+    /// The ball's centre where the path from `p0` along `d` comes down to height `r` over the
+    /// plane (over the back, mirrored, if `back`), the fraction given unrounded as `num / den`
+    /// (heights: `r - y0` over `y1 - y0`).
+    ///
+    /// A float height carries rounding in proportion to the point's distance from the triangle's
+    /// origin (the difference, the products and the normal's own rounding), and a path's ends
+    /// may lie far from it. So for floats the centre found is checked once more: its own height,
+    /// measured where the contact is, and the path moved by the remaining difference over
+    /// `den` (`den < 0`: the path comes down). Fixed-point rounds heights by the same absolute step anywhere, and keeps the first.
+    pub(crate) fn face_position(
+        &self,
+        p0: Vec3<S>,
+        d: Vec3<S>,
+        r: S,
+        (num, den): (S, S),
+        back: bool,
+    ) -> Vec3<S> {
+        let at = p0 + S::scale_fraction(d, num, den);
+        if !S::PRECISION.relative || num == S::ZERO {
+            return at;
+        }
+        let h = S::dot_unit(at - self.origin(), self.up());
+        let fix = r - if back { -h } else { h };
+        // Only a correction that keeps the centre on the path (the fraction `(num + fix) / den`
+        // within `[0, 1]`): a resting ball's tiny step cannot be carried past its end.
+        let k = num + fix;
+        if k > S::ZERO || k < den {
+            return at;
+        }
+        // The correction is a small fraction of the path: one rounded factor is enough for it.
+        at + d.scale(S::div(fix, den))
     }
 }

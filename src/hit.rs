@@ -31,7 +31,10 @@ pub struct Hit<S> {
     #[doc(alias = "time_of_impact")]
     pub alpha: S,
     /// The ball's centre at first contact, `p0 + alpha (p1 - p0)` computed from alpha before
-    /// it is rounded: its error is a few steps of `S`, not alpha's step times the path.
+    /// it is rounded: its error is a few steps of `S`, not alpha's step times the path. For a
+    /// float's face contact the centre's height is measured once more where it is and the
+    /// centre moved along the path to height `r`, so the rounding of the path's far ends does
+    /// not reach it either (it may then differ from alpha's point by what alpha carries of it).
     pub position: Vec3<S>,
     /// Unit contact normal in world orientation, pointing towards the ball's centre.
     pub normal: Vec3<S>,

@@ -45,17 +45,24 @@ impl Precision {
     }
 
     /// The largest error expected of a contact's position (`Hit::position`) along the normal,
-    /// for coordinates within `±extent`: the rounding of the heights alone, since the position
-    /// is formed from alpha before alpha is rounded.
+    /// for coordinates within `±extent`: the rounding of the heights, since the position is
+    /// formed from alpha before alpha is rounded. For floats an edge or vertex contact adds
+    /// the rounding of its chord and quotient, in proportion to the coordinates too (up to 4.3
+    /// steps of the spacing at `extent` were seen over 10^6 casts at scale 10): six steps.
     ///
     /// ```
     /// use ballcast::Scalar;
     /// use fixed::types::I16F16;
     /// // Eight steps of 2^-16 anywhere in I16F16's range, whatever the path's length.
     /// assert_eq!(I16F16::PRECISION.position_error(100.0), 8.0 / 65536.0);
+    /// assert_eq!(f32::PRECISION.position_error(100.0), 600.0 * f32::EPSILON as f64);
     /// ```
     pub const fn position_error(&self, extent: f64) -> f64 {
-        self.height_error(extent)
+        if self.relative {
+            1.5 * self.height_error(extent)
+        } else {
+            self.height_error(extent)
+        }
     }
 
     /// The rounding of a height (a coordinate in a triangle's frame) for coordinates within

@@ -23,12 +23,15 @@ impl<S: Scalar> StandardTriangle<S> {
             && hi(a.z, b.z) + r >= S::ZERO
     }
 
-    /// Whether the segment from `a` to `b` stays more than `r` outside one edge's line: the
-    /// whole triangle lies inside that line, so nothing of it can be touched.
+    /// Whether the segment from `a` (at height `r`) to `b` stays more than `r` outside one
+    /// edge's line: the whole triangle lies inside that line, so nothing of it can be touched.
+    /// Where `b` is below the plane only the part down to the plane counts (an edge or vertex
+    /// is touched with the centre in front of the plane): see [`clipped_beyond`].
     pub(crate) fn beyond_an_edge(&self, a: Vec3<S>, b: Vec3<S>, r: S) -> bool {
         (0..3).any(|i| {
             let (c, out) = (self.corner(i), self.edges[i].out());
-            S::dot_unit(a - c, out) > r && S::dot_unit(b - c, out) > r
+            let (wa, wb) = (S::dot_unit(a - c, out), S::dot_unit(b - c, out));
+            wa > r && (wb > r || (b.y < S::ZERO && clipped_beyond(a, b, wa, wb, r)))
         })
     }
 
@@ -46,4 +49,23 @@ impl<S: Scalar> StandardTriangle<S> {
         let reach = largest(q.x.abs(), q.y.abs(), q.z.abs());
         S::line_misses([q.x, q.z], [d.x, d.z], r, reach)
     }
+}
+
+/// Whether the point where the segment from `a` (height `r`) to `b` (height `b.y < 0`) crosses
+/// the plane lies more than `r` plus a margin outside an edge's line, given both ends' distances
+/// `wa`, `wb` outside it: then so does the whole part at heights `0..=r`. The crossing is
+/// `a + λ (b - a)` with `λ = r / (r - b.y)`; multiplied out, with `R = r + margin`, the test
+/// is `(wa - R)(-b.y) > r (R - wb)`: one product comparison, no division. The margin (32 steps
+/// of the coordinates' spacing for floats, 64 for fixed-point) exceeds the rounding of the full
+/// edge and vertex tests, so this drops only sweeps those would miss.
+fn clipped_beyond<S: Scalar>(a: Vec3<S>, b: Vec3<S>, wa: S, wb: S, r: S) -> bool {
+    let extent = largest(
+        largest(a.x.abs(), a.z.abs(), r),
+        largest(b.x.abs(), b.y.abs(), b.z.abs()),
+        S::ZERO,
+    );
+    let h = S::height_error(extent);
+    let h4 = h + h + h + h;
+    let big = r + h4 + h4;
+    S::mul_cmp(wa - big, -b.y, r, big - wb).is_gt()
 }

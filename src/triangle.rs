@@ -158,22 +158,19 @@ impl<S: Scalar> StandardTriangle<S> {
             check::point(v, S::LIMIT)?;
         }
         let edges = [t.v1 - t.v0, t.v2 - t.v1, t.v0 - t.v2];
-        let [s0, s1, s2] = edges.map(S::scaled);
-        let (s0, s1, s2) = (
-            s0.ok_or(Error::Degenerate)?,
-            s1.ok_or(Error::Degenerate)?,
-            s2.ok_or(Error::Degenerate)?,
-        );
         // (v1-v0)×(v2-v0) = e0×e1 = e1×e2 = e2×e0: use the pair that leaves out the longest edge.
+        // Only that pair is scaled: a zero edge is always in it (the other two are then equal
+        // and opposite, so the longest is the one after it), and gives `Degenerate`.
         let [l0, l1, l2] = edges.map(|e| largest(e.x.abs(), e.y.abs(), e.z.abs()));
-        let n = if l2 >= l0 && l2 >= l1 {
-            S::unit_cross(s0, s1)
+        let (a, b) = if l2 >= l0 && l2 >= l1 {
+            (0, 1)
         } else if l0 >= l1 {
-            S::unit_cross(s1, s2)
+            (1, 2)
         } else {
-            S::unit_cross(s2, s0)
-        }
-        .ok_or(Error::Degenerate)?;
+            (2, 0)
+        };
+        let scaled = |i: usize| S::scaled(edges[i]).ok_or(Error::Degenerate);
+        let n = S::unit_cross(scaled(a)?, scaled(b)?).ok_or(Error::Degenerate)?;
 
         let base = t.v2 - t.v0;
         let ux = S::unit_normalize(S::scaled(base).ok_or(Error::Degenerate)?);
@@ -333,6 +330,11 @@ impl<S: Scalar> StandardTriangle<S> {
             S::dot_unit(v, Vec3::new(x.y, y.y, z.y)),
             S::dot_unit(v, Vec3::new(x.z, y.z, z.z)),
         )
+    }
+
+    /// The frame's y axis (the front normal) in unit-vector precision.
+    pub(crate) fn up(&self) -> Vec3<S::Unit> {
+        self.uy
     }
 
     /// Standardized `x1`, `z1`, `x2`, for the face test.

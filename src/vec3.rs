@@ -40,6 +40,7 @@ impl<T: Copy> Vec3<T> {
     /// let v = Vec3::new(0.5f64, -2.0, 8.0).map(f32::from_f64);
     /// assert_eq!(v, Vec3::new(0.5f32, -2.0, 8.0));
     /// ```
+    #[inline]
     pub fn map<U>(self, f: impl Fn(T) -> U) -> Vec3<U> {
         Vec3::new(f(self.x), f(self.y), f(self.z))
     }

@@ -217,7 +217,8 @@ fn agrees_with_f64<S: Tolerance>(cases: usize) -> (f64, f64) {
 }
 
 /// `Hit::position` on random casts at scene scale 10: where alpha says (within alpha's own
-/// rounding over the path), and, along the normal, within `S::POSITION` of f64's on the same
+/// rounding over the path; for a float's face contact, within alpha's height error too), and,
+/// along the normal, within `S::POSITION` of f64's on the same
 /// rounded inputs, where `p0 + alpha (p1 - p0)` would be off by alpha's step times the path.
 /// Returns the largest error along the normal on face contacts and on all.
 fn position_is_precise<S: Tolerance>(cases: usize) -> (f64, f64) {
@@ -246,7 +247,15 @@ fn position_is_precise<S: Tolerance>(cases: usize) -> (f64, f64) {
         let path = common::sub(c.p1, c.p0);
         let said = common::add(c.p0, common::scale(path, got.alpha));
         let off = common::norm(common::sub(said, got.position.to_array()));
-        let allowed = S::EPSILON.to_f64() / 2.0 * common::norm(path) + 4.0 * S::spacing(40.0);
+        let mut allowed = S::EPSILON.to_f64() / 2.0 * common::norm(path) + 4.0 * S::spacing(40.0);
+        if S::RELATIVE && got.contact == Contact::Face {
+            // Floats place a face contact by its own height, measured where it is: it may
+            // leave alpha's point by what alpha carries of the ends' height rounding (twice
+            // the planner's height error), spread along the path by its descent.
+            let descent = common::dot(path, got.normal.to_array()).abs();
+            let ends = 2.0 * S::PRECISION.height_error(40.0);
+            allowed += ends * common::norm(path) / descent.max(1e-300);
+        }
         assert!(
             off <= allowed,
             "{}: position {off:e} from alpha's on {c:?}",
@@ -273,8 +282,9 @@ fn position_is_precise<S: Tolerance>(cases: usize) -> (f64, f64) {
         let planned = S::PRECISION.position_error(extent);
         assert!(
             along <= planned,
-            "{}: {along:e} > planned {planned:e}",
-            S::NAME
+            "{}: {along:e} > planned {planned:e} ({:?} on {c:?})",
+            S::NAME,
+            got.contact
         );
         worst = worst.max(along);
         if got.contact == Contact::Face {
@@ -293,6 +303,12 @@ macro_rules! per_scalar {
         fn position_is_precise_in_every_scalar() {
             let (face, all) = position_is_precise::<$t>(50_000);
             println!("{}: contact position error along the normal {face:.3e} (faces), {all:.3e} (all)", <$t>::NAME);
+        }
+        #[test]
+        #[ignore = "10^6 casts: cargo test --release --test cast -- --ignored"]
+        fn position_is_precise_over_a_million_casts() {
+            let (face, all) = position_is_precise::<$t>(1_000_000);
+            println!("{}: contact position error along the normal over 10^6 casts {face:.3e} (faces), {all:.3e} (all)", <$t>::NAME);
         }
         #[test]
         fn cast_agrees_with_f64() {

@@ -12,8 +12,8 @@ use fixed::types::{I16F16, I32F32};
 use lockstep::{Bits, Fnv, Outcome, simulate};
 
 /// The pinned outcomes: hash, contacts, escapes.
-const F64: Outcome = pinned(0xfeb4_ce8d_2164_8066, 8381);
-const F32: Outcome = pinned(0x8728_d248_b058_025e, 8381);
+const F64: Outcome = pinned(0x1644_abf4_3739_4b28, 8381);
+const F32: Outcome = pinned(0x7795_caad_c2c7_6dd2, 8381);
 const I32F32_RUN: Outcome = pinned(0x1f8d_e7eb_e80e_7ab3, 8421);
 const I16F16_RUN: Outcome = pinned(0x6263_04f8_01af_b530, 8365);
 

@@ -53,6 +53,20 @@ pub fn near_sweeps() -> Vec<Path> {
         .collect()
 }
 
+/// `n` triangles in general position, as a terrain's: a grid of 1 × 1 cells at scene scale
+/// 10, each split in two, its heights jittered up to ±0.5, front faces up.
+pub fn terrain(n: usize) -> Vec<[P; 3]> {
+    let mut g = Rng(0x7E44_A1B2);
+    let mut h = |x: f64, z: f64| [x, g.range(-0.5, 0.5), z];
+    (0..n / 2)
+        .flat_map(|k| {
+            let (x, z) = ((k % 20) as f64 - 10.0, (k / 20 % 20) as f64 - 10.0);
+            let (a, b, c, d) = (h(x, z), h(x, z + 1.0), h(x + 1.0, z + 1.0), h(x + 1.0, z));
+            [[a, b, d], [b, c, d]]
+        })
+        .collect()
+}
+
 /// A room 16 × 8 × 16 facing inwards, its six walls tiled, the first `n` triangles of it (the
 /// last walls may be partly open), and short ball moves inside it, as a physics step makes.
 pub fn room(n: usize) -> (Vec<[P; 3]>, Vec<Path>) {

@@ -32,13 +32,13 @@ macro_rules! saturate {
 
 /// One fixed-point scalar: the type, its unit-vector type, the bits' type, the double-width
 /// type, the unsigned bits' type, fractional bits of both, the safe range's integer, and the
-/// exact widening products (signed, unsigned, a dot product with a unit vector), a division
-/// without the double width where the core needs it (`None` elsewhere), and the rounded square root of the double width
-/// with its unsigned type.
+/// exact widening products (signed, unsigned, a dot product with a unit vector), a division and
+/// a scaling by a fraction without the double-width division where the core needs them (`None`
+/// elsewhere), and the rounded square root of the double width with its unsigned type.
 macro_rules! fixed_scalar {
     (
         $t:ty, $unit:ty, $bits:ty, $wide:ty, $uwide:ty, $frac:expr, $ufrac:expr, $limit_int:expr,
-        $wmul:ident, $uwmul:ident, $wdot:ident, $ndiv:ident, $isqrt:ident, $sq:ty
+        $wmul:ident, $uwmul:ident, $wdot:ident, $ndiv:ident, $nscale:ident, $isqrt:ident, $sq:ty
     ) => {
         impl Scalar for $t {
             const ZERO: Self = <$t>::ZERO;
@@ -215,6 +215,14 @@ macro_rules! fixed_scalar {
                 };
                 saturate!($t, $bits, $wide, q)
             }
+            #[inline]
+            fn scale_fraction(v: Vec3<Self>, n: Self, d: Self) -> Vec3<Self> {
+                let bits = [v.x.to_bits(), v.y.to_bits(), v.z.to_bits()];
+                match $nscale(bits, n.to_bits(), d.to_bits()) {
+                    Some(q) => Vec3::new(q[0], q[1], q[2]).map(<$t>::from_bits),
+                    None => v.map(|c| Self::mul_div(c, n, d)),
+                }
+            }
             fn direction(v: Vec3<Self>) -> Option<(Self, Vec3<$unit>)> {
                 // Components below 2^(BITS-1) square to below 2^(2 BITS - 2): three fit unsigned.
                 let u = v.map(|c| c.to_bits().unsigned_abs());
@@ -269,6 +277,7 @@ fixed_scalar!(
     wide_mul_u32,
     wide_dot_i32,
     narrow_div_i32,
+    narrow_scale_fraction_i32,
     isqrt_nearest_64,
     u64
 );
@@ -285,6 +294,7 @@ fixed_scalar!(
     wide_mul_u64,
     wide_dot_i64,
     no_narrow_div,
+    no_narrow_scale_fraction,
     isqrt_nearest_128,
     u128
 );

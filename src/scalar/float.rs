@@ -77,6 +77,7 @@ macro_rules! float_scalar {
             fn mul_cmp(a: Self, b: Self, c: Self, d: Self) -> Ordering {
                 (a * b).partial_cmp(&(c * d)).unwrap_or(Ordering::Equal)
             }
+            #[inline]
             fn scaled(v: Vec3<Self>) -> Option<Vec3<Self>> {
                 let m = largest(v.x.abs(), v.y.abs(), v.z.abs());
                 if m.is_nan() || m <= 0.0 {
@@ -84,10 +85,12 @@ macro_rules! float_scalar {
                 }
                 Some(v.map(|c| c / m))
             }
+            #[inline]
             fn unit_normalize(s: Vec3<Self>) -> Vec3<Self> {
                 let len = $sqrt(crate::vec3::dot3(s, s));
                 s.map(|c| c / len)
             }
+            #[inline]
             fn unit_cross(a: Vec3<Self>, b: Vec3<Self>) -> Option<Vec3<Self>> {
                 let c = crate::vec3::cross(a, b);
                 let m = largest(c.x.abs(), c.y.abs(), c.z.abs());
@@ -99,6 +102,10 @@ macro_rules! float_scalar {
             #[inline]
             fn mul_div(a: Self, n: Self, d: Self) -> Self {
                 if d == 0.0 { 0.0 } else { a * n / d }
+            }
+            #[inline]
+            fn scale_fraction(v: Vec3<Self>, n: Self, d: Self) -> Vec3<Self> {
+                v.map(|c| Self::mul_div(c, n, d))
             }
             #[inline]
             fn div_pow2(v: Self, k: u32) -> Self {

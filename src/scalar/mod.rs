@@ -122,13 +122,16 @@ pub(crate) mod sealed {
         fn dot(a: Vec3<Self>, b: Vec3<Self>) -> Self;
         /// A bound on the rounding of a height (a coordinate in a triangle's frame) for points
         /// within `±m`: four steps of the spacing at `m` for floats, eight steps for fixed-point
-        /// (the planner's model, [`crate::Precision::distance_error`]). Needs `m` within `LIMIT`.
+        /// (the planner's model, [`crate::Precision::distance_error`]). Needs `m` within `4 * LIMIT`.
         fn height_error(m: Self) -> Self;
         /// `s * u` rounded once.
         fn mul_unit(s: Self, u: Self::Unit) -> Self;
         /// `a * n / d`, the fixed-point product taken exactly and rounded once (floats: two IEEE
         /// operations). Needs `|n| <= |d|`; zero for `d == 0`.
         fn mul_div(a: Self, n: Self, d: Self) -> Self;
+        /// [`mul_div`](Self::mul_div) of every component of `v` by the same fraction `n / d`:
+        /// the same numbers, for a core that can share the work of the three divisions.
+        fn scale_fraction(v: Vec3<Self>, n: Self, d: Self) -> Vec3<Self>;
         /// The length of `v` and its unit direction; `None` for the zero vector. Needs
         /// components within `8 * LIMIT` (fixed-point: the length is the exact integer square root
         /// of the exact sum of squares, rounded to nearest).

@@ -113,6 +113,58 @@ pub(super) fn no_narrow_div(_: i64, _: i64) -> Option<i64> {
     None
 }
 
+/// `I16F16`'s `round(a n / d)` for the three components `a` of a vector (bits, `|n| < |d|`) on
+/// cores without a long multiply or a divide instruction: one 64-bit division shared by the
+/// three, instead of one each ([`split_scale_fraction_i32`]); `None` elsewhere, and for
+/// `|n| >= |d|` or `d == 0`, where the per-component path is taken.
+#[inline]
+pub(super) fn narrow_scale_fraction_i32(a: [i32; 3], n: i32, d: i32) -> Option<[i32; 3]> {
+    if cfg!(ballcast_no_long_mul) {
+        split_scale_fraction_i32(a, n, d)
+    } else {
+        None
+    }
+}
+
+/// No narrow scaling by a fraction (`I32F32`).
+#[inline]
+pub(super) fn no_narrow_scale_fraction(_: [i64; 3], _: i64, _: i64) -> Option<[i64; 3]> {
+    None
+}
+
+/// `round(a n / d)` to nearest, ties away from zero, saturating, for each `a`: exactly what
+/// `mul_div` gives. `F = floor(|n| 2^32 / |d|)` (one division, `|n| < |d|` so `F < 2^32`)
+/// gives an estimate `floor(|a| F / 2^32)` short of `floor(|a n| / |d|)` by at most one
+/// (`|a| / 2^32 <= 1/2` lost to F, one to the floor); the exact remainder `|a n| - q |d|`,
+/// from 32-bit multiplies, corrects it and decides the rounding. `None` for `|n| >= |d|`.
+fn split_scale_fraction_i32(a: [i32; 3], n: i32, d: i32) -> Option<[i32; 3]> {
+    let (nm, dm) = (n.unsigned_abs(), d.unsigned_abs());
+    if nm >= dm {
+        return None;
+    }
+    let f = ((((nm as u64) << 32) / dm as u64) as u32, dm);
+    Some(a.map(|a| scale_one(a, n, d, f)))
+}
+
+/// One component of [`split_scale_fraction_i32`], with `(F, |d|)`.
+#[inline]
+fn scale_one(a: i32, n: i32, d: i32, (f, dm): (u32, u32)) -> i32 {
+    let am = a.unsigned_abs();
+    let mut q = (split_mul_u32(am, f) >> 32) as u32;
+    let exact = split_mul_u32(am, n.unsigned_abs());
+    // q <= floor(exact / dm) <= q + 1, so 0 <= rem < 2 dm.
+    let mut rem = exact - split_mul_u32(q, dm);
+    if rem >= dm as u64 {
+        q += 1;
+        rem -= dm as u64;
+    }
+    // Half or more of the divisor left: away from zero. q <= |a| < 2^31 + 1 afterwards.
+    let q = q as i64 + (rem >= dm as u64 - rem) as i64;
+    let negative = ((a < 0) != (n < 0)) != (d < 0);
+    let q = if negative { -q } else { q };
+    q.clamp(i32::MIN as i64, i32::MAX as i64) as i32
+}
+
 /// `round(n 2^16 / d)` to nearest, ties away from zero, saturating (a zero divisor gives the
 /// largest value of `n`'s sign, or zero): exactly what the generic 64-bit path of
 /// [`Scalar::div`](super::Scalar::div) gives, from 32-bit operations. The integer part is one 32-bit division (none
@@ -168,8 +220,11 @@ pub(super) fn wide_mul_u64(a: u64, b: u64) -> u128 {
 
 #[cfg(test)]
 mod tests {
-    use super::{split_div_i32, split_dot_i32, split_mul_i32, split_mul_u32};
+    use super::{
+        split_div_i32, split_dot_i32, split_mul_i32, split_mul_u32, split_scale_fraction_i32,
+    };
     use crate::Scalar;
+    use crate::scalar::sealed::Kernel;
     use fixed::types::I16F16;
 
     /// The split products equal the 64-bit ones: on the extremes and on 10^6 pseudo-random pairs.
@@ -247,6 +302,55 @@ mod tests {
             ] {
                 let want = I16F16::from_bits(n).div(I16F16::from_bits(d)).to_bits();
                 assert_eq!(split_div_i32(n, d), want, "{n} / {d}");
+            }
+        }
+        let mut x: u64 = 0x6A09_E667_F3BC_C909;
+        for k in 0..1_000_000u32 {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            // Mixed magnitudes; |n| < |d| (a fraction of a path) for most, any for some.
+            let a = [
+                (x as i32) >> (k % 31),
+                (x >> 8) as i32 >> (k % 29),
+                (x >> 24) as i32,
+            ];
+            let (n, d) = (
+                ((x >> 32) as i32) >> (k / 7 % 31),
+                (x >> 16) as i32 >> (k / 3 % 29),
+            );
+            let n = if k % 8 == 0 {
+                n
+            } else {
+                n % d.saturating_abs().max(1)
+            };
+            let want = a.map(|a| {
+                let f = |b: i32| I16F16::from_bits(b);
+                <I16F16 as Kernel>::mul_div(f(a), f(n), f(d)).to_bits()
+            });
+            if let Some(got) = split_scale_fraction_i32(a, n, d) {
+                assert_eq!(got, want, "{a:?} * {n} / {d}");
+            } else {
+                assert!(n.unsigned_abs() >= d.unsigned_abs());
+            }
+        }
+        for a in [i32::MIN, i32::MIN + 1, -1, 0, 1, i32::MAX] {
+            for (n, d) in [
+                (0, 1),
+                (1, 2),
+                (-1, 2),
+                (i32::MAX - 1, i32::MAX),
+                (i32::MIN + 1, i32::MIN),
+                (1, -3),
+                (-5, -7),
+            ] {
+                let f = |b: i32| I16F16::from_bits(b);
+                let want = <I16F16 as Kernel>::mul_div(f(a), f(n), f(d)).to_bits();
+                assert_eq!(
+                    split_scale_fraction_i32([a; 3], n, d),
+                    Some([want; 3]),
+                    "{a} * {n} / {d}"
+                );
             }
         }
         let (m, u) = (i32::MIN, 1 << 30);
