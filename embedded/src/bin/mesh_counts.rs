@@ -2,9 +2,9 @@
 //! `count.sh`'s mesh table: each geometry's casts go through its own `query_*` function, which
 //! QEMU's instruction log attributes. Runs:
 //! - the firmware's ramp room (96 triangles) as a linear scan of its prepared triangles
-//!   (`query_ramp_scan`) and as a mesh (`query_ramp_mesh`): the ball of `firmware`, 240 steps;
-//! - the arena (2 168 triangles, `query_arena_mesh`): the first 2 throws of the arena run,
-//!   120 steps each.
+//!   (`query_ramp_scan`) and as a mesh (`query_ramp_mesh`): the ball of `firmware`, 60 steps;
+//! - the arena (2 168 triangles, `query_arena_mesh`): the first throw of the arena run, 100
+//!   steps (it lands after about 50).
 //!
 //! Run: `cargo m0 mesh_counts` in `embedded/` (prints the runs' hashes; `count.sh` counts).
 #![no_std]
@@ -79,9 +79,9 @@ fn ramp_run(g: &Probe, steps: usize) -> u64 {
 
 #[entry]
 fn main() -> ! {
-    let scan = ramp_run(&Probe(query_ramp_scan), 240);
-    let mesh = ramp_run(&Probe(query_ramp_mesh), 240);
-    let arena = arena::simulate::<I16F16, _>(&Probe(query_arena_mesh), 2, 120);
+    let scan = ramp_run(&Probe(query_ramp_scan), 60);
+    let mesh = ramp_run(&Probe(query_ramp_mesh), 60);
+    let arena = arena::simulate::<I16F16, _>(&Probe(query_arena_mesh), 1, 100);
     hprintln!(
         "ramp scan {:016x}, ramp mesh {:016x}, arena {:016x}",
         scan,
