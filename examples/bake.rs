@@ -16,25 +16,30 @@ use std::process::ExitCode;
 
 const USAGE: &str = "usage: bake LEVEL [--scalar f32|f64|i16f16|i32f32] [--radius R]";
 
+fn usage() -> ExitCode {
+    eprintln!("{USAGE}");
+    ExitCode::from(2)
+}
+
 fn main() -> ExitCode {
     let mut args = std::env::args().skip(1);
     let (mut path, mut scalar, mut radius) = (None, "i16f16".to_string(), 0.5);
     while let Some(a) = args.next() {
-        match (a.as_str(), args.next()) {
-            ("--scalar", Some(s)) => scalar = s.to_ascii_lowercase(),
-            ("--radius", Some(r)) if r.parse::<f64>().is_ok_and(|r| r >= 0.0) => {
-                radius = r.parse().unwrap_or(radius)
-            }
-            (p, None) if path.is_none() && !p.starts_with("--") => path = Some(a.clone()),
-            _ => {
-                eprintln!("{USAGE}");
-                return ExitCode::from(2);
-            }
+        match a.as_str() {
+            "--scalar" => match args.next() {
+                Some(s) => scalar = s.to_ascii_lowercase(),
+                None => return usage(),
+            },
+            "--radius" => match args.next().and_then(|r| r.parse::<f64>().ok()) {
+                Some(r) if r >= 0.0 => radius = r,
+                _ => return usage(),
+            },
+            _ if path.is_none() && !a.starts_with("--") => path = Some(a),
+            _ => return usage(),
         }
     }
     let Some(path) = path else {
-        eprintln!("{USAGE}");
-        return ExitCode::from(2);
+        return usage();
     };
     match run(&path, &scalar, radius) {
         Ok(()) => ExitCode::SUCCESS,
