@@ -9,7 +9,7 @@ use gltf::mesh::Mode;
 use gltf::{Accessor, Gltf, Node};
 use std::path::Path;
 
-/// Deeper node hierarchies are refused (the format forbids cycles; this catches them).
+/// Deeper node hierarchies are refused (they would exhaust the stack).
 const MAX_DEPTH: usize = 256;
 
 fn malformed(m: impl Into<String>) -> Problem {
@@ -25,8 +25,9 @@ pub(crate) fn load(path: &Path) -> Result<Vec<Tri>, Problem> {
         .or_else(|| gltf.scenes().next())
         .ok_or_else(|| malformed("no scene"))?;
     let mut out = Vec::new();
+    let mut seen = vec![false; gltf.nodes().count()];
     for node in scene.nodes() {
-        walk(&node, IDENTITY, &buffers, &mut out, 0)?;
+        walk(&node, IDENTITY, &buffers, &mut out, &mut seen, 0)?;
     }
     Ok(out)
 }
@@ -104,10 +105,22 @@ fn walk(
     parent: Mat,
     buffers: &[Vec<u8>],
     out: &mut Vec<Tri>,
+    seen: &mut [bool],
     depth: usize,
 ) -> Result<(), Problem> {
     if depth > MAX_DEPTH {
-        return Err(malformed("node hierarchy deeper than 256 (a cycle?)"));
+        return Err(malformed("node hierarchy deeper than 256"));
+    }
+    // Nodes form trees (glTF 2.0, 3.5.3): a node reached twice is a cycle or a shared child.
+    match seen.get_mut(node.index()) {
+        Some(s) if !*s => *s = true,
+        _ => {
+            let m = format!(
+                "node {} reached twice: the hierarchy is not a tree",
+                node.index()
+            );
+            return Err(malformed(m));
+        }
     }
     let local = node.transform().matrix().map(|c| c.map(f64::from));
     let world = mul(&parent, &local);
@@ -137,7 +150,6 @@ fn walk(
                 .collect();
             let indices: Vec<u32> = match prim.indices() {
                 Some(acc) => {
-                    check(&acc, buffers)?;
                     if acc.dimensions() != Dimensions::Scalar
                         || !matches!(
                             acc.data_type(),
@@ -149,6 +161,7 @@ fn walk(
                             what()
                         )));
                     }
+                    check(&acc, buffers)?;
                     reader
                         .read_indices()
                         .ok_or_else(|| malformed(format!("{}: unreadable indices", what())))?
@@ -192,7 +205,7 @@ fn walk(
         }
     }
     for child in node.children() {
-        walk(&child, world, buffers, out, depth + 1)?;
+        walk(&child, world, buffers, out, seen, depth + 1)?;
     }
     Ok(())
 }
