@@ -133,6 +133,11 @@ fn malformed_gltf_and_glb() {
         refused("truncated.glb", "malformed"),
         Problem::Malformed(_)
     ));
+    // hierarchy.gltf with the root listed as a child of its own child: a cycle, not a tree.
+    assert!(matches!(
+        refused("cycle.gltf", "not a tree"),
+        Problem::Malformed(_)
+    ));
 }
 
 #[test]
