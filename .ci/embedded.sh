@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
 # Microcontroller CI: the lockstep scene on Cortex-M0 (thumbv6m-none-eabi, soft float) and
 # Cortex-M4F (thumbv7em-none-eabihf) under qemu-system-arm with semihosting must print every
-# scalar's trajectory hash bit for bit as the host does; then the face test's instruction counts
-# and code size per scalar on both (embedded/count.sh). Run by .ci/run after `cargo test`.
+# scalar's trajectory hash bit for bit as the host does; the firmware's levels, baked at build
+# time (embedded/build.rs), run on the Cortex-M0, the 2 168-triangle arena mesh with the host's
+# hash; then the face test's instruction counts and code size per scalar on both
+# (embedded/count.sh). Run by .ci/run after `cargo test --workspace`.
 #
 #   bash .ci/embedded.sh
 #
