@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
 # Microcontroller CI: the lockstep scene on Cortex-M0 (thumbv6m-none-eabi, soft float) and
 # Cortex-M4F (thumbv7em-none-eabihf) under qemu-system-arm with semihosting must print every
-# scalar's trajectory hash bit for bit as the host does; then the face test's instruction counts
-# and code size per scalar on both (embedded/count.sh). Run by .ci/run after `cargo test`.
+# scalar's trajectory hash bit for bit as the host does; the firmware's levels, baked at build
+# time (embedded/build.rs), run on the Cortex-M0, the 2 168-triangle arena mesh with the host's
+# hash; then the face test's instruction counts and code size per scalar on both
+# (embedded/count.sh). Run by .ci/run after `cargo test`.
 #
 #   bash .ci/embedded.sh
 #
@@ -59,11 +61,25 @@ if [ "$failed" -ne 0 ]; then
 fi
 echo "lockstep: every scalar's hash equals the host's on thumbv6m-none-eabi and thumbv7em-none-eabihf"
 
-echo "== firmware: a baked I16F16 scene in flash, on thumbv6m-none-eabi under QEMU"
-(cd embedded && cargo build --quiet --release --target thumbv6m-none-eabi --bin firmware)
+echo "== firmware: levels baked at build time (embedded/build.rs) into flash, on thumbv6m-none-eabi"
+(cd embedded && cargo build --quiet --release --target thumbv6m-none-eabi \
+    --bin firmware --bin arena --bin mesh_counts)
 (cd embedded && timeout 120 cargo run --quiet --release --target thumbv6m-none-eabi --bin firmware) \
     | tee "$work/firmware.txt"
 grep -q "^firmware: " "$work/firmware.txt"
+# The 2 168-triangle arena: baked mesh on the Cortex-M0, mesh built at run time on the host.
+cargo run --quiet --release --example arena >"$work/arena-host.txt"
+(cd embedded && timeout 300 cargo run --quiet --release --target thumbv6m-none-eabi --bin arena) \
+    | tee "$work/arena.txt"
+if [ "$(head -1 "$work/arena.txt")" = "$(cat "$work/arena-host.txt")" ]; then
+    echo "arena: the baked mesh's hash on thumbv6m-none-eabi equals the host's ($(cat "$work/arena-host.txt"))"
+else
+    echo "FAIL: arena on thumbv6m-none-eabi: $(head -1 "$work/arena.txt") (host $(cat "$work/arena-host.txt"))" >&2
+    exit 1
+fi
+# The mesh-count program's runs (its ramp mesh must agree with the ramp's linear scan); the
+# instruction counts themselves come from embedded/mesh_count.sh, run locally (slow).
+(cd embedded && timeout 120 cargo run --quiet --release --target thumbv6m-none-eabi --bin mesh_counts)
 
 echo "== face test: instructions and size per scalar"
 bash embedded/count.sh

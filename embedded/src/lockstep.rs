@@ -19,7 +19,7 @@
 //!   its throw and counts as an escape; the run never panics once the scene is built.
 #![allow(dead_code)]
 
-use ballcast::{Error, Scalar, StandardTriangle, Triangle, Vec3, move_and_slide};
+use ballcast::{Error, Geometry, Scalar, StandardTriangle, Triangle, Vec3, move_and_slide};
 use fixed::types::{I16F16, I32F32};
 
 /// Steps in a whole run, over all throws.
@@ -125,13 +125,13 @@ pub struct Ball<S> {
 /// One time step: gravity, then `move_and_slide` through the scene (full contacts: faces,
 /// edges, vertices), then the velocity loses whatever pointed into the contacts. Returns the
 /// number of contacts; an error only if the ball leaves the scalar's range.
-pub fn step<S: Scalar>(
-    tris: &[StandardTriangle<S>],
+pub fn step<S: Scalar, G: Geometry<S> + ?Sized>(
+    scene: &G,
     k: &Params<S>,
     ball: &mut Ball<S>,
 ) -> Result<u32, Error> {
     ball.v += k.gravity.scale(k.dt);
-    let out = move_and_slide(tris, ball.p, ball.v.scale(k.dt), k.radius)?;
+    let out = move_and_slide(scene, ball.p, ball.v.scale(k.dt), k.radius)?;
     ball.p = out.position;
     ball.v = out.clip(ball.v)?;
     Ok(out.contacts.iter().flatten().count() as u32)
@@ -230,7 +230,7 @@ pub fn simulate<S: Bits>() -> Outcome {
         let start = Ball { p: v3(p), v: v3(v) };
         let mut ball = start;
         for _ in 0..STEPS_PER_THROW {
-            match step(&tris, &k, &mut ball) {
+            match step(&tris[..], &k, &mut ball) {
                 Ok(n) => out.contacts += n,
                 Err(_) => {
                     out.escapes += 1;

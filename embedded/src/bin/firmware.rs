@@ -1,9 +1,9 @@
-//! Firmware use case: a prepared scene kept in flash (`baked.rs`, a `static` built by `const fn`,
-//! no start-up work) and a ball rolled through it in I16F16 with `move_and_slide`, on a
-//! Cortex-M0 (RP2040 class, no FPU). Prints where the ball comes to rest over semihosting.
+//! Firmware use case: a level kept in flash (`examples/data/ramp.obj`, baked by `build.rs` into
+//! a `static` mesh built by `const fn`, no start-up work) and a ball rolled through it in I16F16
+//! with `move_and_slide`, on a Cortex-M0 (RP2040 class, no FPU). Prints where the ball comes to
+//! rest over semihosting.
 //!
-//! Run: `cargo m0 firmware` in `embedded/` (QEMU), after `cargo run --example bake` at the top
-//! if `ramp.rs` changed.
+//! Run: `cargo m0 firmware` in `embedded/` (QEMU).
 #![no_std]
 #![no_main]
 
@@ -13,8 +13,9 @@ use cortex_m_semihosting::{debug, hprintln};
 use fixed::types::I16F16;
 use panic_semihosting as _;
 
-#[path = "../baked.rs"]
-mod baked;
+mod ramp {
+    include!(concat!(env!("OUT_DIR"), "/ramp.rs"));
+}
 
 const STEPS: u32 = 600; // 10 s at 60 Hz
 
@@ -29,7 +30,7 @@ fn main() -> ! {
     for _ in 0..STEPS {
         v = v + gravity * dt;
         // An error means the ball left the safe range: it cannot in this closed corner.
-        let Ok(out) = move_and_slide(&baked::SCENE[..], p, v * dt, r) else {
+        let Ok(out) = move_and_slide(&ramp::MESH, p, v * dt, r) else {
             break;
         };
         let Ok(clipped) = out.clip(v) else { break };
@@ -39,8 +40,8 @@ fn main() -> ! {
     }
     hprintln!(
         "firmware: {} triangles in flash, {} bytes each; after {} steps the ball rests at ({}, {}, {}) with {} contacts",
-        baked::SCENE.len(),
-        core::mem::size_of_val(&baked::SCENE[0]),
+        ramp::MESH.len(),
+        core::mem::size_of_val(&ramp::TRIANGLES[0]),
         STEPS,
         p.x.to_num::<f32>(),
         p.y.to_num::<f32>(),

@@ -1,0 +1,99 @@
+//! Instructions per query (one `Geometry::cast` of `move_and_slide`) on the baked meshes, for
+//! `count.sh`'s mesh table: each geometry's casts go through its own `query_*` function, which
+//! QEMU's instruction log attributes. Runs:
+//! - the firmware's ramp room (96 triangles) as a linear scan of its prepared triangles
+//!   (`query_ramp_scan`) and as a mesh (`query_ramp_mesh`): the ball of `firmware`, 60 steps;
+//! - the arena (2 168 triangles, `query_arena_mesh`): the first throw of the arena run, 100
+//!   steps (it lands after about 50).
+//!
+//! Run: `cargo m0 mesh_counts` in `embedded/` (prints the runs' hashes; `count.sh` counts).
+#![no_std]
+#![no_main]
+
+use ballcast::{Geometry, SceneHit, Sweep};
+use cortex_m_rt::entry;
+use cortex_m_semihosting::{debug, hprintln};
+use fixed::types::I16F16;
+use panic_semihosting as _;
+
+#[path = "../arena.rs"]
+mod arena;
+#[path = "../lockstep.rs"]
+mod lockstep;
+mod level {
+    include!(concat!(env!("OUT_DIR"), "/arena.rs"));
+}
+mod ramp {
+    include!(concat!(env!("OUT_DIR"), "/ramp.rs"));
+}
+
+type Hit = Option<SceneHit<I16F16>>;
+
+/// A geometry whose casts go through one non-inlined function.
+struct Probe(fn(&Sweep<I16F16>) -> Hit);
+
+impl Geometry<I16F16> for Probe {
+    fn cast(&self, sweep: &Sweep<I16F16>) -> Hit {
+        (self.0)(sweep)
+    }
+}
+
+#[inline(never)]
+#[unsafe(no_mangle)]
+fn query_ramp_scan(s: &Sweep<I16F16>) -> Hit {
+    ramp::TRIANGLES[..].cast(s)
+}
+
+#[inline(never)]
+#[unsafe(no_mangle)]
+fn query_ramp_mesh(s: &Sweep<I16F16>) -> Hit {
+    ramp::MESH.cast(s)
+}
+
+#[inline(never)]
+#[unsafe(no_mangle)]
+fn query_arena_mesh(s: &Sweep<I16F16>) -> Hit {
+    level::MESH.cast(s)
+}
+
+/// The firmware's ball in the ramp room: `steps` steps from (5.5, 4.5, 4.5) at rest.
+fn ramp_run(g: &Probe, steps: usize) -> u64 {
+    let k = lockstep::Params::<I16F16>::new();
+    let c = I16F16::from_num;
+    let z = I16F16::ZERO;
+    let mut ball = lockstep::Ball {
+        p: ballcast::Vec3::new(c(5.5), c(4.5), c(4.5)),
+        v: ballcast::Vec3::new(z, z, z),
+    };
+    let mut hash = lockstep::Fnv::new();
+    for _ in 0..steps {
+        if lockstep::step(g, &k, &mut ball).is_err() {
+            break;
+        }
+        for v in ball.p.to_array() {
+            hash.write_u64(lockstep::Bits::bits(v));
+        }
+    }
+    hash.0
+}
+
+#[entry]
+fn main() -> ! {
+    let scan = ramp_run(&Probe(query_ramp_scan), 60);
+    let mesh = ramp_run(&Probe(query_ramp_mesh), 60);
+    let arena = arena::simulate::<I16F16, _>(&Probe(query_arena_mesh), 1, 100);
+    hprintln!(
+        "ramp scan {:016x}, ramp mesh {:016x}, arena {:016x}",
+        scan,
+        mesh,
+        arena.hash
+    );
+    if scan != mesh {
+        hprintln!("FAIL: the ramp's mesh and linear scan disagree");
+        debug::exit(debug::EXIT_FAILURE);
+    }
+    debug::exit(debug::EXIT_SUCCESS);
+    loop {
+        cortex_m::asm::wfi();
+    }
+}

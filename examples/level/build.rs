@@ -1,0 +1,34 @@
+//! Bakes the firmware's levels (`examples/data/ramp.obj` in every scalar, `arena.obj` in
+//! I16F16) into `OUT_DIR` with this crate's own bake, so `tests/baked.rs` can compile the
+//! statics and check them against the run-time build.
+
+use std::path::{Path, PathBuf};
+
+#[allow(dead_code, unused_imports)]
+#[path = "src/lib.rs"]
+mod level;
+
+fn main() {
+    let out = PathBuf::from(std::env::var_os("OUT_DIR").expect("cargo sets OUT_DIR"));
+    let data = Path::new(env!("CARGO_MANIFEST_DIR")).join("../data");
+    println!("cargo::rerun-if-changed=src");
+    let load = |name: &str| {
+        let path = data.join(name);
+        println!("cargo::rerun-if-changed={}", path.display());
+        level::load(&path).unwrap_or_else(|e| panic!("{e}"))
+    };
+    let write = |name: &str, baked: Result<level::Baked, level::LevelError>| {
+        let baked = baked.unwrap_or_else(|e| panic!("{e}"));
+        std::fs::write(out.join(name), baked.source).expect("OUT_DIR is writable");
+    };
+    let ramp = load("ramp.obj");
+    write("ramp_f32.rs", level::bake::<f32>(&ramp));
+    write("ramp_f64.rs", level::bake::<f64>(&ramp));
+    write("ramp_i16f16.rs", level::bake::<fixed::types::I16F16>(&ramp));
+    write("ramp_i32f32.rs", level::bake::<fixed::types::I32F32>(&ramp));
+    let arena = load("arena.obj");
+    write(
+        "arena_i16f16.rs",
+        level::bake::<fixed::types::I16F16>(&arena),
+    );
+}

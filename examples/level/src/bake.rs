@@ -1,0 +1,300 @@
+//! The bake: a level's triangles, range-checked for the scalar, built into a [`Mesh`] as at
+//! run time, written out as Rust source through `const` constructors, one line per node or
+//! triangle.
+
+use super::{Level, LevelError, Problem};
+use ballcast::bvh::nodes_for;
+use ballcast::{Degenerates, Error, Mesh, Node, Scalar, StandardTriangle, Triangle, Vec3};
+use fixed::types::{I2F30, I2F62, I16F16, I32F32};
+use std::fmt::{self, Write};
+
+/// A scalar the bake can write as source: its type's name and its values as raw bits.
+pub trait Emit: Scalar {
+    /// The type as written in source (`f32`, `I16F16`, ...).
+    const NAME: &'static str;
+    /// The unit-vector component type (`f32`, `I2F30`, ...).
+    const UNIT: &'static str;
+    /// The integer type of the raw bits of `NAME`.
+    const BITS: &'static str;
+    /// The integer type of the raw bits of `UNIT`.
+    const UNIT_BITS: &'static str;
+    /// The `use` line the source needs for the two types (empty for floats).
+    const IMPORT: &'static str;
+    /// A value's raw bits as a literal.
+    fn bits(self) -> String;
+    /// A unit component's raw bits as a literal.
+    fn unit_bits(u: Self::Unit) -> String;
+}
+
+macro_rules! emit {
+    ($s:ty, $u:ty, $bits:ty, $ubits:ty, $import:expr) => {
+        impl Emit for $s {
+            const NAME: &'static str = stringify!($s);
+            const UNIT: &'static str = stringify!($u);
+            const BITS: &'static str = stringify!($bits);
+            const UNIT_BITS: &'static str = stringify!($ubits);
+            const IMPORT: &'static str = $import;
+            fn bits(self) -> String {
+                self.to_bits().to_string()
+            }
+            fn unit_bits(u: $u) -> String {
+                u.to_bits().to_string()
+            }
+        }
+    };
+}
+emit!(f32, f32, u32, u32, "");
+emit!(f64, f64, u64, u64, "");
+emit!(
+    I16F16,
+    I2F30,
+    i32,
+    i32,
+    "use fixed::types::{I2F30, I16F16};"
+);
+emit!(
+    I32F32,
+    I2F62,
+    i64,
+    i64,
+    "use fixed::types::{I2F62, I32F32};"
+);
+
+/// What a bake made of a level.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Stats {
+    /// The scalar.
+    pub scalar: &'static str,
+    /// Triangles in the level.
+    pub triangles: usize,
+    /// Input indices of the degenerate triangles left out.
+    pub skipped: Vec<usize>,
+    /// Tree nodes.
+    pub nodes: usize,
+    /// Bytes of the statics: prepared triangles, order and nodes.
+    pub bytes: usize,
+    /// The largest coordinate's magnitude.
+    pub extent: f64,
+}
+
+impl Stats {
+    /// Bytes in flash per triangle kept.
+    pub fn per_triangle(&self) -> f64 {
+        self.bytes as f64 / (self.triangles - self.skipped.len()).max(1) as f64
+    }
+}
+
+impl fmt::Display for Stats {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(
+            f,
+            "{}: {} triangles, {} degenerate skipped {:?}, {} nodes, {} bytes in flash ({:.1} per triangle)",
+            self.scalar,
+            self.triangles,
+            self.skipped.len(),
+            self.skipped,
+            self.nodes,
+            self.bytes,
+            self.per_triangle()
+        )
+    }
+}
+
+/// The planner's verdict on every scalar at `extent` for a ball of `radius`, one phrase each.
+pub fn verdicts(extent: f64, radius: f64) -> String {
+    let v: Vec<String> = ballcast::plan(extent, radius, 2.0 * extent)
+        .iter()
+        .map(|v| {
+            if v.fits {
+                format!(
+                    "{} fits (position error {:.1e}, radius at least {:.1e})",
+                    v.precision.name, v.position_error, v.min_radius
+                )
+            } else {
+                format!("{} does not fit", v.precision.name)
+            }
+        })
+        .collect();
+    format!("plan at extent {extent}, radius {radius}: {}", v.join("; "))
+}
+
+/// A level baked for scalar `S`: the source of the statics and what went into them.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Baked {
+    /// Rust source defining `NODES`, `TRIANGLES`, `ORDER` and `MESH: Mesh<'static, S>`; it
+    /// needs the `ballcast` crate (and `fixed` for fixed-point scalars).
+    pub source: String,
+    /// What it holds.
+    pub stats: Stats,
+}
+
+/// The level's triangles in `S`.
+///
+/// Errors: [`Problem::OutOfRange`] for a coordinate beyond `S::LIMIT`.
+pub fn triangles<S: Scalar + Emit>(level: &Level) -> Result<Vec<Triangle<S>>, LevelError> {
+    let limit = S::LIMIT.to_f64();
+    let mut out = Vec::with_capacity(level.triangles.len());
+    for (triangle, t) in level.triangles.iter().enumerate() {
+        if let Some(&value) = t.iter().flatten().find(|c| c.abs() > limit) {
+            let problem = Problem::OutOfRange {
+                triangle,
+                value,
+                scalar: S::NAME,
+                limit,
+            };
+            return Err(LevelError::new(&level.path, problem));
+        }
+        let v = t.map(|p| Vec3::new(p[0], p[1], p[2]).map(S::from_f64));
+        out.push(Triangle::new(v[0], v[1], v[2]));
+    }
+    Ok(out)
+}
+
+/// Bakes `level` for scalar `S`: builds the mesh as [`Mesh::build`] does at run time (degenerate
+/// triangles skipped and listed) and writes it as source.
+///
+/// Errors: [`Problem::OutOfRange`], or [`Problem::Mesh`] when the build refuses a triangle.
+pub fn bake<S: Scalar + Emit>(level: &Level) -> Result<Baked, LevelError> {
+    let sources = triangles::<S>(level)?;
+    let n = sources.len();
+    let skipped: Vec<usize> = (0..n)
+        .filter(|&i| StandardTriangle::new(&sources[i]) == Err(Error::Degenerate))
+        .collect();
+    let mut nodes = vec![Node::default(); nodes_for(n)];
+    let mut prepared = vec![Mesh::<S>::filler(); n];
+    let mut order = vec![0u32; n];
+    let mut scratch = vec![0u64; 6 * n];
+    let (mesh, _) = Mesh::build(
+        &sources,
+        Degenerates::Skip,
+        &mut nodes,
+        &mut prepared,
+        &mut order,
+        &mut scratch,
+    )
+    .map_err(|e| LevelError::new(&level.path, Problem::Mesh(e)))?;
+    let extent = level
+        .triangles
+        .iter()
+        .flatten()
+        .flatten()
+        .fold(0.0f64, |m, c| m.max(c.abs()));
+    let stats = Stats {
+        scalar: S::NAME,
+        triangles: n,
+        skipped,
+        nodes: mesh.nodes().len(),
+        bytes: size_of_val(mesh.triangles())
+            + size_of_val(mesh.order())
+            + size_of_val(mesh.nodes()),
+        extent,
+    };
+    let source = write::<S>(&mesh, level, &stats);
+    Ok(Baked { source, stats })
+}
+
+fn write<S: Scalar + Emit>(mesh: &Mesh<S>, level: &Level, stats: &Stats) -> String {
+    let (s, u, b, ub) = (S::NAME, S::UNIT, S::BITS, S::UNIT_BITS);
+    let mut o = String::new();
+    let _ = writeln!(
+        o,
+        "// Generated by ballcast-level from {}: do not edit.",
+        level.path.display()
+    );
+    let _ = writeln!(o, "// {stats}");
+    let _ = writeln!(
+        o,
+        "use ballcast::{{Edge, Grid, Mesh, Node, Parts, StandardTriangle, Vec3}};"
+    );
+    let _ = writeln!(o, "{}", S::IMPORT);
+    let _ = writeln!(o, "const fn s(b: {b}) -> {s} {{ {s}::from_bits(b) }}");
+    let _ = writeln!(o, "const fn u(b: {ub}) -> {u} {{ {u}::from_bits(b) }}");
+    let _ = writeln!(
+        o,
+        "const fn v(p: [{b}; 3]) -> Vec3<{s}> {{ Vec3::new(s(p[0]), s(p[1]), s(p[2])) }}"
+    );
+    let _ = writeln!(
+        o,
+        "const fn w(p: [{ub}; 3]) -> Vec3<{u}> {{ Vec3::new(u(p[0]), u(p[1]), u(p[2])) }}"
+    );
+    let _ = writeln!(
+        o,
+        "const fn e(d: [{ub}; 2], len: {b}) -> Edge<{s}> {{ Edge {{ dir: [u(d[0]), u(d[1])], len: s(len) }} }}"
+    );
+    let _ = writeln!(
+        o,
+        "#[allow(clippy::too_many_arguments)]\n\
+         const fn t(origin: [{b}; 3], axes: [[{ub}; 3]; 3], shape: [{b}; 3], normal: [{b}; 3], \
+         dirs: [[{ub}; 2]; 3], lens: [{b}; 3], features: u8, two_sided: bool) -> StandardTriangle<{s}> {{\n    \
+         StandardTriangle::from_parts(Parts {{ origin: v(origin), axes: [w(axes[0]), w(axes[1]), w(axes[2])], \
+         shape: [s(shape[0]), s(shape[1]), s(shape[2])], normal: v(normal), \
+         edges: [e(dirs[0], lens[0]), e(dirs[1], lens[1]), e(dirs[2], lens[2])], features, two_sided }})\n}}"
+    );
+    let _ = writeln!(
+        o,
+        "const fn n(boxes: [[u8; 6]; 4], shift: [u8; 3], count: u8, children: [u32; 4]) -> Node {{ Node {{ boxes, shift, count, children }} }}"
+    );
+    let list = |v: &[String]| format!("[{}]", v.join(", "));
+    let vs = |p: Vec3<S>| list(&p.to_array().map(S::bits));
+    let ws = |p: Vec3<S::Unit>| list(&[p.x, p.y, p.z].map(S::unit_bits));
+    let nodes = mesh.nodes();
+    let _ = writeln!(
+        o,
+        "/// The tree's nodes.\npub static NODES: [Node; {}] = [",
+        nodes.len()
+    );
+    for nd in nodes {
+        let boxes: Vec<String> = nd.boxes.iter().map(|b| format!("{b:?}")).collect();
+        let _ = writeln!(
+            o,
+            "    n({}, {:?}, {}, {:?}),",
+            list(&boxes),
+            nd.shift,
+            nd.count,
+            nd.children
+        );
+    }
+    let _ = writeln!(o, "];");
+    let tris = mesh.triangles();
+    let _ = writeln!(
+        o,
+        "/// The prepared triangles, in leaf order.\npub static TRIANGLES: [StandardTriangle<{s}>; {}] = [",
+        tris.len()
+    );
+    for t in tris {
+        let p = t.to_parts();
+        let axes: Vec<String> = p.axes.iter().map(|a| ws(*a)).collect();
+        let dirs: Vec<String> = p
+            .edges
+            .iter()
+            .map(|e| list(&e.dir.map(S::unit_bits)))
+            .collect();
+        let lens: Vec<String> = p.edges.iter().map(|e| e.len.bits()).collect();
+        let _ = writeln!(
+            o,
+            "    t({}, {}, {}, {}, {}, {}, {}, {}),",
+            vs(p.origin),
+            list(&axes),
+            list(&p.shape.map(S::bits)),
+            vs(p.normal),
+            list(&dirs),
+            list(&lens),
+            p.features,
+            p.two_sided
+        );
+    }
+    let _ = writeln!(o, "];");
+    let _ = writeln!(
+        o,
+        "/// The level's index of each prepared triangle.\npub static ORDER: [u32; {}] = {:?};",
+        mesh.order().len(),
+        mesh.order()
+    );
+    let g = mesh.grid();
+    let _ = writeln!(
+        o,
+        "/// The mesh, in flash.\npub static MESH: Mesh<'static, {s}> = Mesh::from_parts(&NODES, &TRIANGLES, &ORDER, Grid {{ exponent: {}, lo: {:?}, hi: {:?} }});",
+        g.exponent, g.lo, g.hi
+    );
+    o
+}

@@ -1,0 +1,143 @@
+//! Levels from modelling tools for ballcast: loads Wavefront OBJ ([`tobj`]) and glTF 2.0 / GLB
+//! ([`gltf`]) files into plain triangles, and bakes them into Rust source for a `static`
+//! [`ballcast::Mesh`] (nodes, prepared triangles and order through the crate's `const`
+//! constructors), so firmware keeps a level in flash and does no work at start-up.
+//!
+//! Shared by `cargo run --release --example bake -- LEVEL` and the firmware's build script.
+//!
+//! Winding: both formats, like ballcast, take counter-clockwise vertices (seen from the front)
+//! as the front face; the loader keeps the order (and reverses it under a mirroring glTF node
+//! transform, as the glTF specification asks), so a ball stops on the side the normals face.
+//!
+//! Every failure is a [`LevelError`] naming the file and the problem; nothing is printed and
+//! nothing panics on a malformed file.
+
+mod bake;
+mod gltf_file;
+mod obj;
+
+pub use bake::{Baked, Emit, Stats, bake, triangles, verdicts};
+
+use std::fmt;
+use std::path::{Path, PathBuf};
+
+/// A triangle as three points, counter-clockwise seen from its front.
+pub type Tri = [[f64; 3]; 3];
+
+/// A loaded level: its triangles in file order (OBJ: model by model, face by face; glTF: node
+/// by node depth first in the default scene, primitive by primitive).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Level {
+    /// The file it came from.
+    pub path: PathBuf,
+    /// The triangles, in world coordinates (glTF node transforms applied).
+    pub triangles: Vec<Tri>,
+}
+
+/// Why a level could not be loaded or baked: the file and the problem.
+#[derive(Debug)]
+pub struct LevelError {
+    /// The file.
+    pub path: PathBuf,
+    /// What is wrong with it.
+    pub problem: Problem,
+}
+
+/// What is wrong with a level file.
+#[non_exhaustive]
+#[derive(Debug)]
+pub enum Problem {
+    /// It could not be read.
+    Io(std::io::Error),
+    /// Neither `.obj`, `.gltf` nor `.glb`.
+    UnknownFormat,
+    /// The parser refused it (its message).
+    Malformed(String),
+    /// It holds no triangle.
+    NoTriangles,
+    /// A coordinate is NaN or infinite.
+    NotFinite {
+        /// The triangle's index in the level.
+        triangle: usize,
+    },
+    /// A coordinate lies outside the chosen scalar's safe range.
+    OutOfRange {
+        /// The triangle's index in the level.
+        triangle: usize,
+        /// The coordinate.
+        value: f64,
+        /// The scalar's name.
+        scalar: &'static str,
+        /// Its safe range, `±limit`.
+        limit: f64,
+    },
+    /// The mesh build refused it.
+    Mesh(ballcast::MeshError),
+}
+
+impl fmt::Display for LevelError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{}: ", self.path.display())?;
+        match &self.problem {
+            Problem::Io(e) => write!(f, "cannot read: {e}"),
+            Problem::UnknownFormat => f.write_str("unknown format (expected .obj, .gltf or .glb)"),
+            Problem::Malformed(m) => write!(f, "malformed: {m}"),
+            Problem::NoTriangles => f.write_str("no triangles"),
+            Problem::NotFinite { triangle } => {
+                write!(f, "triangle {triangle} has a NaN or infinite coordinate")
+            }
+            Problem::OutOfRange {
+                triangle,
+                value,
+                scalar,
+                limit,
+            } => write!(
+                f,
+                "triangle {triangle} has the coordinate {value}, outside {scalar}'s range ±{limit}"
+            ),
+            Problem::Mesh(e) => write!(f, "mesh build refused: {e}"),
+        }
+    }
+}
+
+impl std::error::Error for LevelError {}
+
+impl LevelError {
+    pub(crate) fn new(path: &Path, problem: Problem) -> Self {
+        Self {
+            path: path.to_path_buf(),
+            problem,
+        }
+    }
+}
+
+/// Loads a level by its extension (`.obj`, `.gltf`, `.glb`, any case).
+///
+/// Errors: [`Problem::Io`] (missing or unreadable), [`Problem::UnknownFormat`],
+/// [`Problem::Malformed`], [`Problem::NoTriangles`], [`Problem::NotFinite`].
+pub fn load(path: impl AsRef<Path>) -> Result<Level, LevelError> {
+    let path = path.as_ref();
+    let ext = path
+        .extension()
+        .and_then(|e| e.to_str())
+        .map(str::to_ascii_lowercase);
+    let triangles = match ext.as_deref() {
+        Some("obj") => obj::load(path),
+        Some("gltf" | "glb") => gltf_file::load(path),
+        _ => Err(Problem::UnknownFormat),
+    }
+    .map_err(|p| LevelError::new(path, p))?;
+    if triangles.is_empty() {
+        return Err(LevelError::new(path, Problem::NoTriangles));
+    }
+    if let Some(triangle) = triangles
+        .iter()
+        .position(|t| t.iter().flatten().any(|c| !c.is_finite()))
+    {
+        return Err(LevelError::new(path, Problem::NotFinite { triangle }));
+    }
+    Ok(Level {
+        path: path.to_path_buf(),
+        triangles,
+    })
+}

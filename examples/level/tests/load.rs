@@ -1,0 +1,201 @@
+//! The loader on small files written by hand (`tests/data`), against the triangles expected of
+//! them; malformed files of each kind give an error naming the file, not a panic.
+
+use ballcast::{Contact, Geometry, StandardTriangle, Sweep, Vec3};
+use ballcast_level::{Level, Problem, Tri, bake, load, triangles};
+use fixed::types::I16F16;
+
+fn data(name: &str) -> String {
+    format!("{}/tests/data/{name}", env!("CARGO_MANIFEST_DIR"))
+}
+
+fn assert_near(got: &[Tri], want: &[Tri]) {
+    assert_eq!(got.len(), want.len(), "{got:?}");
+    for (g, w) in got.iter().zip(want) {
+        let far = g
+            .iter()
+            .flatten()
+            .zip(w.iter().flatten())
+            .any(|(a, b)| (a - b).abs() > 1e-6);
+        assert!(!far, "got {g:?}, want {w:?}");
+    }
+}
+
+/// A ball dropped onto the level from above at (x, z) stops on a face whose normal is +y,
+/// and one rising from below passes (front faces are counter-clockwise seen from above).
+fn front_faces_up(level: &Level, x: f32, z: f32) {
+    let prepared: Vec<StandardTriangle<f32>> = triangles::<f32>(level)
+        .unwrap()
+        .iter()
+        .map(|t| StandardTriangle::new(t).unwrap())
+        .collect();
+    let down = Sweep::new(Vec3::new(x, 2.0, z), Vec3::new(x, -2.0, z), 0.25).unwrap();
+    let hit = prepared[..]
+        .cast(&down)
+        .expect("the front face stops the ball");
+    assert_eq!(
+        (hit.normal, hit.contact),
+        (Vec3::new(0.0, 1.0, 0.0), Contact::Face)
+    );
+    let up = Sweep::new(Vec3::new(x, -2.0, z), Vec3::new(x, 2.0, z), 0.25).unwrap();
+    assert_eq!(
+        prepared[..].cast(&up),
+        None,
+        "the back face lets the ball through"
+    );
+}
+
+#[test]
+fn obj_quads_and_negative_indices() {
+    let level = load(data("quads.obj")).unwrap();
+    let (a, b, c, d) = (
+        [0.0, 0.0, 0.0],
+        [1.0, 0.0, 0.0],
+        [1.0, 0.0, 1.0],
+        [0.0, 0.0, 1.0],
+    );
+    let (e, f, g, h) = (
+        [0.0, 0.0, 3.0],
+        [0.0, 1.0, 3.0],
+        [2.0, 1.0, 3.0],
+        [2.0, 0.0, 3.0],
+    );
+    // Quads as fans from their first vertex: `f -4 -1 -2 -3` is a, d, c, b.
+    assert_eq!(
+        level.triangles,
+        vec![[a, d, c], [a, c, b], [e, f, g], [e, g, h]]
+    );
+    front_faces_up(&level, 0.5, 0.5);
+}
+
+#[test]
+fn gltf_node_hierarchy_and_indexed_primitive() {
+    // Root: translate (10, 0, 0), scale 2; child: rotate 90 degrees about y, with the mesh.
+    // Rotation takes (x, y, z) to (z, y, -x).
+    let level = load(data("hierarchy.gltf")).unwrap();
+    assert_near(
+        &level.triangles,
+        &[[[10.0, 0.0, 0.0], [12.0, 0.0, 0.0], [10.0, 0.0, -2.0]]],
+    );
+    front_faces_up(&level, 10.5, -0.5);
+}
+
+#[test]
+fn glb_mirroring_node_keeps_front_faces() {
+    // Scale -1 on x turns the triangle over; the loader reverses its order, as glTF asks.
+    let level = load(data("mirrored.glb")).unwrap();
+    assert_near(
+        &level.triangles,
+        &[[[0.0, 0.0, 0.0], [-1.0, 0.0, 0.0], [0.0, 0.0, 1.0]]],
+    );
+    front_faces_up(&level, -0.25, 0.25);
+}
+
+/// The error names the file and says what is wrong.
+fn refused(name: &str, what: &str) -> Problem {
+    let e = load(data(name)).expect_err(name);
+    let text = e.to_string();
+    assert!(text.contains(name) && text.contains(what), "{text}");
+    e.problem
+}
+
+#[test]
+fn malformed_obj() {
+    assert!(matches!(
+        refused("bad_number.obj", "malformed"),
+        Problem::Malformed(_)
+    ));
+    assert!(matches!(
+        refused("bad_index.obj", "malformed"),
+        Problem::Malformed(_)
+    ));
+    assert!(matches!(
+        refused("no_faces.obj", "no triangles"),
+        Problem::NoTriangles
+    ));
+    assert!(matches!(
+        refused("nan.obj", "NaN"),
+        Problem::NotFinite { triangle: 0 }
+    ));
+}
+
+#[test]
+fn malformed_gltf_and_glb() {
+    assert!(matches!(
+        refused("truncated.gltf", "malformed"),
+        Problem::Malformed(_)
+    ));
+    assert!(matches!(
+        refused("outside.gltf", "outside its buffer"),
+        Problem::Malformed(_)
+    ));
+    assert!(matches!(
+        refused("truncated.glb", "malformed"),
+        Problem::Malformed(_)
+    ));
+    // hierarchy.gltf with the root listed as a child of its own child: a cycle, not a tree.
+    assert!(matches!(
+        refused("cycle.gltf", "not a tree"),
+        Problem::Malformed(_)
+    ));
+}
+
+#[test]
+fn missing_file_and_unknown_format() {
+    assert!(matches!(
+        refused("missing.obj", "cannot read"),
+        Problem::Io(_)
+    ));
+    assert!(matches!(
+        refused("missing.gltf", "cannot read"),
+        Problem::Io(_)
+    ));
+    assert!(matches!(
+        refused("quads.stl", "unknown format"),
+        Problem::UnknownFormat
+    ));
+}
+
+#[test]
+fn coordinates_beyond_the_scalar_range() {
+    // 5000 is beyond I16F16's ±4096 but fine in f32.
+    let level = load(data("large.obj")).unwrap();
+    let e = bake::<I16F16>(&level).expect_err("out of range");
+    assert!(
+        e.to_string().contains("large.obj") && e.to_string().contains("I16F16"),
+        "{e}"
+    );
+    assert!(matches!(
+        e.problem,
+        Problem::OutOfRange {
+            triangle: 0,
+            value: 5000.0,
+            ..
+        }
+    ));
+    assert!(bake::<f32>(&level).is_ok());
+}
+
+#[test]
+fn degenerate_triangles_are_skipped_and_named() {
+    // The two floor triangles of quads.obj, and a third with coincident vertices between them.
+    let mut level = load(data("quads.obj")).unwrap();
+    level
+        .triangles
+        .insert(1, [[0.0; 3], [0.0; 3], [1.0, 0.0, 0.0]]);
+    let baked = bake::<f32>(&level).unwrap();
+    assert_eq!(
+        (baked.stats.triangles, baked.stats.skipped.clone()),
+        (5, vec![1])
+    );
+    // The baked order (leaf order) holds every other input index once.
+    let line = baked
+        .source
+        .lines()
+        .find(|l| l.starts_with("pub static ORDER"))
+        .unwrap();
+    let list = &line[line.find("= [").unwrap() + 3..line.rfind(']').unwrap()];
+    let mut order: Vec<usize> = list.split(", ").map(|i| i.parse().unwrap()).collect();
+    order.sort();
+    assert_eq!(order, vec![0, 2, 3, 4]);
+}
