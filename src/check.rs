@@ -2,15 +2,25 @@
 
 use crate::{Error, Scalar, Vec3};
 
-/// Accepts a value that is finite and at most `bound` in magnitude.
-pub(crate) fn value<S: Scalar>(v: S, bound: S) -> Result<S, Error> {
-    if !v.is_finite() {
-        Err(Error::NonFinite)
-    } else if v > bound || v < -bound {
-        Err(Error::OutOfRange)
+/// Accepts a value that is not NaN and lies in `[min, max]` (infinities never do).
+pub(crate) fn within<S: Scalar>(v: S, min: S, max: S) -> Result<S, Error> {
+    if v.partial_cmp(&v).is_none() {
+        Err(Error::NaN { triangle: None })
+    } else if !v.is_finite() || v > max || v < min {
+        Err(Error::OutOfRange {
+            value: v.to_f64(),
+            min: min.to_f64(),
+            max: max.to_f64(),
+            triangle: None,
+        })
     } else {
         Ok(v)
     }
+}
+
+/// Accepts a value that is finite and at most `bound` in magnitude.
+pub(crate) fn value<S: Scalar>(v: S, bound: S) -> Result<S, Error> {
+    within(v, -bound, bound)
 }
 
 /// Accepts a point whose coordinates are finite and at most `bound` in magnitude.
@@ -25,7 +35,7 @@ pub(crate) fn point<S: Scalar>(p: Vec3<S>, bound: S) -> Result<Vec3<S>, Error> {
 pub(crate) fn radius<S: Scalar>(r: S) -> Result<S, Error> {
     value(r, S::LIMIT)?;
     if r < S::ZERO {
-        return Err(Error::NegativeRadius);
+        return Err(Error::NegativeRadius { value: r.to_f64() });
     }
     Ok(r)
 }

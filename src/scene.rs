@@ -138,22 +138,27 @@ impl<S: Scalar, const N: usize> Scene<S, N> {
 
     /// Adds a one-sided triangle and returns its index.
     ///
-    /// Errors: those of [`StandardTriangle::new`], or [`Error::Full`] at capacity `N`.
+    /// Errors: those of [`StandardTriangle::new`], naming the index the triangle would have
+    /// had ([`Error::triangle`]), or [`Error::Full`] with the capacity `N`.
     pub fn push(&mut self, t: Triangle<S>) -> Result<usize, Error> {
-        self.push_prepared(t, StandardTriangle::new(&t)?)
+        self.push_sided(t, false)
     }
 
     /// Adds a triangle that stops balls from both sides; edges are still deactivated against
     /// flat neighbours only, since a valley on one side is a ridge on the other.
+    /// Errors as for [`push`](Self::push).
     pub fn push_two_sided(&mut self, t: Triangle<S>) -> Result<usize, Error> {
-        self.push_prepared(t, StandardTriangle::new(&t)?.with_two_sided(true))
+        self.push_sided(t, true)
     }
 
-    fn push_prepared(&mut self, t: Triangle<S>, st: StandardTriangle<S>) -> Result<usize, Error> {
-        if self.triangles.is_full() {
-            return Err(Error::Full);
-        }
+    /// [`push`](Self::push) or [`push_two_sided`](Self::push_two_sided), as `two_sided` says.
+    pub fn push_sided(&mut self, t: Triangle<S>, two_sided: bool) -> Result<usize, Error> {
         let index = self.triangles.len();
+        let st = StandardTriangle::new(&t).map_err(|e| e.at(index))?;
+        if self.triangles.is_full() {
+            return Err(Error::Full { capacity: N });
+        }
+        let st = st.with_two_sided(two_sided);
         let bounds = Bounds::of(&[t.v0, t.v1, t.v2], S::ZERO);
         // Capacity was checked: none of these can fail.
         let _ = (

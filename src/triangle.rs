@@ -4,6 +4,8 @@
 use crate::scalar::largest;
 use crate::{Error, Features, Scalar, StandardSweep, Sweep, Vec3, check};
 
+const DEGENERATE: Error = Error::Degenerate { triangle: None };
+
 /// A triangle as three world-space vertices: a plain `Copy` struct with no invariant.
 ///
 /// Vertices are counter-clockwise seen from the front, so the front normal points along
@@ -110,7 +112,7 @@ impl<S: Scalar> Parts<S> {
     /// Checks that these parts are exactly what [`StandardTriangle::new`] makes of `source`
     /// (with the same features and sidedness): the way to validate a baked scene in a test.
     ///
-    /// Errors: those of [`StandardTriangle::new`], or [`Error::Degenerate`] on any difference.
+    /// Errors: those of [`StandardTriangle::new`], or [`Error::Mismatch`] on any difference.
     pub fn verify(&self, source: &Triangle<S>) -> Result<(), Error> {
         let made = StandardTriangle::new(source)?
             .with_features(Features::from_bits(self.features))
@@ -118,7 +120,7 @@ impl<S: Scalar> Parts<S> {
         if made.to_parts() == *self {
             Ok(())
         } else {
-            Err(Error::Degenerate)
+            Err(Error::Mismatch { triangle: None })
         }
     }
 }
@@ -149,7 +151,7 @@ impl<S: Scalar> Edge<S> {
 impl<S: Scalar> StandardTriangle<S> {
     /// Validates `t` and precomputes its standard frame.
     ///
-    /// Errors: [`Error::NonFinite`] or [`Error::OutOfRange`] for a vertex outside
+    /// Errors: [`Error::NaN`] or [`Error::OutOfRange`] for a vertex outside
     /// `±`[`Scalar::LIMIT`]; [`Error::Degenerate`] when two vertices coincide, when the vertices
     /// are collinear at the scalar's precision (the normal's direction would be uncertain by more
     /// than about 1e-3 rad), or when the standardized base `x2` or height `z1` rounds to zero.
@@ -160,9 +162,9 @@ impl<S: Scalar> StandardTriangle<S> {
         let edges = [t.v1 - t.v0, t.v2 - t.v1, t.v0 - t.v2];
         let [s0, s1, s2] = edges.map(S::scaled);
         let (s0, s1, s2) = (
-            s0.ok_or(Error::Degenerate)?,
-            s1.ok_or(Error::Degenerate)?,
-            s2.ok_or(Error::Degenerate)?,
+            s0.ok_or(DEGENERATE)?,
+            s1.ok_or(DEGENERATE)?,
+            s2.ok_or(DEGENERATE)?,
         );
         // (v1-v0)×(v2-v0) = e0×e1 = e1×e2 = e2×e0: use the pair that leaves out the longest edge.
         let [l0, l1, l2] = edges.map(|e| largest(e.x.abs(), e.y.abs(), e.z.abs()));
@@ -173,12 +175,12 @@ impl<S: Scalar> StandardTriangle<S> {
         } else {
             S::unit_cross(s2, s0)
         }
-        .ok_or(Error::Degenerate)?;
+        .ok_or(DEGENERATE)?;
 
         let base = t.v2 - t.v0;
-        let ux = S::unit_normalize(S::scaled(base).ok_or(Error::Degenerate)?);
-        let uz = S::unit_cross(ux, n).ok_or(Error::Degenerate)?;
-        let uy = S::unit_cross(uz, ux).ok_or(Error::Degenerate)?;
+        let ux = S::unit_normalize(S::scaled(base).ok_or(DEGENERATE)?);
+        let uz = S::unit_cross(ux, n).ok_or(DEGENERATE)?;
+        let uy = S::unit_cross(uz, ux).ok_or(DEGENERATE)?;
 
         let side = t.v1 - t.v0;
         let (x1, z1, x2) = (
@@ -187,7 +189,7 @@ impl<S: Scalar> StandardTriangle<S> {
             S::dot_unit(base, ux),
         );
         if !(x2 > S::ZERO && z1 > S::ZERO) {
-            return Err(Error::Degenerate);
+            return Err(DEGENERATE);
         }
         let z = S::ZERO;
         let corners = [
@@ -200,8 +202,7 @@ impl<S: Scalar> StandardTriangle<S> {
             len: z,
         }; 3];
         for (i, edge) in edges.iter_mut().enumerate() {
-            let (len, dir) =
-                S::direction(corners[(i + 1) % 3] - corners[i]).ok_or(Error::Degenerate)?;
+            let (len, dir) = S::direction(corners[(i + 1) % 3] - corners[i]).ok_or(DEGENERATE)?;
             *edge = Edge {
                 dir: [dir.x, dir.z],
                 len,
@@ -279,7 +280,7 @@ impl<S: Scalar> StandardTriangle<S> {
 
     /// Transforms a world point into the standard frame.
     ///
-    /// Errors: [`Error::NonFinite`] or [`Error::OutOfRange`] for a point outside
+    /// Errors: [`Error::NaN`] or [`Error::OutOfRange`] for a point outside
     /// `±`[`Scalar::LIMIT`]. The result lies within `3.5 * LIMIT` of the origin.
     pub fn to_standard(&self, p: Vec3<S>) -> Result<Vec3<S>, Error> {
         Ok(self.standard_point(check::point(p, S::LIMIT)?))

@@ -147,7 +147,14 @@ fn a_ball_keeps_its_own_skin<S: Tolerance>() {
     assert!(gap(&ball.with_skin(S::ZERO).unwrap()) > 0.0, "{}", S::NAME);
     for bad in [-0.01, 0.51] {
         let e = ball.with_skin(S::from_f64(bad)).unwrap_err();
-        assert_eq!(e, Error::OutOfRange, "{}: skin {bad}", S::NAME);
+        let limit = S::from_f64(0.5).to_f64();
+        let expected = Error::OutOfRange {
+            value: S::from_f64(bad).to_f64(),
+            min: 0.0,
+            max: limit,
+            triangle: None,
+        };
+        assert_eq!(e, expected, "{}: skin {bad}", S::NAME);
     }
 }
 

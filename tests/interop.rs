@@ -89,10 +89,8 @@ mod serde_tests {
             serde_json::from_str::<ballcast::SceneHit<f64>>(&json).unwrap(),
             hit
         );
-        let e = serde_json::to_string(&Error::OutOfRange).unwrap();
-        assert_eq!(
-            serde_json::from_str::<Error>(&e).unwrap(),
-            Error::OutOfRange
-        );
+        let refused = Error::Full { capacity: 8 };
+        let e = serde_json::to_string(&refused).unwrap();
+        assert_eq!(serde_json::from_str::<Error>(&e).unwrap(), refused);
     }
 }

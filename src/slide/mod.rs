@@ -61,7 +61,7 @@ impl<S: Scalar> Slide<S> {
     /// itself: what a caller does to its velocity afterwards. Never lengthens it by more than
     /// rounding, and never turns it against itself.
     ///
-    /// Errors: [`Error::NonFinite`] or [`Error::OutOfRange`] for a velocity component beyond
+    /// Errors: [`Error::NaN`] or [`Error::OutOfRange`] for a velocity component beyond
     /// `±`[`Scalar::LIMIT`].
     pub fn clip(&self, velocity: Vec3<S>) -> Result<Vec3<S>, Error> {
         let v = check::point(velocity, S::LIMIT)?;
@@ -122,7 +122,7 @@ pub struct Slider<S> {
 impl<S: Scalar> Slider<S> {
     /// A ball of `radius` with the default [`skin`].
     ///
-    /// Errors: [`Error::NonFinite`], [`Error::OutOfRange`], [`Error::NegativeRadius`].
+    /// Errors: [`Error::NaN`], [`Error::OutOfRange`], [`Error::NegativeRadius`].
     pub fn new(radius: S) -> Result<Self, Error> {
         Ok(Self {
             radius: check::radius(radius)?,
@@ -134,13 +134,10 @@ impl<S: Scalar> Slider<S> {
     /// match, say. It is never less than the rounding term of the default [`skin`] (twice the
     /// rounding of a height at the ball's coordinates), which keeps the response exact.
     ///
-    /// Errors: [`Error::NonFinite`], or [`Error::OutOfRange`] for a skin below zero or above
+    /// Errors: [`Error::NaN`], or [`Error::OutOfRange`] for a skin below zero or above
     /// the radius.
     pub fn with_skin(self, skin: S) -> Result<Self, Error> {
-        let skin = check::value(skin, self.radius)?;
-        if skin < S::ZERO {
-            return Err(Error::OutOfRange);
-        }
+        let skin = check::within(skin, S::ZERO, self.radius)?;
         Ok(Self {
             skin: Some(skin),
             ..self
@@ -214,7 +211,7 @@ pub fn min_radius<S: Scalar>(extent: S) -> S {
 /// the displacement does not move it away).
 ///
 /// Errors, checked before any arithmetic so fixed-point cannot overflow:
-/// [`Error::NonFinite`] or [`Error::OutOfRange`] when `position`, `displacement`, the target or
+/// [`Error::NaN`] or [`Error::OutOfRange`] when `position`, `displacement`, the target or
 /// `radius` is outside `±`[`Scalar::LIMIT`], [`Error::NegativeRadius`], and
 /// [`Error::RadiusTooSmall`] below [`min_radius`] at the larger of the start's and target's
 /// coordinates.
@@ -256,8 +253,12 @@ fn run<S: Scalar, G: Geometry<S> + ?Sized>(
     let target = check::point(position + displacement, S::LIMIT)?;
     let (a, b) = (magnitude(position), magnitude(target));
     let extent = if a > b { a } else { b };
-    if radius < min_radius(extent) {
-        return Err(Error::RadiusTooSmall);
+    let min = min_radius(extent);
+    if radius < min {
+        return Err(Error::RadiusTooSmall {
+            radius: radius.to_f64(),
+            min: min.to_f64(),
+        });
     }
     let skin = ball.skin(extent);
     let zero = Vec3::ZERO;
