@@ -69,7 +69,11 @@
 //! - [`slide`] holds [`move_and_slide`], the collision response (Quake's fly-move, constrained
 //!   by every plane touched), [`Slide`], and the [`skin`](slide::skin) and
 //!   [`min_radius`](slide::min_radius) it works with.
+//! - [`mod@penetration`] holds [`penetration()`], the deepest overlap of a resting ball with
+//!   geometry and the way out ([`Penetration`]).
 //! - [`mod@plan`] holds the precision planner: which scalars fit a scene, and their expected error.
+//! - [`mod@winding`] holds [`winding()`], which way a scene's triangles face a point: the check
+//!   for a level wound the wrong way.
 //! - [`interop`] holds conversions for the `mint`, `glam` and `serde` features.
 //! - [`hit`] holds [`Hit`] and [`Contact`], what a query returns; [`error`] holds [`Error`].
 //!
@@ -107,6 +111,7 @@ mod merge;
 pub mod mesh;
 #[cfg(feature = "alloc")]
 pub mod mesh_buf;
+pub mod penetration;
 pub mod plan;
 mod radix;
 mod reject;
@@ -116,6 +121,7 @@ pub mod slide;
 pub mod sweep;
 pub mod triangle;
 pub mod vec3;
+pub mod winding;
 
 pub use bvh::{Grid, Node};
 pub use contact::Features;
@@ -126,6 +132,7 @@ pub use merge::PLANES;
 pub use mesh::{Buffer, Degenerates, Mesh, MeshError};
 #[cfg(feature = "alloc")]
 pub use mesh_buf::MeshBuf;
+pub use penetration::{Penetration, penetration};
 pub use plan::{Precision, Verdict, plan};
 pub use scalar::Scalar;
 pub use scene::{Geometry, Scene, SceneHit};
@@ -133,6 +140,7 @@ pub use slide::{MAX_SLIDES, Slide, SlideContact, Slider, move_and_slide};
 pub use sweep::{StandardSweep, Sweep};
 pub use triangle::{Edge, Parts, StandardTriangle, Triangle};
 pub use vec3::Vec3;
+pub use winding::{Winding, winding};
 
 // The README's examples run as doctests.
 #[doc = include_str!("../README.md")]

@@ -401,4 +401,8 @@ impl<S: Scalar> Geometry<S> for Mesh<'_, S> {
     fn cast(&self, sweep: &Sweep<S>) -> Option<SceneHit<S>> {
         Mesh::cast(self, sweep)
     }
+
+    fn visit(&self, _: Vec3<S>, _: Vec3<S>, f: &mut dyn FnMut(usize, &StandardTriangle<S>)) {
+        crate::penetration::each(self.triangles, self.order, f)
+    }
 }

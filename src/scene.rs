@@ -138,6 +138,12 @@ impl<S: Scalar, const N: usize> Scene<S, N> {
 
     /// Adds a one-sided triangle and returns its index.
     ///
+    /// One-sided is the default: the triangle stops balls coming from its front, where
+    /// `(v1 - v0) × (v2 - v0)` points (vertices counter-clockwise seen from the front), and lets
+    /// them through from behind. Check a level's winding against a point known to be above its
+    /// floor or inside its rooms with [`winding`](crate::winding()); use
+    /// [`push_two_sided`](Self::push_two_sided) for triangles that must stop balls either way.
+    ///
     /// Errors: those of [`StandardTriangle::new`], naming the index the triangle would have
     /// had ([`Error::triangle`]), or [`Error::Full`] with the capacity `N`.
     pub fn push(&mut self, t: Triangle<S>) -> Result<usize, Error> {
@@ -233,11 +239,25 @@ impl<S: Scalar, const N: usize> Scene<S, N> {
 pub trait Geometry<S: Scalar> {
     /// The earliest contact along the sweep, simultaneous contacts merged as in [`Scene::cast`].
     fn cast(&self, sweep: &Sweep<S>) -> Option<SceneHit<S>>;
+
+    /// Calls `f` with the index and prepared form of every triangle that may meet the box
+    /// from `min` to `max` (at least those that do; in any order): what
+    /// [`penetration`](crate::penetration::penetration) and [`winding`](crate::winding) examine.
+    fn visit(&self, min: Vec3<S>, max: Vec3<S>, f: &mut dyn FnMut(usize, &StandardTriangle<S>));
 }
 
 impl<S: Scalar, const N: usize> Geometry<S> for Scene<S, N> {
     fn cast(&self, sweep: &Sweep<S>) -> Option<SceneHit<S>> {
         Scene::cast(self, sweep)
+    }
+
+    fn visit(&self, min: Vec3<S>, max: Vec3<S>, f: &mut dyn FnMut(usize, &StandardTriangle<S>)) {
+        let reach = Bounds { min, max };
+        for (i, (b, t)) in self.bounds.iter().zip(self.triangles.iter()).enumerate() {
+            if b.overlaps(&reach) {
+                f(i, t);
+            }
+        }
     }
 }
 
@@ -252,5 +272,9 @@ impl<S: Scalar> Geometry<S> for [StandardTriangle<S>] {
                 }
             }
         })
+    }
+
+    fn visit(&self, _: Vec3<S>, _: Vec3<S>, f: &mut dyn FnMut(usize, &StandardTriangle<S>)) {
+        self.iter().enumerate().for_each(|(i, t)| f(i, t));
     }
 }

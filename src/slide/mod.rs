@@ -15,11 +15,13 @@
 //! Every product and quotient rounds to nearest through the [`Scalar`] trait, so a resting ball
 //! pushed into a floor does not creep along it.
 
+mod resolve;
 mod rules;
 
 use crate::{Error, Geometry, Scalar, SceneHit, Sweep, Vec3, check};
 use heapless::Vec;
-use rules::{Planes, add_planes, constrain, magnitude, stand_off};
+use resolve::{resolve, settle};
+use rules::{Planes, add_planes, constrain, magnitude};
 
 /// At most this many sweeps per call: each contact costs one, and a ball pressed into a corner
 /// of three planes has nowhere left to go after three.
@@ -32,6 +34,9 @@ pub const MAX_SLIDES: usize = 4;
 pub struct Slide<S> {
     /// Where the ball's centre ends.
     pub position: Vec3<S>,
+    /// How far the ball was moved out of a starting overlap before it moved (zero unless it
+    /// started overlapping geometry by more than the skin; see [`move_and_slide`]).
+    pub pushed_out: Vec3<S>,
     /// The part of the requested displacement not travelled: what the contacts took away.
     pub blocked: Vec3<S>,
     /// The contacts met, in order (at most [`MAX_SLIDES`]).
@@ -205,10 +210,17 @@ pub fn min_radius<S: Scalar>(extent: S) -> S {
 /// [`Scene`](crate::Scene), a mesh, or a slice of prepared triangles), sliding along what it
 /// touches by the rules in the [module docs](self), for at most [`MAX_SLIDES`] sweeps.
 ///
+/// A ball that starts overlapping geometry by more than the skin is first pushed out
+/// ([`Slide::pushed_out`]): along the deepest overlap's normal
+/// ([`penetration`](crate::penetration::penetration)) to a skin from that triangle, at most
+/// [`MAX_SLIDES`] pushes (each may uncover the next), each swept like a motion so that it stops
+/// a skin short of other geometry rather than pushing into it. A ball spawned 0.2 inside a
+/// floor comes out in the one call. Shallower overlaps (rounding) are left to the motion: a
+/// contact met at once lifts the ball by a skin.
+///
 /// Guarantees, in every scalar: the motion's length never grows beyond the skins, so a slide
 /// cannot gain speed; it never runs against `displacement` apart from the skins; a ball that
-/// starts overlapping geometry is not carried further in (each call lifts it by a skin while
-/// the displacement does not move it away).
+/// starts overlapping geometry is not carried further in.
 ///
 /// Errors, checked before any arithmetic so fixed-point cannot overflow:
 /// [`Error::NaN`] or [`Error::OutOfRange`] when `position`, `displacement`, the target or
@@ -261,9 +273,14 @@ fn run<S: Scalar, G: Geometry<S> + ?Sized>(
         });
     }
     let skin = ball.skin(extent);
+    let rounding = S::height_error(extent);
+    let start = resolve(scene, position, radius, skin, rounding);
+    // The push may carry the target past the range: refused like any other target.
+    check::point(start + displacement, S::LIMIT)?;
     let zero = Vec3::ZERO;
     let mut out = Slide {
-        position,
+        position: start,
+        pushed_out: start - position,
         blocked: zero,
         contacts: [None; MAX_SLIDES],
     };
@@ -285,14 +302,8 @@ fn run<S: Scalar, G: Geometry<S> + ?Sized>(
             point: hit.position - hit.normal.scale(radius),
             time: elapsed,
         });
-        let (alpha, lift) = stand_off(&hit, rest, skin, S::height_error(extent));
-        // From the contact's own position (a few steps of `S` off, where alpha's rounding
-        // times the path would be more), backed off along the path; or not moved at all.
-        if alpha == hit.alpha {
-            out.position = hit.position + lift;
-        } else if alpha > S::ZERO {
-            out.position = hit.position - rest.scale(hit.alpha - alpha);
-        }
+        let alpha = rules::stand_off(&hit, rest, skin, rounding).0;
+        out.position = settle(&hit, out.position, rest, skin, rounding);
         let left = rest.scale(S::ONE - alpha);
         rest = if add_planes(&mut planes, &hit) {
             constrain(left, &planes, displacement)
