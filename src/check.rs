@@ -18,6 +18,24 @@ pub(crate) fn within<S: Scalar>(v: S, min: S, max: S) -> Result<S, Error> {
     }
 }
 
+/// Converts a number to `S`, refusing one that lies outside `S`'s safe range (or is NaN)
+/// with the number itself in the error, before any saturation could hide it.
+pub(crate) fn convert<S: Scalar>(v: f64) -> Result<S, Error> {
+    let l = S::LIMIT.to_f64();
+    if v.is_nan() {
+        Err(Error::NaN { triangle: None })
+    } else if !(-l..=l).contains(&v) {
+        Err(Error::OutOfRange {
+            value: v,
+            min: -l,
+            max: l,
+            triangle: None,
+        })
+    } else {
+        Ok(S::from_f64(v))
+    }
+}
+
 /// Accepts a value that is finite and at most `bound` in magnitude.
 pub(crate) fn value<S: Scalar>(v: S, bound: S) -> Result<S, Error> {
     within(v, -bound, bound)

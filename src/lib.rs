@@ -62,6 +62,8 @@
 //!   [`StandardTriangle::face_collision`].
 //! - [`contact`] holds edge and vertex contacts, [`StandardTriangle::cast`] and [`Features`].
 //! - [`scene`] holds [`Scene`], many triangles with active edges from adjacency, and [`SceneHit`].
+//! - [`import`] builds scenes from a vertex array and an index buffer or any iterator of
+//!   triangles, and converts triangles between scalars ([`Triangle::try_cast`]).
 //! - [`mesh`] holds [`Mesh`], a whole level's triangles behind a bounding volume hierarchy,
 //!   borrowed from flash, a caller's buffer or `Vec`s, answering exactly as a linear scan;
 //!   [`bvh`] holds its tree ([`Node`], [`Grid`]): layout, build and traversal. With the `alloc`
@@ -106,6 +108,7 @@ mod cover;
 pub mod error;
 pub mod face;
 pub mod hit;
+pub mod import;
 pub mod interop;
 mod merge;
 pub mod mesh;

@@ -111,6 +111,13 @@ impl<S: Scalar, const N: usize> Scene<S, N> {
         }
     }
 
+    /// Removes every triangle, keeping the capacity.
+    pub fn clear(&mut self) {
+        self.bounds.clear();
+        self.triangles.clear();
+        self.sources.clear();
+    }
+
     /// Number of triangles.
     pub fn len(&self) -> usize {
         self.triangles.len()
