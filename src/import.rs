@@ -41,7 +41,7 @@ impl<S: Scalar, const N: usize> Scene<S, N> {
         vertices: &[Vec3<S>],
         indices: &[I],
     ) -> Result<(), Error> {
-        if indices.len() % 3 != 0 {
+        if !indices.len().is_multiple_of(3) {
             return Err(Error::IndexCount { len: indices.len() });
         }
         let first = self.len();
