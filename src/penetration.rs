@@ -13,12 +13,14 @@ use crate::{Contact, Error, Geometry, Scalar, StandardTriangle, Vec3, check};
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", serde(bound = "S: crate::Scalar"))]
 pub struct Penetration<S> {
     /// Unit direction that moves the ball out (from the touched point towards the centre, or
     /// the face's normal when the centre lies on or behind the face).
     pub normal: Vec3<S>,
     /// How far the ball reaches into the triangle along `normal`, `> 0`: moving the centre by
     /// `normal * depth` leaves it touching.
+    #[cfg_attr(feature = "serde", serde(with = "crate::interop::number"))]
     pub depth: S,
     /// The point of the triangle closest to the centre.
     pub point: Vec3<S>,

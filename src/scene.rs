@@ -44,9 +44,11 @@ impl<S: Scalar> Bounds<S> {
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", serde(bound = "S: crate::Scalar"))]
 pub struct SceneHit<S> {
     /// Fraction of the path travelled at first contact, in `[0, 1)`.
     #[doc(alias = "time_of_impact")]
+    #[cfg_attr(feature = "serde", serde(with = "crate::interop::number"))]
     pub alpha: S,
     /// The ball's centre at first contact (see [`Hit::position`](crate::Hit::position)).
     pub position: Vec3<S>,

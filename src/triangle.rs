@@ -11,6 +11,7 @@ const DEGENERATE: Error = Error::Degenerate { triangle: None };
 /// Vertices are counter-clockwise seen from the front, so the front normal points along
 /// `(v1 - v0) × (v2 - v0)`. Validate it with [`StandardTriangle::new`].
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(bound = "S: crate::Scalar"))]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 pub struct Triangle<S> {

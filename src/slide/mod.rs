@@ -31,6 +31,7 @@ pub const MAX_SLIDES: usize = 4;
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", serde(bound = "S: crate::Scalar"))]
 pub struct Slide<S> {
     /// Where the ball's centre ends.
     pub position: Vec3<S>,
@@ -47,6 +48,7 @@ pub struct Slide<S> {
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", serde(bound = "S: crate::Scalar"))]
 pub struct SlideContact<S> {
     /// What the sweep met: its `position` is the ball's centre at the moment of contact, its
     /// `alpha` a fraction of that sweep (what was left of the motion at the time), not of the
@@ -58,6 +60,7 @@ pub struct SlideContact<S> {
     /// The fraction of the call's time step elapsed at contact, in `[0, 1)`: the call's
     /// displacement is taken as travelled at constant speed over the step, and each sweep
     /// covers what is left of it (Quake's `time_left`).
+    #[cfg_attr(feature = "serde", serde(with = "crate::interop::number"))]
     pub time: S,
 }
 
