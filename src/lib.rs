@@ -136,7 +136,7 @@ pub use mesh::{Buffer, Degenerates, Mesh, MeshError};
 #[cfg(feature = "alloc")]
 pub use mesh_buf::MeshBuf;
 pub use penetration::{Penetration, penetration};
-pub use plan::{Precision, Verdict, plan};
+pub use plan::{Precision, ScalarType, Verdict, choose, plan};
 pub use scalar::Scalar;
 pub use scene::{Geometry, Scene, SceneHit};
 pub use slide::{MAX_SLIDES, Slide, SlideContact, Slider, move_and_slide};
