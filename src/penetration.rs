@@ -42,6 +42,9 @@ pub struct Penetration<S> {
 /// Errors: [`Error::NaN`], [`Error::OutOfRange`] for a centre or radius outside
 /// `±`[`Scalar::LIMIT`], [`Error::NegativeRadius`].
 ///
+/// Cost: a [`Scene`](crate::Scene) tests the triangles whose bounding boxes meet the ball's; a
+/// [`Mesh`](crate::Mesh) tests all of its triangles (a linear scan, not its tree).
+///
 /// Accuracy: the depth carries the rounding of a height at the centre's coordinates
 /// ([`Precision::height_error`](crate::Precision::height_error)) plus that of a square root.
 ///

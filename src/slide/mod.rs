@@ -218,7 +218,8 @@ pub fn min_radius<S: Scalar>(extent: S) -> S {
 /// ([`penetration`](crate::penetration::penetration)) to a skin from that triangle, at most
 /// [`MAX_SLIDES`] pushes (each may uncover the next), each swept like a motion so that it stops
 /// a skin short of other geometry rather than pushing into it. A ball spawned 0.2 inside a
-/// floor comes out in the one call. Shallower overlaps (rounding) are left to the motion: a
+/// floor comes out in the one call. Overlaps are looked for only where a cast that does not
+/// move reports one (a face overlapped; one cast through a mesh's tree when there is none). Shallower overlaps (rounding) are left to the motion: a
 /// contact met at once lifts the ball by a skin.
 ///
 /// Guarantees, in every scalar: the motion's length never grows beyond the skins, so a slide
