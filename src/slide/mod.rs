@@ -218,8 +218,9 @@ pub fn min_radius<S: Scalar>(extent: S) -> S {
 /// ([`penetration`](crate::penetration::penetration)) to a skin from that triangle, at most
 /// [`MAX_SLIDES`] pushes (each may uncover the next), each swept like a motion so that it stops
 /// a skin short of other geometry rather than pushing into it. A ball spawned 0.2 inside a
-/// floor comes out in the one call. Overlaps are looked for only where a cast that does not
-/// move reports one (a face overlapped; one cast through a mesh's tree when there is none). Shallower overlaps (rounding) are left to the motion: a
+/// floor comes out in the one call. Overlaps are looked for only where the motion's first sweep
+/// meets something at once (alpha 0), so a call that starts clear costs no more than before; a
+/// ball that starts overlapping but moves away is left to leave. Shallower overlaps (rounding) are left to the motion: a
 /// contact met at once lifts the ball by a skin.
 ///
 /// Guarantees, in every scalar: the motion's length never grows beyond the skins, so a slide
@@ -278,7 +279,14 @@ fn run<S: Scalar, G: Geometry<S> + ?Sized>(
     }
     let skin = ball.skin(extent);
     let rounding = S::height_error(extent);
-    let start = resolve(scene, position, radius, skin, rounding);
+    // The motion's first sweep (or, for no motion, one that does not move) reports a starting
+    // overlap at alpha 0: only then is the overlap looked for, and the sweep is kept otherwise.
+    let first = scene.cast(&Sweep::new(position, target, radius)?);
+    let start = match first {
+        Some(hit) if hit.alpha == S::ZERO => resolve(scene, position, radius, skin, rounding),
+        _ => position,
+    };
+    let mut pending = (start == position).then_some(first);
     // The push may carry the target past the range: refused like any other target.
     check::point(start + displacement, S::LIMIT)?;
     let zero = Vec3::ZERO;
@@ -295,7 +303,11 @@ fn run<S: Scalar, G: Geometry<S> + ?Sized>(
             break;
         }
         let sweep = Sweep::new(out.position, out.position + rest, radius)?;
-        let Some(hit) = scene.cast(&sweep) else {
+        let found = match pending.take() {
+            Some(first) => first,
+            None => scene.cast(&sweep),
+        };
+        let Some(hit) = found else {
             out.position += rest;
             rest = zero;
             break;

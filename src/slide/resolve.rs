@@ -9,8 +9,7 @@ use crate::{Geometry, Scalar, SceneHit, Sweep, Vec3};
 /// motion: along the deepest overlap's normal by its depth plus the skin, at most
 /// [`MAX_SLIDES`] times (each push may uncover the next deepest), each push swept like a
 /// motion so that it stops a skin short of anything in its way. Never farther than
-/// `MAX_SLIDES * (radius + skin)` in all. Only overlaps a cast that does not move reports are
-/// looked at (those of faces: a ball overlapping only an edge or vertex is left to the motion).
+/// `MAX_SLIDES * (radius + skin)` in all.
 pub(super) fn resolve<S: Scalar, G: Geometry<S> + ?Sized>(
     scene: &G,
     mut centre: Vec3<S>,
@@ -18,14 +17,6 @@ pub(super) fn resolve<S: Scalar, G: Geometry<S> + ?Sized>(
     skin: S,
     rounding: S,
 ) -> Vec3<S> {
-    // A cast that does not move reports an overlap with a face at alpha 0, through a mesh's
-    // tree: most calls (no overlap) end here without visiting the triangles.
-    let Ok(still) = Sweep::new(centre, centre, radius) else {
-        return centre;
-    };
-    if scene.cast(&still).is_none() {
-        return centre;
-    }
     for _ in 0..MAX_SLIDES {
         let Some(p) = deepest(scene, centre, radius) else {
             break;
