@@ -251,7 +251,7 @@ pub trait Geometry<S: Scalar> {
 
     /// Calls `f` with the index and prepared form of every triangle that may meet the box
     /// from `min` to `max` (at least those that do; in any order): what
-    /// [`penetration`](crate::penetration::penetration) and [`winding`](crate::winding) examine.
+    /// [`penetration`](crate::penetration::penetration) and [`winding`](crate::winding()) examine.
     fn visit(&self, min: Vec3<S>, max: Vec3<S>, f: &mut dyn FnMut(usize, &StandardTriangle<S>));
 }
 
