@@ -232,9 +232,53 @@ macro_rules! per_scalar {
         #[test] fn push_out_stops_short_of_other_geometry() {
             super::push_out_stops_short_of_other_geometry::<$t>()
         }
+        #[test] fn push_out_of_a_corner_clears_both_faces() {
+            super::push_out_of_a_corner_clears_both_faces::<$t>()
+        }
         #[test] fn wrong_winding_is_found_from_a_point_above() {
             super::wrong_winding_is_found_from_a_point_above::<$t>()
         }
     })*};
 }
 per_scalar!(f32_: f32, f64_: f64, i16f16: I16F16, i32f32: I32F32);
+
+/// Embedded in a corner (floor y = 0 facing up, wall x = 0 facing +x), anywhere: one call with
+/// no motion leaves it overlapping neither by more than a skin and rounding, and never deeper
+/// into anything than it started.
+fn push_out_of_a_corner_clears_both_faces<S: Tolerance>() {
+    use proptest::prelude::*;
+    use proptest::test_runner::{Config, TestRunner};
+    let mut scene: Scene<S, 4> = floor::<S, 4>();
+    let w = [
+        [0.0, -10.0, -10.0],
+        [0.0, 10.0, -10.0],
+        [0.0, 10.0, 10.0],
+        [0.0, -10.0, 10.0],
+    ];
+    scene
+        .push(Triangle::new(v(w[0]), v(w[1]), v(w[2])))
+        .unwrap();
+    scene
+        .push(Triangle::new(v(w[0]), v(w[2]), v(w[3])))
+        .unwrap();
+    let r = S::from_f64(0.5);
+    let cases = (0.05..1.0f64, 0.05..1.0f64, -5.0..5.0f64);
+    TestRunner::new(Config::with_cases(200))
+        .run(&cases, |(x, y, z)| {
+            let c = v::<S>([x, y, z]);
+            let before = penetration(&scene, c, r)
+                .unwrap()
+                .map_or(0.0, |p| p.depth.to_f64());
+            let out = move_and_slide(&scene, c, v([0.0; 3]), r).unwrap();
+            let after = penetration(&scene, out.position, r).unwrap();
+            let left = after.map_or(0.0, |p| p.depth.to_f64());
+            let allowed = ballcast::slide::skin(r, S::from_f64(10.0)).to_f64() + tol::<S>();
+            prop_assert!(
+                left <= allowed,
+                "{}: {c:?} left {left} (from {before})",
+                S::NAME
+            );
+            Ok(())
+        })
+        .unwrap();
+}

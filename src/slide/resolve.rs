@@ -7,8 +7,9 @@ use crate::{Geometry, Scalar, SceneHit, Sweep, Vec3};
 
 /// Where a ball that starts overlapping `scene` by more than `skin` is moved before its
 /// motion: along the deepest overlap's normal by its depth plus the skin, at most
-/// [`MAX_SLIDES`] times (each push may uncover the next deepest), each push swept like a
-/// motion so that it stops a skin short of anything in its way. Never farther than
+/// [`MAX_SLIDES`] times (each push may uncover the next deepest: a ball in a corner is pushed
+/// out of the floor, then out of the wall), each push swept like a motion so that it stops a
+/// skin short of anything it would run into. Never farther than
 /// `MAX_SLIDES * (radius + skin)` in all.
 pub(super) fn resolve<S: Scalar, G: Geometry<S> + ?Sized>(
     scene: &G,
@@ -29,11 +30,14 @@ pub(super) fn resolve<S: Scalar, G: Geometry<S> + ?Sized>(
             break;
         };
         match scene.cast(&sweep) {
-            None => centre = sweep.p1(),
-            Some(hit) => {
+            // Into something it does not yet overlap, or deeper into one it does: stop short.
+            Some(hit) if S::dot(push, hit.normal) < S::ZERO => {
                 centre = settle(&hit, centre, push, skin, rounding);
                 break;
             }
+            // Clear, or met at once alongside an overlap the push does not deepen (another
+            // face of a corner): the next round sees what is left.
+            _ => centre = sweep.p1(),
         }
     }
     centre
