@@ -167,6 +167,39 @@ mod serde_tests {
         );
     }
 
+    /// A binary format (CBOR: not human-readable) gets every scalar as an exact pair: an
+    /// `I32F32` level beyond f64's 53 bits round-trips bit for bit, and an f32 level reads into
+    /// I16F16.
+    #[test]
+    fn binary_format_level_is_exact_and_loads_into_every_scalar() {
+        use fixed::types::I32F32;
+        let cbor = |s: &Scene<_, 4>| {
+            let mut out = Vec::new();
+            ciborium::into_writer(s, &mut out).unwrap();
+            out
+        };
+        let mut big: Scene<I32F32, 4> = Scene::new();
+        let odd = I32F32::from_bits((1 << 59) + 1); // 2^27 + 2^-32
+        let v = |x: I32F32, z: f64| Vec3::new(x, I32F32::ZERO, I32F32::from_num(z));
+        big.push(Triangle::new(
+            v(odd, 0.0),
+            v(odd, 2.0),
+            v(odd + I32F32::ONE, 0.0),
+        ))
+        .unwrap();
+        let back: Scene<I32F32, 4> = ciborium::from_reader(cbor(&big).as_slice()).unwrap();
+        assert!(back.sources().eq(big.sources()));
+        let f32_: Scene<f32, 4> = serde_json::from_str(LEVEL).unwrap();
+        let bytes = {
+            let mut out = Vec::new();
+            ciborium::into_writer(&f32_, &mut out).unwrap();
+            out
+        };
+        let i16: Scene<I16F16, 4> = ciborium::from_reader(bytes.as_slice()).unwrap();
+        let json: Scene<I16F16, 4> = serde_json::from_str(LEVEL).unwrap();
+        assert!(i16.sources().eq(json.sources()));
+    }
+
     #[test]
     fn bad_triangle_in_level_gives_its_index() {
         let flat = LEVEL.replace(r#""x": 3.5, "y": 4, "z": 0"#, r#""x": 3.5, "y": 0, "z": 0"#);
