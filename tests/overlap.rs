@@ -232,6 +232,9 @@ macro_rules! per_scalar {
         #[test] fn push_out_stops_short_of_other_geometry() {
             super::push_out_stops_short_of_other_geometry::<$t>()
         }
+        #[test] fn penetration_agrees_with_closest_point_oracle() {
+            super::penetration_agrees_with_closest_point_oracle::<$t>()
+        }
         #[test] fn push_out_of_a_corner_clears_both_faces() {
             super::push_out_of_a_corner_clears_both_faces::<$t>()
         }
@@ -241,6 +244,57 @@ macro_rules! per_scalar {
     })*};
 }
 per_scalar!(f32_: f32, f64_: f64, i16f16: I16F16, i32f32: I32F32);
+
+/// Against an independent f64 oracle (Ericson's closest point on a triangle): a ball near a
+/// lone two-sided triangle overlaps it exactly when closer than its radius, by the radius less
+/// that distance, pushed along the direction from the closest point, at scene scale 10.
+fn penetration_agrees_with_closest_point_oracle<S: Tolerance>() {
+    let mut rng = common::Rng(0x5EED);
+    let slack = 4.0 * S::PRECISION.height_error(40.0) + S::DISTANCE;
+    let (mut overlaps, mut checked) = (0, 0);
+    while checked < 2000 {
+        let c = rng.falling_case(10.0).rounded::<S>();
+        let t = Triangle::new(v::<S>(c.tri[0]), v(c.tri[1]), v(c.tri[2]));
+        let mut scene: Scene<S, 1> = Scene::new();
+        if scene.push_two_sided(t).is_err() {
+            continue;
+        }
+        checked += 1;
+        let centre = common::add(c.tri[0], rng.point(3.0));
+        let centre = back(v::<S>(centre));
+        let r = S::from_f64(rng.range(0.5, 3.0));
+        let q = common::closest_on_triangle(centre, c.tri);
+        let d = common::norm(common::sub(centre, q));
+        let got = penetration(&scene, v(centre), r).unwrap();
+        let expected = r.to_f64() - d;
+        match got {
+            None => assert!(
+                expected <= slack,
+                "{}: missed depth {expected} at {centre:?} {c:?}",
+                S::NAME
+            ),
+            Some(p) => {
+                overlaps += 1;
+                let depth = p.depth.to_f64();
+                assert!(
+                    (depth - expected).abs() <= slack,
+                    "{}: depth {depth}, oracle {expected}",
+                    S::NAME
+                );
+                if d > 1e-2 {
+                    let n = common::scale(common::sub(centre, q), 1.0 / d);
+                    let a = common::angle(back(p.normal), n);
+                    assert!(
+                        a <= 1e-2,
+                        "{}: normal off by {a} rad at {centre:?}",
+                        S::NAME
+                    );
+                }
+            }
+        }
+    }
+    assert!(overlaps > 200, "{}: only {overlaps} overlaps", S::NAME);
+}
 
 /// Embedded in a corner (floor y = 0 facing up, wall x = 0 facing +x), anywhere: one call with
 /// no motion leaves it overlapping neither by more than a skin and rounding, and never deeper
