@@ -281,12 +281,16 @@ fn run<S: Scalar, G: Geometry<S> + ?Sized>(
     let rounding = S::height_error(extent);
     // The motion's first sweep (or, for no motion, one that does not move) reports a starting
     // overlap at alpha 0: only then is the overlap looked for, and the sweep is kept otherwise.
-    let first = scene.cast(&Sweep::new(position, target, radius)?);
-    let start = match first {
-        Some(hit) if hit.alpha == S::ZERO => resolve(scene, position, radius, skin, rounding),
-        _ => position,
-    };
-    let mut pending = (start == position).then_some(first);
+    let mut pending = Some(scene.cast(&Sweep::new(position, target, radius)?));
+    let mut start = position;
+    if let Some(Some(hit)) = &pending
+        && hit.alpha == S::ZERO
+    {
+        start = resolve(scene, position, radius, skin, rounding);
+        if start != position {
+            pending = None;
+        }
+    }
     // The push may carry the target past the range: refused like any other target.
     check::point(start + displacement, S::LIMIT)?;
     let zero = Vec3::ZERO;

@@ -11,6 +11,7 @@ use crate::{Geometry, Scalar, SceneHit, Sweep, Vec3};
 /// out of the floor, then out of the wall), each push swept like a motion so that it stops a
 /// skin short of anything it would run into. Never farther than
 /// `MAX_SLIDES * (radius + skin)` in all.
+#[inline(never)] // its frame is live only while it runs, not through the whole motion
 pub(super) fn resolve<S: Scalar, G: Geometry<S> + ?Sized>(
     scene: &G,
     mut centre: Vec3<S>,
