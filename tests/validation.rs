@@ -4,6 +4,8 @@
 //! scene). A property test per entry point, in every scalar.
 
 mod common;
+#[allow(dead_code)] // the mesh builder only
+mod meshes;
 
 use ballcast::{
     Scalar, Scene, StandardSweep, StandardTriangle, Sweep, Triangle, Vec3, move_and_slide,
@@ -161,6 +163,26 @@ fn triangle_entry_points_refuse_any_bad_vertex<S: Scalar>() {
     });
 }
 
+fn mesh_build_refuses_any_bad_vertex<S: Scalar>() {
+    holds((point::<S>(), 0..3usize, 0..4usize), false, |(p, k, at)| {
+        let mut tris: Vec<Triangle<S>> = (0..4)
+            .map(|i| {
+                let x = 2.0 * i as f64;
+                Triangle::new(v([x, 0.0, 0.0]), v([x, 0.0, 1.0]), v([x + 1.0, 0.0, 0.0]))
+            })
+            .collect();
+        let mut c = tris[*at].vertices();
+        if p.1 {
+            c[*k] = v(p.0);
+        }
+        tris[*at] = Triangle::new(c[0], c[1], c[2]);
+        let built = meshes::build(&tris, ballcast::Degenerates::Skip);
+        let named =
+            matches!(&built, Err(ballcast::MeshError::Triangle { index, .. }) if index == at);
+        (p.1, built.is_err() && named)
+    });
+}
+
 fn queries_refuse_any_bad_argument<S: Scalar>() {
     let s = scene::<S>();
     holds((point::<S>(), radius::<S>()), true, |(c, r)| {
@@ -186,6 +208,9 @@ macro_rules! per_scalar {
         }
         #[test] fn triangle_entry_points_refuse_any_bad_vertex() {
             super::triangle_entry_points_refuse_any_bad_vertex::<$t>()
+        }
+        #[test] fn mesh_build_refuses_any_bad_vertex() {
+            super::mesh_build_refuses_any_bad_vertex::<$t>()
         }
         #[test] fn queries_refuse_any_bad_argument() { super::queries_refuse_any_bad_argument::<$t>() }
     })*};
