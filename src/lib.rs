@@ -22,7 +22,10 @@
 //! - **A response that holds**: [`move_and_slide`] never carries a ball deeper into what it
 //!   overlaps, respects every plane touched at once (corners), comes to rest when pushed into a
 //!   corner, and rounds every product to nearest so a resting ball does not creep (long runs of
-//!   10^5 steps in `tests/response.rs`, every scalar).
+//!   10^5 steps in `tests/response.rs`, every scalar). A ball that starts inside geometry is
+//!   pushed out first ([`penetration()`] gives the overlap without moving anything).
+//! - **Errors that say where**: every public entry point validates every argument, and an
+//!   [`Error`] names the triangle, the offending value and the range it left.
 //!
 //! ## Determinism
 //! The same calls with the same inputs give the same bits on every target, in every scalar,
