@@ -112,7 +112,7 @@ fn grounded_only_on_walkable_slopes<S: Tolerance>() {
         let out = out.unwrap();
         assert!(out.contacts[0].is_some(), "{}: {deg}° not touched", S::NAME);
         assert_eq!(
-            out.floor(up, cos45).is_some(),
+            out.floor(up, cos45).unwrap().is_some(),
             walkable,
             "{}: {deg}°",
             S::NAME
@@ -180,7 +180,7 @@ fn the_character_loop_lands_walks_and_jumps<S: Tolerance>() {
             "{}: below the floor at {p:?}",
             S::NAME
         );
-        if out.floor(up, walkable).is_some() {
+        if out.floor(up, walkable).unwrap().is_some() {
             jumps += 1;
             vel.y = S::from_f64(4.0);
         } else if jumps > 0 {

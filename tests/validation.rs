@@ -123,6 +123,24 @@ fn clip_refuses_any_bad_velocity<S: Scalar>() {
     holds(point::<S>(), true, |u| (u.1, out.clip(v(u.0)).is_err()));
 }
 
+/// `floor` takes a unit `up` and a cosine: components and cosine within `[-1, 1]`.
+fn floor_refuses_any_bad_argument<S: Scalar>() {
+    let s = scene::<S>();
+    let out = move_and_slide(&s, v([0.0, 1.0, 0.0]), v([0.0, -1.0, 0.0]), S::ONE).unwrap();
+    let unit = prop_oneof![
+        4 => (-1.0..=1.0f64).prop_map(|x| (x, false)),
+        1 => Just((f64::NAN, true)),
+        1 => Just((f64::INFINITY, true)),
+        1 => Just((1.5, true)),
+        1 => Just((-3.0, true)),
+    ];
+    let args = (unit.clone(), unit.clone(), unit.clone(), unit);
+    holds(args, true, |(x, y, z, c)| {
+        let got = out.floor(v([x.0, y.0, z.0]), S::from_f64(c.0));
+        (x.1 || y.1 || z.1 || c.1, got.is_err())
+    });
+}
+
 fn sweep_new_refuses_any_bad_argument<S: Scalar>() {
     holds(
         (point::<S>(), point::<S>(), radius::<S>()),
@@ -203,6 +221,9 @@ macro_rules! per_scalar {
             super::slider_refuses_any_bad_argument::<$t>()
         }
         #[test] fn clip_refuses_any_bad_velocity() { super::clip_refuses_any_bad_velocity::<$t>() }
+        #[test] fn floor_refuses_any_bad_argument() {
+            super::floor_refuses_any_bad_argument::<$t>()
+        }
         #[test] fn sweep_new_refuses_any_bad_argument() {
             super::sweep_new_refuses_any_bad_argument::<$t>()
         }

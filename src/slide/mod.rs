@@ -94,17 +94,23 @@ impl<S: Scalar> Slide<S> {
     /// let mut s: Scene<f32, 2> = Scene::new();
     /// s.push(Triangle::new(v(-9.0, 0.0, -9.0), v(-9.0, 0.0, 9.0), v(9.0, 0.0, 0.0)))?;
     /// let out = move_and_slide(&s, v(0.0, 0.6, 0.0), v(0.1, -0.2, 0.0), 0.5)?;
-    /// let floor = out.floor(v(0.0, 1.0, 0.0), core::f32::consts::FRAC_1_SQRT_2).expect("landed");
+    /// let floor = out.floor(v(0.0, 1.0, 0.0), core::f32::consts::FRAC_1_SQRT_2)?.expect("landed");
     /// assert!((floor.time - 0.5).abs() < 1e-3); // half-way through the step
     /// assert!((floor.point.y).abs() < 1e-6); // touching the floor's surface
     /// # Ok::<(), ballcast::Error>(())
     /// ```
-    pub fn floor(&self, up: Vec3<S>, min_cos: S) -> Option<&SlideContact<S>> {
-        self.contacts
+    ///
+    /// Errors: [`Error::NaN`], or [`Error::OutOfRange`] for a component of `up` or `min_cos`
+    /// outside `[-1, 1]`.
+    pub fn floor(&self, up: Vec3<S>, min_cos: S) -> Result<Option<&SlideContact<S>>, Error> {
+        let up = check::point(up, S::ONE)?;
+        let min_cos = check::within(min_cos, -S::ONE, S::ONE)?;
+        Ok(self
+            .contacts
             .iter()
             .flatten()
             .filter(|c| S::dot(c.hit.normal, up) >= min_cos)
-            .last()
+            .last())
     }
 }
 
