@@ -2,15 +2,43 @@
 
 use crate::{Error, Scalar, Vec3};
 
-/// Accepts a value that is finite and at most `bound` in magnitude.
-pub(crate) fn value<S: Scalar>(v: S, bound: S) -> Result<S, Error> {
-    if !v.is_finite() {
-        Err(Error::NonFinite)
-    } else if v > bound || v < -bound {
-        Err(Error::OutOfRange)
+/// Accepts a value that is not NaN and lies in `[min, max]` (infinities never do).
+pub(crate) fn within<S: Scalar>(v: S, min: S, max: S) -> Result<S, Error> {
+    if v.partial_cmp(&v).is_none() {
+        Err(Error::NaN { triangle: None })
+    } else if !v.is_finite() || v > max || v < min {
+        Err(Error::OutOfRange {
+            value: v.to_f64(),
+            min: min.to_f64(),
+            max: max.to_f64(),
+            triangle: None,
+        })
     } else {
         Ok(v)
     }
+}
+
+/// Converts a number to `S`, refusing one that lies outside `S`'s safe range (or is NaN)
+/// with the number itself in the error, before any saturation could hide it.
+pub(crate) fn convert<S: Scalar>(v: f64) -> Result<S, Error> {
+    let l = S::LIMIT.to_f64();
+    if v.is_nan() {
+        Err(Error::NaN { triangle: None })
+    } else if !(-l..=l).contains(&v) {
+        Err(Error::OutOfRange {
+            value: v,
+            min: -l,
+            max: l,
+            triangle: None,
+        })
+    } else {
+        Ok(S::from_f64(v))
+    }
+}
+
+/// Accepts a value that is finite and at most `bound` in magnitude.
+pub(crate) fn value<S: Scalar>(v: S, bound: S) -> Result<S, Error> {
+    within(v, -bound, bound)
 }
 
 /// Accepts a point whose coordinates are finite and at most `bound` in magnitude.
@@ -25,7 +53,7 @@ pub(crate) fn point<S: Scalar>(p: Vec3<S>, bound: S) -> Result<Vec3<S>, Error> {
 pub(crate) fn radius<S: Scalar>(r: S) -> Result<S, Error> {
     value(r, S::LIMIT)?;
     if r < S::ZERO {
-        return Err(Error::NegativeRadius);
+        return Err(Error::NegativeRadius { value: r.to_f64() });
     }
     Ok(r)
 }

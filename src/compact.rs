@@ -323,4 +323,31 @@ impl<S: Scalar, I: MeshIndex> Geometry<S> for CompactMesh<'_, S, I> {
     fn cast(&self, sweep: &Sweep<S>) -> Option<SceneHit<S>> {
         CompactMesh::cast(self, sweep)
     }
+
+    /// Every triangle whose vertices' box meets the box (a scan; prepared only when it does).
+    fn visit(&self, min: Vec3<S>, max: Vec3<S>, f: &mut dyn FnMut(usize, &StandardTriangle<S>)) {
+        let (lo, hi) = (min.to_array().map(S::to_f64), max.to_array().map(S::to_f64));
+        for (s, corners) in self.triangles.iter().enumerate() {
+            let Some(v) = world(self.vertices, corners.map(I::get)) else {
+                continue;
+            };
+            let apart = (0..3).any(|a| {
+                let (l, u) = (
+                    v[0][a].min(v[1][a]).min(v[2][a]),
+                    v[0][a].max(v[1][a]).max(v[2][a]),
+                );
+                u < lo[a] || l > hi[a]
+            });
+            if apart {
+                continue;
+            }
+            let t = triangle(self.vertices, corners.map(I::get));
+            let byte = self.bytes.get(s).copied();
+            if let (Some(t), Some(b), Some(i)) = (t, byte, self.order.get(s))
+                && let Some(st) = prepare(&t, b)
+            {
+                f(i.get(), &st);
+            }
+        }
+    }
 }

@@ -74,7 +74,7 @@ pub struct Heightfield<'a, S: Scalar> {
 
 /// Why [`Heightfield::build`] refused.
 #[non_exhaustive]
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub enum HeightfieldError {
     /// `heights` does not hold `(columns + 1) (rows + 1)` values, or a side is zero.
     Size {
@@ -117,7 +117,7 @@ impl fmt::Display for HeightfieldError {
                 f.write_str("spacing not positive and finite, or unit or origin not finite")
             }
             Self::OutOfRange => f.write_str("heightfield reaches beyond the scalar's safe range"),
-            Self::Triangle { index, error } => write!(f, "heightfield triangle {index}: {error}"),
+            Self::Triangle { error, .. } => write!(f, "heightfield {error}"),
         }
     }
 }
@@ -265,7 +265,10 @@ impl<'a, S: Scalar> Heightfield<'a, S> {
     /// Triangle `index` as prepared by [`StandardTriangle::new`], before active edges.
     fn prepare_at(&self, index: usize) -> Result<StandardTriangle<S>, HeightfieldError> {
         let t = self.triangle(index).ok_or(HeightfieldError::TooMany)?;
-        StandardTriangle::new(&t).map_err(|error| HeightfieldError::Triangle { index, error })
+        StandardTriangle::new(&t).map_err(|e| HeightfieldError::Triangle {
+            index,
+            error: e.at(index),
+        })
     }
 
     /// Vertex `(column, row)`, if on the grid.

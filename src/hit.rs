@@ -26,9 +26,11 @@ pub enum Contact {
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", serde(bound = "S: crate::Scalar"))]
 pub struct Hit<S> {
     /// Fraction of the path from `p0` to `p1` travelled at first contact, in `[0, 1)`.
     #[doc(alias = "time_of_impact")]
+    #[cfg_attr(feature = "serde", serde(with = "crate::interop::number"))]
     pub alpha: S,
     /// The ball's centre at first contact, `p0 + alpha (p1 - p0)` computed from alpha before
     /// it is rounded: its error is a few steps of `S`, not alpha's step times the path. For a

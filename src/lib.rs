@@ -22,7 +22,10 @@
 //! - **A response that holds**: [`move_and_slide`] never carries a ball deeper into what it
 //!   overlaps, respects every plane touched at once (corners), comes to rest when pushed into a
 //!   corner, and rounds every product to nearest so a resting ball does not creep (long runs of
-//!   10^5 steps in `tests/response.rs`, every scalar).
+//!   10^5 steps in `tests/response.rs`, every scalar). A ball that starts inside geometry is
+//!   pushed out first ([`penetration()`] gives the overlap without moving anything).
+//! - **Errors that say where**: every public entry point validates every argument, and an
+//!   [`Error`] names the triangle, the offending value and the range it left.
 //!
 //! ## Determinism
 //! The same calls with the same inputs give the same bits on every target, in every scalar,
@@ -62,6 +65,8 @@
 //!   [`StandardTriangle::face_collision`].
 //! - [`contact`] holds edge and vertex contacts, [`StandardTriangle::cast`] and [`Features`].
 //! - [`scene`] holds [`Scene`], many triangles with active edges from adjacency, and [`SceneHit`].
+//! - [`import`] builds scenes from a vertex array and an index buffer or any iterator of
+//!   triangles, and converts triangles between scalars ([`Triangle::try_cast`]).
 //! - [`mesh`] holds [`Mesh`], a whole level's triangles behind a bounding volume hierarchy,
 //!   borrowed from flash, a caller's buffer or `Vec`s, answering exactly as a linear scan;
 //!   [`bvh`] holds its tree ([`Node`], [`Grid`]): layout, build and traversal. With the `alloc`
@@ -73,7 +78,11 @@
 //! - [`slide`] holds [`move_and_slide`], the collision response (Quake's fly-move, constrained
 //!   by every plane touched), [`Slide`], and the [`skin`](slide::skin) and
 //!   [`min_radius`](slide::min_radius) it works with.
+//! - [`mod@penetration`] holds [`penetration()`], the deepest overlap of a resting ball with
+//!   geometry and the way out ([`Penetration`]).
 //! - [`mod@plan`] holds the precision planner: which scalars fit a scene, and their expected error.
+//! - [`mod@winding`] holds [`winding()`], which way a scene's triangles face a point: the check
+//!   for a level wound the wrong way.
 //! - [`interop`] holds conversions for the `mint`, `glam` and `serde` features.
 //! - [`hit`] holds [`Hit`] and [`Contact`], what a query returns; [`error`] holds [`Error`].
 //!
@@ -109,11 +118,13 @@ pub mod error;
 pub mod face;
 pub mod heightfield;
 pub mod hit;
+pub mod import;
 pub mod interop;
 mod merge;
 pub mod mesh;
 #[cfg(feature = "alloc")]
 pub mod mesh_buf;
+pub mod penetration;
 pub mod plan;
 mod radix;
 mod reject;
@@ -123,6 +134,7 @@ pub mod slide;
 pub mod sweep;
 pub mod triangle;
 pub mod vec3;
+pub mod winding;
 
 pub use bvh::{Grid, Node};
 pub use compact::{CompactError, CompactMesh, MeshIndex};
@@ -135,13 +147,15 @@ pub use merge::PLANES;
 pub use mesh::{Buffer, Degenerates, Mesh, MeshError};
 #[cfg(feature = "alloc")]
 pub use mesh_buf::MeshBuf;
-pub use plan::{Precision, Verdict, plan};
+pub use penetration::{Penetration, penetration};
+pub use plan::{Precision, ScalarType, Verdict, choose, plan};
 pub use scalar::Scalar;
 pub use scene::{Geometry, Scene, SceneHit};
 pub use slide::{MAX_SLIDES, Slide, SlideContact, Slider, move_and_slide};
 pub use sweep::{StandardSweep, Sweep};
 pub use triangle::{Edge, Parts, StandardTriangle, Triangle};
 pub use vec3::Vec3;
+pub use winding::{Winding, winding};
 
 // The README's examples run as doctests.
 #[doc = include_str!("../README.md")]

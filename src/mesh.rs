@@ -71,7 +71,7 @@ pub enum Buffer {
 
 /// Why [`Mesh::build`] or [`Mesh::verify`] refused.
 #[non_exhaustive]
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub enum MeshError {
     /// Input triangle `index` was refused by [`StandardTriangle::new`] for `error` (a degenerate
     /// one only under [`Degenerates::Refuse`]).
@@ -97,7 +97,7 @@ pub enum MeshError {
 impl fmt::Display for MeshError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
-            MeshError::Triangle { index, error } => write!(f, "triangle {index}: {error}"),
+            MeshError::Triangle { error, .. } => write!(f, "{error}"),
             MeshError::Capacity { buffer, needed } => {
                 write!(f, "buffer of {buffer:?} too small: {needed} needed")
             }
@@ -193,8 +193,13 @@ impl<'a, S: Scalar> Mesh<'a, S> {
                     order[kept] = index as u32;
                     kept += 1;
                 }
-                Err(Error::Degenerate) if degenerates == Degenerates::Skip => {}
-                Err(error) => return Err(MeshError::Triangle { index, error }),
+                Err(e) if e.is_degenerate() && degenerates == Degenerates::Skip => {}
+                Err(e) => {
+                    return Err(MeshError::Triangle {
+                        index,
+                        error: e.at(index),
+                    });
+                }
             }
         }
         if let Some(e) = short(Buffer::Nodes, nodes.len(), bvh::nodes_for(kept)) {
@@ -395,5 +400,9 @@ impl<'a, S: Scalar> Mesh<'a, S> {
 impl<S: Scalar> Geometry<S> for Mesh<'_, S> {
     fn cast(&self, sweep: &Sweep<S>) -> Option<SceneHit<S>> {
         Mesh::cast(self, sweep)
+    }
+
+    fn visit(&self, _: Vec3<S>, _: Vec3<S>, f: &mut dyn FnMut(usize, &StandardTriangle<S>)) {
+        crate::penetration::each(self.triangles, self.order, f)
     }
 }

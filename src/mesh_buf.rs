@@ -1,6 +1,7 @@
 //! [`MeshBuf`]: a [`Mesh`] that owns its parts in `Vec`s, for PCs (feature `alloc`).
 
 use crate::Triangle;
+use crate::Vec3;
 use crate::bvh::{Grid, Node, nodes_for};
 use crate::{Degenerates, Geometry, Mesh, MeshError, Scalar, SceneHit, StandardTriangle, Sweep};
 use alloc::vec;
@@ -75,5 +76,9 @@ impl<S: Scalar> MeshBuf<S> {
 impl<S: Scalar> Geometry<S> for MeshBuf<S> {
     fn cast(&self, sweep: &Sweep<S>) -> Option<SceneHit<S>> {
         self.mesh().cast(sweep)
+    }
+
+    fn visit(&self, min: Vec3<S>, max: Vec3<S>, f: &mut dyn FnMut(usize, &StandardTriangle<S>)) {
+        self.mesh().visit(min, max, f)
     }
 }

@@ -44,9 +44,11 @@ impl<S: Scalar> Bounds<S> {
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", serde(bound = "S: crate::Scalar"))]
 pub struct SceneHit<S> {
     /// Fraction of the path travelled at first contact, in `[0, 1)`.
     #[doc(alias = "time_of_impact")]
+    #[cfg_attr(feature = "serde", serde(with = "crate::interop::number"))]
     pub alpha: S,
     /// The ball's centre at first contact (see [`Hit::position`](crate::Hit::position)).
     pub position: Vec3<S>,
@@ -111,6 +113,13 @@ impl<S: Scalar, const N: usize> Scene<S, N> {
         }
     }
 
+    /// Removes every triangle, keeping the capacity.
+    pub fn clear(&mut self) {
+        self.bounds.clear();
+        self.triangles.clear();
+        self.sources.clear();
+    }
+
     /// Number of triangles.
     pub fn len(&self) -> usize {
         self.triangles.len()
@@ -138,22 +147,33 @@ impl<S: Scalar, const N: usize> Scene<S, N> {
 
     /// Adds a one-sided triangle and returns its index.
     ///
-    /// Errors: those of [`StandardTriangle::new`], or [`Error::Full`] at capacity `N`.
+    /// One-sided is the default: the triangle stops balls coming from its front, where
+    /// `(v1 - v0) × (v2 - v0)` points (vertices counter-clockwise seen from the front), and lets
+    /// them through from behind. Check a level's winding against a point known to be above its
+    /// floor or inside its rooms with [`winding`](crate::winding()); use
+    /// [`push_two_sided`](Self::push_two_sided) for triangles that must stop balls either way.
+    ///
+    /// Errors: those of [`StandardTriangle::new`], naming the index the triangle would have
+    /// had ([`Error::triangle`]), or [`Error::Full`] with the capacity `N`.
     pub fn push(&mut self, t: Triangle<S>) -> Result<usize, Error> {
-        self.push_prepared(t, StandardTriangle::new(&t)?)
+        self.push_sided(t, false)
     }
 
     /// Adds a triangle that stops balls from both sides; edges are still deactivated against
     /// flat neighbours only, since a valley on one side is a ridge on the other.
+    /// Errors as for [`push`](Self::push).
     pub fn push_two_sided(&mut self, t: Triangle<S>) -> Result<usize, Error> {
-        self.push_prepared(t, StandardTriangle::new(&t)?.with_two_sided(true))
+        self.push_sided(t, true)
     }
 
-    fn push_prepared(&mut self, t: Triangle<S>, st: StandardTriangle<S>) -> Result<usize, Error> {
-        if self.triangles.is_full() {
-            return Err(Error::Full);
-        }
+    /// [`push`](Self::push) or [`push_two_sided`](Self::push_two_sided), as `two_sided` says.
+    pub fn push_sided(&mut self, t: Triangle<S>, two_sided: bool) -> Result<usize, Error> {
         let index = self.triangles.len();
+        let st = StandardTriangle::new(&t).map_err(|e| e.at(index))?;
+        if self.triangles.is_full() {
+            return Err(Error::Full { capacity: N });
+        }
+        let st = st.with_two_sided(two_sided);
         let bounds = Bounds::of(&[t.v0, t.v1, t.v2], S::ZERO);
         // Capacity was checked: none of these can fail.
         let _ = (
@@ -228,11 +248,25 @@ impl<S: Scalar, const N: usize> Scene<S, N> {
 pub trait Geometry<S: Scalar> {
     /// The earliest contact along the sweep, simultaneous contacts merged as in [`Scene::cast`].
     fn cast(&self, sweep: &Sweep<S>) -> Option<SceneHit<S>>;
+
+    /// Calls `f` with the index and prepared form of every triangle that may meet the box
+    /// from `min` to `max` (at least those that do; in any order): what
+    /// [`penetration`](crate::penetration::penetration) and [`winding`](crate::winding()) examine.
+    fn visit(&self, min: Vec3<S>, max: Vec3<S>, f: &mut dyn FnMut(usize, &StandardTriangle<S>));
 }
 
 impl<S: Scalar, const N: usize> Geometry<S> for Scene<S, N> {
     fn cast(&self, sweep: &Sweep<S>) -> Option<SceneHit<S>> {
         Scene::cast(self, sweep)
+    }
+
+    fn visit(&self, min: Vec3<S>, max: Vec3<S>, f: &mut dyn FnMut(usize, &StandardTriangle<S>)) {
+        let reach = Bounds { min, max };
+        for (i, (b, t)) in self.bounds.iter().zip(self.triangles.iter()).enumerate() {
+            if b.overlaps(&reach) {
+                f(i, t);
+            }
+        }
     }
 }
 
@@ -247,5 +281,9 @@ impl<S: Scalar> Geometry<S> for [StandardTriangle<S>] {
                 }
             }
         })
+    }
+
+    fn visit(&self, _: Vec3<S>, _: Vec3<S>, f: &mut dyn FnMut(usize, &StandardTriangle<S>)) {
+        self.iter().enumerate().for_each(|(i, t)| f(i, t));
     }
 }

@@ -11,8 +11,9 @@ use crate::{Error, Scalar, Vec3, check};
 /// use ballcast::{Error, Sweep, Vec3};
 /// let s = Sweep::new(Vec3::new(0.0f32, 2.0, 0.0), Vec3::new(0.0, -2.0, 0.0), 0.5)?;
 /// assert_eq!(s.radius(), 0.5);
-/// assert_eq!(Sweep::new(s.p0(), s.p1(), -1.0).unwrap_err(), Error::NegativeRadius);
-/// assert_eq!(Sweep::new(s.p0(), Vec3::new(f32::NAN, 0.0, 0.0), 1.0).unwrap_err(), Error::NonFinite);
+/// assert_eq!(Sweep::new(s.p0(), s.p1(), -1.0).unwrap_err(), Error::NegativeRadius { value: -1.0 });
+/// let nan = Vec3::new(f32::NAN, 0.0, 0.0);
+/// assert_eq!(Sweep::new(s.p0(), nan, 1.0).unwrap_err(), Error::NaN { triangle: None });
 /// # Ok::<(), Error>(())
 /// ```
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
@@ -26,8 +27,8 @@ pub struct Sweep<S> {
 impl<S: Scalar> Sweep<S> {
     /// Validates a sweep from `p0` to `p1` with the given radius (0 makes it a ray).
     ///
-    /// Errors: [`Error::NonFinite`], [`Error::OutOfRange`] (beyond `±`[`Scalar::LIMIT`]),
-    /// [`Error::NegativeRadius`].
+    /// Errors: [`Error::NaN`], [`Error::OutOfRange`] (an infinity, or beyond
+    /// `±`[`Scalar::LIMIT`]), [`Error::NegativeRadius`], each with the value refused.
     pub fn new(p0: Vec3<S>, p1: Vec3<S>, radius: S) -> Result<Self, Error> {
         Ok(Self {
             p0: check::point(p0, S::LIMIT)?,

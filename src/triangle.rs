@@ -4,11 +4,14 @@
 use crate::scalar::largest;
 use crate::{Error, Features, Scalar, StandardSweep, Sweep, Vec3, check};
 
+const DEGENERATE: Error = Error::Degenerate { triangle: None };
+
 /// A triangle as three world-space vertices: a plain `Copy` struct with no invariant.
 ///
 /// Vertices are counter-clockwise seen from the front, so the front normal points along
 /// `(v1 - v0) × (v2 - v0)`. Validate it with [`StandardTriangle::new`].
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(bound = "S: crate::Scalar"))]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 pub struct Triangle<S> {
@@ -110,7 +113,7 @@ impl<S: Scalar> Parts<S> {
     /// Checks that these parts are exactly what [`StandardTriangle::new`] makes of `source`
     /// (with the same features and sidedness): the way to validate a baked scene in a test.
     ///
-    /// Errors: those of [`StandardTriangle::new`], or [`Error::Degenerate`] on any difference.
+    /// Errors: those of [`StandardTriangle::new`], or [`Error::Mismatch`] on any difference.
     pub fn verify(&self, source: &Triangle<S>) -> Result<(), Error> {
         let made = StandardTriangle::new(source)?
             .with_features(Features::from_bits(self.features))
@@ -118,7 +121,7 @@ impl<S: Scalar> Parts<S> {
         if made.to_parts() == *self {
             Ok(())
         } else {
-            Err(Error::Degenerate)
+            Err(Error::Mismatch { triangle: None })
         }
     }
 }
@@ -149,7 +152,7 @@ impl<S: Scalar> Edge<S> {
 impl<S: Scalar> StandardTriangle<S> {
     /// Validates `t` and precomputes its standard frame.
     ///
-    /// Errors: [`Error::NonFinite`] or [`Error::OutOfRange`] for a vertex outside
+    /// Errors: [`Error::NaN`] or [`Error::OutOfRange`] for a vertex outside
     /// `±`[`Scalar::LIMIT`]; [`Error::Degenerate`] when two vertices coincide, when the vertices
     /// are collinear at the scalar's precision (the normal's direction would be uncertain by more
     /// than about 1e-3 rad), or when the standardized base `x2` or height `z1` rounds to zero.
@@ -169,13 +172,13 @@ impl<S: Scalar> StandardTriangle<S> {
         } else {
             (2, 0)
         };
-        let scaled = |i: usize| S::scaled(edges[i]).ok_or(Error::Degenerate);
-        let n = S::unit_cross(scaled(a)?, scaled(b)?).ok_or(Error::Degenerate)?;
+        let scaled = |i: usize| S::scaled(edges[i]).ok_or(DEGENERATE);
+        let n = S::unit_cross(scaled(a)?, scaled(b)?).ok_or(DEGENERATE)?;
 
         let base = t.v2 - t.v0;
-        let ux = S::unit_normalize(S::scaled(base).ok_or(Error::Degenerate)?);
-        let uz = S::unit_cross(ux, n).ok_or(Error::Degenerate)?;
-        let uy = S::unit_cross(uz, ux).ok_or(Error::Degenerate)?;
+        let ux = S::unit_normalize(S::scaled(base).ok_or(DEGENERATE)?);
+        let uz = S::unit_cross(ux, n).ok_or(DEGENERATE)?;
+        let uy = S::unit_cross(uz, ux).ok_or(DEGENERATE)?;
 
         let side = t.v1 - t.v0;
         let (x1, z1, x2) = (
@@ -184,7 +187,7 @@ impl<S: Scalar> StandardTriangle<S> {
             S::dot_unit(base, ux),
         );
         if !(x2 > S::ZERO && z1 > S::ZERO) {
-            return Err(Error::Degenerate);
+            return Err(DEGENERATE);
         }
         let z = S::ZERO;
         let corners = [
@@ -197,8 +200,7 @@ impl<S: Scalar> StandardTriangle<S> {
             len: z,
         }; 3];
         for (i, edge) in edges.iter_mut().enumerate() {
-            let (len, dir) =
-                S::direction(corners[(i + 1) % 3] - corners[i]).ok_or(Error::Degenerate)?;
+            let (len, dir) = S::direction(corners[(i + 1) % 3] - corners[i]).ok_or(DEGENERATE)?;
             *edge = Edge {
                 dir: [dir.x, dir.z],
                 len,
@@ -276,7 +278,7 @@ impl<S: Scalar> StandardTriangle<S> {
 
     /// Transforms a world point into the standard frame.
     ///
-    /// Errors: [`Error::NonFinite`] or [`Error::OutOfRange`] for a point outside
+    /// Errors: [`Error::NaN`] or [`Error::OutOfRange`] for a point outside
     /// `±`[`Scalar::LIMIT`]. The result lies within `3.5 * LIMIT` of the origin.
     pub fn to_standard(&self, p: Vec3<S>) -> Result<Vec3<S>, Error> {
         Ok(self.standard_point(check::point(p, S::LIMIT)?))

@@ -13,7 +13,6 @@ use core::ops::{Add, AddAssign, Div, Mul, Neg, Sub, SubAssign};
 /// let v = Vec3::new(1.0f32, 2.0, 3.0) - Vec3::new(1.0, 1.0, 1.0);
 /// assert_eq!(v, Vec3::new(0.0, 1.0, 2.0));
 /// ```
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 pub struct Vec3<T> {

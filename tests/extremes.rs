@@ -41,16 +41,16 @@ fn agrees<S: Tolerance>(case: Case, slack: f64) {
 
 fn coincident_vertices_are_degenerate<S: Scalar>() {
     let t = [[1.0, 2.0, 3.0], [1.0, 2.0, 3.0], [4.0, 0.0, 0.0]];
-    assert_eq!(tri::<S>(t), Err(Error::Degenerate));
+    assert_eq!(tri::<S>(t), Err(Error::Degenerate { triangle: None }));
 }
 
 fn collinear_vertices_are_degenerate<S: Scalar>() {
     let t = [[0.0, 0.0, 0.0], [1.0, 1.0, 1.0], [2.0, 2.0, 2.0]];
-    assert_eq!(tri::<S>(t), Err(Error::Degenerate));
+    assert_eq!(tri::<S>(t), Err(Error::Degenerate { triangle: None }));
     // Nearly collinear, but below the scalar's precision: still refused, never a wild normal.
     let e = S::EPSILON.to_f64() / 4.0;
     let t = [[0.0, 0.0, 0.0], [1.0, 1.0 + e, 1.0], [2.0, 2.0, 2.0]];
-    assert_eq!(tri::<S>(t), Err(Error::Degenerate));
+    assert_eq!(tri::<S>(t), Err(Error::Degenerate { triangle: None }));
 }
 
 /// A long thin triangle (1000 : 1) tilted out of the axes is accepted and behaves like f64.
@@ -139,22 +139,28 @@ fn safe_range_is_accepted_and_enforced<S: Scalar>() {
     let past = l * (1.0 + 2.0 * S::EPSILON.to_f64());
     let ok = Sweep::new(v([l, -l, l]), v([-l, l, -l]), S::LIMIT);
     assert!(ok.is_ok());
-    let e = Err(Error::OutOfRange);
-    assert_eq!(Sweep::new(v([past, 0.0, 0.0]), v([0.0; 3]), S::ONE), e);
-    assert_eq!(Sweep::new(v([0.0; 3]), v([0.0, -past, 0.0]), S::ONE), e);
-    assert_eq!(Sweep::new(v([0.0; 3]), v([0.0; 3]), S::from_f64(past)), e);
-    assert_eq!(
-        tri::<S>([[0.0; 3], [0.0, 0.0, past], [1.0, 0.0, 0.0]]),
-        Err(Error::OutOfRange)
-    );
+    // The error names the value and the range it left.
+    let e = |value: f64| Error::OutOfRange {
+        value: S::from_f64(value).to_f64(),
+        min: -l,
+        max: l,
+        triangle: None,
+    };
+    let sweep = |p0, p1, r| Sweep::new(v(p0), v(p1), r).unwrap_err();
+    assert_eq!(sweep([past, 0.0, 0.0], [0.0; 3], S::ONE), e(past));
+    assert_eq!(sweep([0.0; 3], [0.0, -past, 0.0], S::ONE), e(-past));
+    assert_eq!(sweep([0.0; 3], [0.0; 3], S::from_f64(past)), e(past));
+    let t = tri::<S>([[0.0; 3], [0.0, 0.0, past], [1.0, 0.0, 0.0]]);
+    assert_eq!(t.unwrap_err(), e(past));
     let st = tri::<S>([[0.0; 3], [0.0, 0.0, 1.0], [1.0, 0.0, 0.0]]).unwrap();
-    assert_eq!(st.to_standard(v([0.0, past, 0.0])), Err(Error::OutOfRange));
+    assert_eq!(st.to_standard(v([0.0, past, 0.0])).unwrap_err(), e(past));
     // Standard-frame coordinates may reach 3.5 * LIMIT, no further.
     let s = 3.5 * l;
     assert!(StandardSweep::new(v([s, -s, s]), v([-s, s, -s]), S::ONE).is_ok());
     let beyond = s * (1.0 + 2.0 * S::EPSILON.to_f64());
     let refused = StandardSweep::new(v::<S>([beyond, 0.0, 0.0]), v([0.0; 3]), S::ONE);
-    assert_eq!(refused, Err(Error::OutOfRange));
+    let max = S::from_f64(s).to_f64();
+    assert!(matches!(refused, Err(Error::OutOfRange { max: m, .. }) if m == max));
     // Conversions saturate and map NaN far out of range, so it is refused, not read as zero.
     assert!(Sweep::new(v([f64::NAN, 0.0, 0.0]), v([0.0; 3]), S::ONE).is_err());
     assert!(Sweep::new(v([f64::INFINITY, 0.0, 0.0]), v([0.0; 3]), S::ONE).is_err());
@@ -163,17 +169,28 @@ fn safe_range_is_accepted_and_enforced<S: Scalar>() {
 
 fn negative_radius_is_refused<S: Scalar>() {
     let e = Sweep::new(v([0.0; 3]), v([1.0, 0.0, 0.0]), S::from_f64(-0.5));
-    assert_eq!(e, Err(Error::NegativeRadius));
+    assert_eq!(e, Err(Error::NegativeRadius { value: -0.5 }));
 }
 
 fn non_finite_floats_are_refused<S: Scalar>() {
     let z = Vec3::new(S::ZERO, S::ZERO, S::ZERO);
     for bad in [f64::NAN, f64::INFINITY, f64::NEG_INFINITY].map(S::from_f64) {
         let p = Vec3::new(S::ZERO, bad, S::ZERO);
-        assert_eq!(Sweep::new(p, z, S::ONE), Err(Error::NonFinite));
-        assert_eq!(Sweep::new(z, z, bad), Err(Error::NonFinite));
+        // NaN is its own cause; an infinity is a value out of range.
+        let expected = if bad.partial_cmp(&bad).is_none() {
+            Error::NaN { triangle: None }
+        } else {
+            Error::OutOfRange {
+                value: bad.to_f64(),
+                min: -S::LIMIT.to_f64(),
+                max: S::LIMIT.to_f64(),
+                triangle: None,
+            }
+        };
+        assert_eq!(Sweep::new(p, z, S::ONE), Err(expected));
+        assert_eq!(Sweep::new(z, z, bad), Err(expected));
         let t = Triangle::new(z, p, Vec3::new(S::ONE, S::ZERO, S::ZERO));
-        assert_eq!(StandardTriangle::new(&t), Err(Error::NonFinite));
+        assert_eq!(StandardTriangle::new(&t), Err(expected));
     }
 }
 

@@ -229,7 +229,7 @@ fn errors_not_panics<S: Scalar>() {
         &mut cells,
     );
     if S::PRECISION.relative {
-        let degenerate = ballcast::Error::Degenerate;
+        let degenerate = ballcast::Error::Degenerate { triangle: Some(0) };
         let want = HeightfieldError::Triangle {
             index: 0,
             error: degenerate,

@@ -79,6 +79,142 @@ mod serde_tests {
         assert!(serde_json::from_str::<Scene<f32, 4>>(&too_many).is_err());
     }
 
+    /// A level as a tool would write it: plain numbers, integers and decimals, a wall two-sided.
+    const LEVEL: &str = r#"[
+        [{"v0": {"x": -10, "y": 0, "z": -10}, "v1": {"x": -10, "y": 0, "z": 10},
+          "v2": {"x": 10, "y": 0, "z": 0}}, false],
+        [{"v0": {"x": 3.5, "y": 0, "z": -4}, "v1": {"x": 3.5, "y": 4, "z": 0},
+          "v2": {"x": 3.5, "y": 0, "z": 4}}, true]
+    ]"#;
+
+    /// The ball falls onto the floor and rolls into the wall, in scalar `S`.
+    fn play<S: ballcast::Scalar>(scene: &Scene<S, 4>) -> [f64; 3] {
+        let v = |x: f64, y: f64, z: f64| Vec3::new(S::from_f64(x), S::from_f64(y), S::from_f64(z));
+        let out = ballcast::move_and_slide(scene, v(0.0, 2.0, 0.0), v(5.0, -3.0, 0.0), S::ONE);
+        let p = out.unwrap().position;
+        [p.x.to_f64(), p.y.to_f64(), p.z.to_f64()]
+    }
+
+    #[test]
+    fn one_level_json_loads_into_every_scalar() {
+        use fixed::types::I32F32;
+        let f64_: Scene<f64, 4> = serde_json::from_str(LEVEL).unwrap();
+        let reference = play(&f64_);
+        // Stopped by the wall at x = 3.5 - 1, resting on the floor at y = 1 (plus skins).
+        assert!((reference[0] - 2.5).abs() < 1e-2 && (reference[1] - 1.0).abs() < 1e-2);
+        let others = [
+            play(&serde_json::from_str::<Scene<f32, 4>>(LEVEL).unwrap()),
+            play(&serde_json::from_str::<Scene<I16F16, 4>>(LEVEL).unwrap()),
+            play(&serde_json::from_str::<Scene<I32F32, 4>>(LEVEL).unwrap()),
+        ];
+        for p in others {
+            let d = (0..3)
+                .map(|k| (p[k] - reference[k]).abs())
+                .fold(0.0, f64::max);
+            assert!(d < 1e-3, "{p:?} against {reference:?}");
+        }
+        // And what one scalar writes, another reads: I16F16 to f32 and back, exactly.
+        let i16: Scene<I16F16, 4> = serde_json::from_str(LEVEL).unwrap();
+        let json = serde_json::to_string(&i16).unwrap();
+        let f32_: Scene<f32, 4> = serde_json::from_str(&json).unwrap();
+        let back: Scene<I16F16, 4> =
+            serde_json::from_str(&serde_json::to_string(&f32_).unwrap()).unwrap();
+        assert!(back.sources().eq(i16.sources()));
+    }
+
+    #[test]
+    fn fixed_point_serializes_as_plain_numbers() {
+        use fixed::types::I32F32;
+        let v = Vec3::new(
+            I16F16::from_num(1.5),
+            I16F16::from_num(-2),
+            I16F16::from_bits(1),
+        );
+        let json = serde_json::to_string(&v).unwrap();
+        assert_eq!(json, r#"{"x":1.5,"y":-2.0,"z":0.0000152587890625}"#);
+        assert_eq!(serde_json::from_str::<Vec3<I16F16>>(&json).unwrap(), v);
+        // f32 as f32: 0.1 reads as 0.1, not 0.10000000149011612.
+        let json = serde_json::to_string(&Vec3::new(0.1f32, 0.0, 1e-3)).unwrap();
+        assert_eq!(json, r#"{"x":0.1,"y":0.0,"z":0.001}"#);
+        // An I32F32 value with more bits than f64 holds: the exact pair, read back bit for bit.
+        let big = I32F32::from_bits((1 << 59) + 1); // 2^27 + 2^-32
+        let v = Vec3::new(big, I32F32::ZERO, -big);
+        let json = serde_json::to_string(&v).unwrap();
+        assert_eq!(
+            json,
+            r#"{"x":[134217728.0,2.3283064365386963e-10],"y":0.0,"z":[-134217728.0,-2.3283064365386963e-10]}"#
+        );
+        assert_eq!(serde_json::from_str::<Vec3<I32F32>>(&json).unwrap(), v);
+        // Integers read too.
+        let v: Vec3<I32F32> = serde_json::from_str(r#"{"x":1,"y":-3,"z":0}"#).unwrap();
+        assert_eq!(
+            v,
+            Vec3::new(I32F32::ONE, I32F32::from_num(-3), I32F32::ZERO)
+        );
+    }
+
+    #[test]
+    fn level_value_that_does_not_fit_names_triangle_and_value() {
+        let far = LEVEL.replace(r#""x": 3.5, "y": 4"#, r#""x": 100000, "y": 4"#);
+        // f32 holds it (the wall turns into a sliver far away, still valid) ...
+        assert!(serde_json::from_str::<Scene<f32, 4>>(&far).is_ok());
+        // ... I16F16 cannot: refused with the value and its range, not saturated.
+        let err = serde_json::from_str::<Scene<I16F16, 4>>(&far).unwrap_err();
+        let msg = err.to_string();
+        assert!(
+            msg.starts_with("triangle 1: 100000 is outside the accepted range [-4096, 4096]"),
+            "{msg}"
+        );
+    }
+
+    /// A binary format (CBOR: not human-readable) gets every scalar as an exact pair: an
+    /// `I32F32` level beyond f64's 53 bits round-trips bit for bit, and an f32 level reads into
+    /// I16F16.
+    #[test]
+    fn binary_format_level_is_exact_and_loads_into_every_scalar() {
+        use fixed::types::I32F32;
+        let cbor = |s: &Scene<_, 4>| {
+            let mut out = Vec::new();
+            ciborium::into_writer(s, &mut out).unwrap();
+            out
+        };
+        let mut big: Scene<I32F32, 4> = Scene::new();
+        let odd = I32F32::from_bits((1 << 59) + 1); // 2^27 + 2^-32
+        let v = |x: I32F32, z: f64| Vec3::new(x, I32F32::ZERO, I32F32::from_num(z));
+        big.push(Triangle::new(
+            v(odd, 0.0),
+            v(odd, 2.0),
+            v(odd + I32F32::ONE, 0.0),
+        ))
+        .unwrap();
+        let back: Scene<I32F32, 4> = ciborium::from_reader(cbor(&big).as_slice()).unwrap();
+        assert!(back.sources().eq(big.sources()));
+        let f32_: Scene<f32, 4> = serde_json::from_str(LEVEL).unwrap();
+        let bytes = {
+            let mut out = Vec::new();
+            ciborium::into_writer(&f32_, &mut out).unwrap();
+            out
+        };
+        let i16: Scene<I16F16, 4> = ciborium::from_reader(bytes.as_slice()).unwrap();
+        let json: Scene<I16F16, 4> = serde_json::from_str(LEVEL).unwrap();
+        assert!(i16.sources().eq(json.sources()));
+    }
+
+    #[test]
+    fn bad_triangle_in_level_gives_its_index() {
+        let flat = LEVEL.replace(r#""x": 3.5, "y": 4, "z": 0"#, r#""x": 3.5, "y": 0, "z": 0"#);
+        let err = serde_json::from_str::<Scene<f32, 4>>(&flat).unwrap_err();
+        assert!(
+            err.to_string().starts_with("triangle 1: degenerate"),
+            "{err}"
+        );
+        let full = serde_json::from_str::<Scene<f32, 1>>(LEVEL).unwrap_err();
+        assert!(
+            full.to_string().starts_with("full: it holds 1 triangles"),
+            "{full}"
+        );
+    }
+
     #[test]
     fn results_round_trip() {
         let scene = floor::<f64>();
@@ -89,10 +225,8 @@ mod serde_tests {
             serde_json::from_str::<ballcast::SceneHit<f64>>(&json).unwrap(),
             hit
         );
-        let e = serde_json::to_string(&Error::OutOfRange).unwrap();
-        assert_eq!(
-            serde_json::from_str::<Error>(&e).unwrap(),
-            Error::OutOfRange
-        );
+        let refused = Error::Full { capacity: 8 };
+        let e = serde_json::to_string(&refused).unwrap();
+        assert_eq!(serde_json::from_str::<Error>(&e).unwrap(), refused);
     }
 }

@@ -213,12 +213,12 @@ fn errors_not_panics<S: Scalar>() {
         e,
         MeshError::Triangle {
             index: 5,
-            error: ballcast::Error::Degenerate
+            error: ballcast::Error::Degenerate { triangle: Some(5) }
         }
     );
     assert_eq!(
         e.to_string(),
-        "triangle 5: degenerate triangle: coincident or collinear vertices"
+        "triangle 5: degenerate (coincident or collinear vertices)"
     );
     assert_eq!(attempt(&src, full, Degenerates::Skip), Ok((n - 2, 2)));
     // Out of range is never skipped.

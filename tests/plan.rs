@@ -75,3 +75,86 @@ fn planner_refuses_what_overflows() {
     let v = ballcast::plan(100.0, 1.0, 10.0);
     assert!(v[0].distance_error > v[1].distance_error && v[1].distance_error > v[2].distance_error);
 }
+
+/// Each verdict names its scalar as a value a program can match on to pick the type.
+#[test]
+fn verdict_selects_a_type() {
+    use ballcast::{Scalar, ScalarType};
+    let all = ballcast::plan(100.0, 1.0, 10.0).map(|v| v.precision.scalar);
+    let order = [
+        ScalarType::I16F16,
+        ScalarType::F32,
+        ScalarType::I32F32,
+        ScalarType::F64,
+    ];
+    assert_eq!(all, order);
+    // The value leads back to the type: its precision is the type's own.
+    fn same<S: Scalar>(t: ScalarType) {
+        assert_eq!(t.precision(), S::PRECISION);
+        assert_eq!(S::PRECISION.scalar, t);
+    }
+    same::<I16F16>(order[0]);
+    same::<f32>(order[1]);
+    same::<I32F32>(order[2]);
+    same::<f64>(order[3]);
+    assert_eq!(order.map(|t| t.name()), ["I16F16", "f32", "I32F32", "f64"]);
+}
+
+/// `choose` gives the cheapest scalar that fits, accepts the radius and meets the tolerance.
+#[test]
+fn choose_picks_the_cheapest_that_meets_the_tolerance() {
+    use ballcast::{ScalarType, choose};
+    let pick = |e, r, p, t| choose(e, r, p, t).map(|v| v.precision.scalar);
+    assert_eq!(pick(100.0, 0.5, 2.0, 1e-3), Some(ScalarType::I16F16));
+    // f32's heights at 100 round to ~5e-5: too coarse for 1e-6.
+    assert_eq!(pick(100.0, 0.5, 2.0, 1e-6), Some(ScalarType::I32F32));
+    // 10 km does not fit I16F16.
+    assert_eq!(pick(10_000.0, 1.0, 20.0, 1e-2), Some(ScalarType::F32));
+    // A ball too small for I16F16's rounding (128 steps of 2^-16) is not given it.
+    assert_eq!(pick(100.0, 0.001, 0.01, 1e-2), Some(ScalarType::F32));
+    assert_eq!(pick(1e20, 1.0, 1.0, 1.0), None);
+}
+
+/// The constants' share of drift: a ball sliding at speed 3 on a floor for 10 s, stepped with
+/// `dt = 1/60` exactly and with `dt` rounded to `I16F16`, both in f64: the second falls behind
+/// by speed × time × the relative rounding of dt, as the planner's docs say.
+#[test]
+fn drift_from_rounded_dt_is_speed_times_time_times_its_rounding() {
+    use ballcast::{Scalar, Scene, Triangle, Vec3, move_and_slide};
+    let v = Vec3::new;
+    let mut floor: Scene<f64, 2> = Scene::new();
+    floor
+        .push(Triangle::new(
+            v(-100.0, 0.0, -100.0),
+            v(-100.0, 0.0, 100.0),
+            v(100.0, 0.0, 100.0),
+        ))
+        .unwrap();
+    floor
+        .push(Triangle::new(
+            v(-100.0, 0.0, -100.0),
+            v(100.0, 0.0, 100.0),
+            v(100.0, 0.0, -100.0),
+        ))
+        .unwrap();
+    let slide = |dt: f64| {
+        let (mut p, mut vel) = (v(-50.0, 0.5005, 0.0), v(3.0, 0.0, 0.0));
+        for _ in 0..600 {
+            vel.y -= 9.81 * dt;
+            let out = move_and_slide(&floor, p, vel * dt, 0.5).unwrap();
+            p = out.position;
+            vel = out.clip(vel).unwrap();
+        }
+        p
+    };
+    let exact = 1.0 / 60.0;
+    let rounded = I16F16::from_f64(exact).to_f64();
+    let relative = (exact - rounded) / exact;
+    assert!((relative - 2.44e-4).abs() < 1e-6, "{relative}");
+    let behind = slide(exact).x - slide(rounded).x;
+    let predicted = 3.0 * 10.0 * relative;
+    assert!(
+        (behind - predicted).abs() < 0.05 * predicted,
+        "fell behind by {behind}, predicted {predicted}"
+    );
+}

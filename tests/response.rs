@@ -120,9 +120,13 @@ fn smallest_radius_holds<S: Tolerance>() {
     );
     let below = S::from_f64(0.9 * r);
     let scene: ballcast::Scene<S, 1> = ballcast::Scene::new();
+    let e = ballcast::move_and_slide(&scene, p, z, below).unwrap_err();
     assert_eq!(
-        ballcast::move_and_slide(&scene, p, z, below).unwrap_err(),
-        ballcast::Error::RadiusTooSmall
+        e,
+        ballcast::Error::RadiusTooSmall {
+            radius: below.to_f64(),
+            min: ballcast::slide::min_radius(S::from_f64(extent)).to_f64()
+        }
     );
 }
 

@@ -4,7 +4,7 @@
 use super::{HOLE, Heightfield};
 use crate::cull::{Path, is_less};
 use crate::merge::{Earliest, earliest};
-use crate::{Geometry, Scalar, SceneHit, Sweep};
+use crate::{Geometry, Scalar, SceneHit, StandardTriangle, Sweep, Vec3};
 
 /// Whether the path, over `[t0, t1]`, comes within the pad of the half of a cell (corner `c` in
 /// x–z) on one side of its diagonal: `above` (z − x growing) for the cell's first triangle. Seen
@@ -131,5 +131,39 @@ impl<S: Scalar> Heightfield<'_, S> {
 impl<S: Scalar> Geometry<S> for Heightfield<'_, S> {
     fn cast(&self, sweep: &Sweep<S>) -> Option<SceneHit<S>> {
         Heightfield::cast(self, sweep)
+    }
+
+    /// The triangles of the cells under the box whose heights reach into it.
+    fn visit(&self, min: Vec3<S>, max: Vec3<S>, f: &mut dyn FnMut(usize, &StandardTriangle<S>)) {
+        let (o, sp) = (self.origin.to_array().map(S::to_f64), self.spacing.to_f64());
+        let (lo, hi) = (min.to_array().map(S::to_f64), max.to_array().map(S::to_f64));
+        // Cells along one axis that the box's span covers, clamped to the grid (empty if none).
+        let range = |a: usize, n: u32| {
+            let at = |v: f64| libm::floor((v - o[a]) / sp);
+            let (first, last) = (at(lo[a]).max(0.0), at(hi[a]).min(n as f64 - 1.0));
+            first as u32..(last + 1.0).max(first) as u32
+        };
+        let unit = self.unit.to_f64();
+        for k in range(2, self.rows) {
+            for i in range(0, self.columns) {
+                let corner = |di: u32, dk: u32| {
+                    let v = (k + dk) as usize * (self.columns as usize + 1) + (i + di) as usize;
+                    o[1] + unit * self.heights.get(v).map_or(0.0, |&h| h as f64)
+                };
+                let ys = [corner(0, 0), corner(0, 1), corner(1, 1), corner(1, 0)];
+                let (ylo, yhi) = ys
+                    .iter()
+                    .fold((ys[0], ys[0]), |(l, u), &y| (l.min(y), u.max(y)));
+                if yhi < lo[1] || ylo > hi[1] {
+                    continue;
+                }
+                let c = k as usize * self.columns as usize + i as usize;
+                for t in [2 * c, 2 * c + 1] {
+                    if let Some(st) = self.prepared(t) {
+                        f(t, &st);
+                    }
+                }
+            }
+        }
     }
 }

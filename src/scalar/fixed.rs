@@ -46,7 +46,7 @@ macro_rules! fixed_scalar {
             const LIMIT: Self = <$t>::from_bits($limit_int << $frac);
             const EPSILON: Self = <$t>::DELTA;
             const PRECISION: crate::Precision = crate::Precision {
-                name: stringify!($t),
+                scalar: crate::plan::ScalarType::named(stringify!($t)),
                 limit: $limit_int as f64,
                 epsilon: 1.0 / (1u64 << $frac) as f64,
                 relative: false,

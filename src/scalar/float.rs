@@ -29,7 +29,7 @@ macro_rules! float_scalar {
             const LIMIT: Self = $limit;
             const EPSILON: Self = <$t>::EPSILON;
             const PRECISION: crate::Precision = crate::Precision {
-                name: stringify!($t),
+                scalar: crate::plan::ScalarType::named(stringify!($t)),
                 limit: $limit,
                 epsilon: <$t>::EPSILON as f64,
                 relative: true,

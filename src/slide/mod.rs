@@ -15,11 +15,13 @@
 //! Every product and quotient rounds to nearest through the [`Scalar`] trait, so a resting ball
 //! pushed into a floor does not creep along it.
 
+mod resolve;
 mod rules;
 
 use crate::{Error, Geometry, Scalar, SceneHit, Sweep, Vec3, check};
 use heapless::Vec;
-use rules::{Planes, add_planes, constrain, magnitude, stand_off};
+use resolve::{resolve, settle};
+use rules::{Planes, add_planes, constrain, magnitude};
 
 /// At most this many sweeps per call: each contact costs one, and a ball pressed into a corner
 /// of three planes has nowhere left to go after three.
@@ -29,9 +31,13 @@ pub const MAX_SLIDES: usize = 4;
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", serde(bound = "S: crate::Scalar"))]
 pub struct Slide<S> {
     /// Where the ball's centre ends.
     pub position: Vec3<S>,
+    /// How far the ball was moved out of a starting overlap before it moved (zero unless it
+    /// started overlapping geometry by more than the skin; see [`move_and_slide`]).
+    pub pushed_out: Vec3<S>,
     /// The part of the requested displacement not travelled: what the contacts took away.
     pub blocked: Vec3<S>,
     /// The contacts met, in order (at most [`MAX_SLIDES`]).
@@ -42,6 +48,7 @@ pub struct Slide<S> {
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", serde(bound = "S: crate::Scalar"))]
 pub struct SlideContact<S> {
     /// What the sweep met: its `position` is the ball's centre at the moment of contact, its
     /// `alpha` a fraction of that sweep (what was left of the motion at the time), not of the
@@ -53,6 +60,7 @@ pub struct SlideContact<S> {
     /// The fraction of the call's time step elapsed at contact, in `[0, 1)`: the call's
     /// displacement is taken as travelled at constant speed over the step, and each sweep
     /// covers what is left of it (Quake's `time_left`).
+    #[cfg_attr(feature = "serde", serde(with = "crate::interop::number"))]
     pub time: S,
 }
 
@@ -61,7 +69,7 @@ impl<S: Scalar> Slide<S> {
     /// itself: what a caller does to its velocity afterwards. Never lengthens it by more than
     /// rounding, and never turns it against itself.
     ///
-    /// Errors: [`Error::NonFinite`] or [`Error::OutOfRange`] for a velocity component beyond
+    /// Errors: [`Error::NaN`] or [`Error::OutOfRange`] for a velocity component beyond
     /// `±`[`Scalar::LIMIT`].
     pub fn clip(&self, velocity: Vec3<S>) -> Result<Vec3<S>, Error> {
         let v = check::point(velocity, S::LIMIT)?;
@@ -86,17 +94,23 @@ impl<S: Scalar> Slide<S> {
     /// let mut s: Scene<f32, 2> = Scene::new();
     /// s.push(Triangle::new(v(-9.0, 0.0, -9.0), v(-9.0, 0.0, 9.0), v(9.0, 0.0, 0.0)))?;
     /// let out = move_and_slide(&s, v(0.0, 0.6, 0.0), v(0.1, -0.2, 0.0), 0.5)?;
-    /// let floor = out.floor(v(0.0, 1.0, 0.0), core::f32::consts::FRAC_1_SQRT_2).expect("landed");
+    /// let floor = out.floor(v(0.0, 1.0, 0.0), core::f32::consts::FRAC_1_SQRT_2)?.expect("landed");
     /// assert!((floor.time - 0.5).abs() < 1e-3); // half-way through the step
     /// assert!((floor.point.y).abs() < 1e-6); // touching the floor's surface
     /// # Ok::<(), ballcast::Error>(())
     /// ```
-    pub fn floor(&self, up: Vec3<S>, min_cos: S) -> Option<&SlideContact<S>> {
-        self.contacts
+    ///
+    /// Errors: [`Error::NaN`], or [`Error::OutOfRange`] for a component of `up` or `min_cos`
+    /// outside `[-1, 1]`.
+    pub fn floor(&self, up: Vec3<S>, min_cos: S) -> Result<Option<&SlideContact<S>>, Error> {
+        let up = check::point(up, S::ONE)?;
+        let min_cos = check::within(min_cos, -S::ONE, S::ONE)?;
+        Ok(self
+            .contacts
             .iter()
             .flatten()
             .filter(|c| S::dot(c.hit.normal, up) >= min_cos)
-            .last()
+            .last())
     }
 }
 
@@ -122,7 +136,7 @@ pub struct Slider<S> {
 impl<S: Scalar> Slider<S> {
     /// A ball of `radius` with the default [`skin`].
     ///
-    /// Errors: [`Error::NonFinite`], [`Error::OutOfRange`], [`Error::NegativeRadius`].
+    /// Errors: [`Error::NaN`], [`Error::OutOfRange`], [`Error::NegativeRadius`].
     pub fn new(radius: S) -> Result<Self, Error> {
         Ok(Self {
             radius: check::radius(radius)?,
@@ -134,13 +148,10 @@ impl<S: Scalar> Slider<S> {
     /// match, say. It is never less than the rounding term of the default [`skin`] (twice the
     /// rounding of a height at the ball's coordinates), which keeps the response exact.
     ///
-    /// Errors: [`Error::NonFinite`], or [`Error::OutOfRange`] for a skin below zero or above
+    /// Errors: [`Error::NaN`], or [`Error::OutOfRange`] for a skin below zero or above
     /// the radius.
     pub fn with_skin(self, skin: S) -> Result<Self, Error> {
-        let skin = check::value(skin, self.radius)?;
-        if skin < S::ZERO {
-            return Err(Error::OutOfRange);
-        }
+        let skin = check::within(skin, S::ZERO, self.radius)?;
         Ok(Self {
             skin: Some(skin),
             ..self
@@ -208,13 +219,22 @@ pub fn min_radius<S: Scalar>(extent: S) -> S {
 /// [`Scene`](crate::Scene), a mesh, or a slice of prepared triangles), sliding along what it
 /// touches by the rules in the [module docs](self), for at most [`MAX_SLIDES`] sweeps.
 ///
+/// A ball that starts overlapping geometry by more than the skin is first pushed out
+/// ([`Slide::pushed_out`]): along the deepest overlap's normal
+/// ([`penetration`](crate::penetration::penetration)) to a skin from that triangle, at most
+/// [`MAX_SLIDES`] pushes (each may uncover the next), each swept like a motion so that it stops
+/// a skin short of other geometry rather than pushing into it. A ball spawned 0.2 inside a
+/// floor comes out in the one call. Overlaps are looked for only where the motion's first sweep
+/// meets something at once (alpha 0), so a call that starts clear costs no more than before; a
+/// ball that starts overlapping but moves away is left to leave. Shallower overlaps (rounding) are left to the motion: a
+/// contact met at once lifts the ball by a skin.
+///
 /// Guarantees, in every scalar: the motion's length never grows beyond the skins, so a slide
 /// cannot gain speed; it never runs against `displacement` apart from the skins; a ball that
-/// starts overlapping geometry is not carried further in (each call lifts it by a skin while
-/// the displacement does not move it away).
+/// starts overlapping geometry is not carried further in.
 ///
 /// Errors, checked before any arithmetic so fixed-point cannot overflow:
-/// [`Error::NonFinite`] or [`Error::OutOfRange`] when `position`, `displacement`, the target or
+/// [`Error::NaN`] or [`Error::OutOfRange`] when `position`, `displacement`, the target or
 /// `radius` is outside `±`[`Scalar::LIMIT`], [`Error::NegativeRadius`], and
 /// [`Error::RadiusTooSmall`] below [`min_radius`] at the larger of the start's and target's
 /// coordinates.
@@ -256,13 +276,33 @@ fn run<S: Scalar, G: Geometry<S> + ?Sized>(
     let target = check::point(position + displacement, S::LIMIT)?;
     let (a, b) = (magnitude(position), magnitude(target));
     let extent = if a > b { a } else { b };
-    if radius < min_radius(extent) {
-        return Err(Error::RadiusTooSmall);
+    let min = min_radius(extent);
+    if radius < min {
+        return Err(Error::RadiusTooSmall {
+            radius: radius.to_f64(),
+            min: min.to_f64(),
+        });
     }
     let skin = ball.skin(extent);
+    let rounding = S::height_error(extent);
+    // The motion's first sweep (or, for no motion, one that does not move) reports a starting
+    // overlap at alpha 0: only then is the overlap looked for, and the sweep is kept otherwise.
+    let mut pending = Some(scene.cast(&Sweep::new(position, target, radius)?));
+    let mut start = position;
+    if let Some(Some(hit)) = &pending
+        && hit.alpha == S::ZERO
+    {
+        start = resolve(scene, position, radius, skin, rounding);
+        if start != position {
+            pending = None;
+        }
+    }
+    // The push may carry the target past the range: refused like any other target.
+    check::point(start + displacement, S::LIMIT)?;
     let zero = Vec3::ZERO;
     let mut out = Slide {
-        position,
+        position: start,
+        pushed_out: start - position,
         blocked: zero,
         contacts: [None; MAX_SLIDES],
     };
@@ -273,7 +313,11 @@ fn run<S: Scalar, G: Geometry<S> + ?Sized>(
             break;
         }
         let sweep = Sweep::new(out.position, out.position + rest, radius)?;
-        let Some(hit) = scene.cast(&sweep) else {
+        let found = match pending.take() {
+            Some(first) => first,
+            None => scene.cast(&sweep),
+        };
+        let Some(hit) = found else {
             out.position += rest;
             rest = zero;
             break;
@@ -284,14 +328,8 @@ fn run<S: Scalar, G: Geometry<S> + ?Sized>(
             point: hit.position - hit.normal.scale(radius),
             time: elapsed,
         });
-        let (alpha, lift) = stand_off(&hit, rest, skin, S::height_error(extent));
-        // From the contact's own position (a few steps of `S` off, where alpha's rounding
-        // times the path would be more), backed off along the path; or not moved at all.
-        if alpha == hit.alpha {
-            out.position = hit.position + lift;
-        } else if alpha > S::ZERO {
-            out.position = hit.position - rest.scale(hit.alpha - alpha);
-        }
+        let alpha = rules::stand_off(&hit, rest, skin, rounding).0;
+        out.position = settle(&hit, out.position, rest, skin, rounding);
         let left = rest.scale(S::ONE - alpha);
         rest = if add_planes(&mut planes, &hit) {
             constrain(left, &planes, displacement)

@@ -201,18 +201,25 @@ fn any_non_finite<S: Scalar>(xs: &[S]) -> bool {
 fn justified<S: Scalar>(e: Error, xs: &[S], bound: S, r: Option<S>) {
     let beyond = |x: S, b: S| x.is_finite() && !in_range(x, b);
     match e {
-        Error::NonFinite => assert!(
+        Error::NaN { .. } => assert!(
             any_non_finite(xs) || r.is_some_and(|r| !r.is_finite()),
-            "NonFinite for {xs:?} {r:?}"
+            "NaN for {xs:?} {r:?}"
         ),
-        Error::OutOfRange => assert!(
-            xs.iter().any(|x| beyond(*x, bound)) || r.is_some_and(|r| beyond(r, S::LIMIT)),
-            "OutOfRange for {xs:?} {r:?}"
+        Error::OutOfRange { value, .. } => assert!(
+            xs.iter().chain(r.as_ref()).any(|x| x.to_f64() == value)
+                && (xs.iter().any(|x| beyond(*x, bound) || !x.is_finite())
+                    || r.is_some_and(|r| beyond(r, S::LIMIT) || !r.is_finite())),
+            "OutOfRange ({value}) for {xs:?} {r:?}"
         ),
-        Error::NegativeRadius => assert!(r.is_some_and(|r| r < S::ZERO), "NegativeRadius, {r:?}"),
+        Error::NegativeRadius { value } => assert!(
+            r.is_some_and(|r| r < S::ZERO && r.to_f64() == value),
+            "NegativeRadius, {r:?}"
+        ),
         // Only containers and responses report these.
-        e @ (Error::Full | Error::RadiusTooSmall) => panic!("a constructor reported {e:?}"),
-        Error::Degenerate => assert!(
+        e @ (Error::Full { .. } | Error::RadiusTooSmall { .. }) => {
+            panic!("a constructor reported {e:?}")
+        }
+        Error::Degenerate { .. } => assert!(
             r.is_none() && xs.iter().all(|x| in_range(*x, bound)),
             "Degenerate for {xs:?}"
         ),

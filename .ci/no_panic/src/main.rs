@@ -44,7 +44,7 @@ macro_rules! wrappers {
         /// Without the constructor: a triangle the optimiser knows nothing about.
         #[cfg(not(feature = "triangle"))]
         fn $tri(_: &Triangle<$t>) -> Result<StandardTriangle<$t>, Error> {
-            static SLOT: Result<StandardTriangle<$t>, Error> = Err(Error::Degenerate);
+            static SLOT: Result<StandardTriangle<$t>, Error> = Err(Error::Degenerate { triangle: None });
             *black_box(&SLOT)
         }
 

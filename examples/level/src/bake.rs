@@ -108,10 +108,10 @@ pub fn verdicts(extent: f64, radius: f64) -> String {
             if v.fits {
                 format!(
                     "{} fits (position error {:.1e}, radius at least {:.1e})",
-                    v.precision.name, v.position_error, v.min_radius
+                    v.precision.scalar, v.position_error, v.min_radius
                 )
             } else {
-                format!("{} does not fit", v.precision.name)
+                format!("{} does not fit", v.precision.scalar)
             }
         })
         .collect();
@@ -158,7 +158,12 @@ pub fn bake<S: Scalar + Emit>(level: &Level) -> Result<Baked, LevelError> {
     let sources = triangles::<S>(level)?;
     let n = sources.len();
     let skipped: Vec<usize> = (0..n)
-        .filter(|&i| StandardTriangle::new(&sources[i]) == Err(Error::Degenerate))
+        .filter(|&i| {
+            matches!(
+                StandardTriangle::new(&sources[i]),
+                Err(Error::Degenerate { .. })
+            )
+        })
         .collect();
     let mut nodes = vec![Node::default(); nodes_for(n)];
     let mut prepared = vec![Mesh::<S>::filler(); n];

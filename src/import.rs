@@ -1,0 +1,126 @@
+//! Scenes from what modelling tools and file formats export: a vertex array with an index
+//! buffer (glTF, OBJ after triangulation, most engines' meshes), or any iterator of triangles;
+//! and triangles converted from one scalar to another.
+
+use crate::{Error, Scalar, Scene, Triangle, Vec3, check};
+
+impl<S: Scalar, const N: usize> Scene<S, N> {
+    /// A scene of one-sided triangles from `vertices` and an index buffer, three indices per
+    /// triangle (counter-clockwise seen from the front), e.g. `&[u16]` or `&[u32]` as glTF
+    /// stores them.
+    ///
+    /// Errors: [`Error::IndexCount`] for a buffer whose length is not a multiple of three,
+    /// [`Error::VertexIndex`] naming the triangle and the index beyond `vertices` (both checked
+    /// before anything is pushed), and those of [`push`](Self::push), naming the triangle.
+    ///
+    /// ```
+    /// use ballcast::{Error, Scene, Vec3};
+    /// let v = Vec3::new;
+    /// let quad = [v(0.0f32, 0.0, 0.0), v(0.0, 0.0, 2.0), v(2.0, 0.0, 2.0), v(2.0, 0.0, 0.0)];
+    /// let scene: Scene<f32, 8> = Scene::from_indexed(&quad, &[0u16, 1, 2, 0, 2, 3])?;
+    /// assert_eq!(scene.len(), 2);
+    /// let bad = Scene::<f32, 8>::from_indexed(&quad, &[0u32, 1, 2, 0, 2, 4]).unwrap_err();
+    /// assert_eq!(bad, Error::VertexIndex { triangle: 1, index: 4, vertices: 4 });
+    /// assert_eq!(bad.to_string(), "triangle 1: vertex index 4 is beyond the 4 vertices");
+    /// # Ok::<(), Error>(())
+    /// ```
+    pub fn from_indexed<I: Copy + TryInto<usize>>(
+        vertices: &[Vec3<S>],
+        indices: &[I],
+    ) -> Result<Self, Error> {
+        let mut scene = Self::new();
+        scene.extend_indexed(vertices, indices)?;
+        Ok(scene)
+    }
+
+    /// [`from_indexed`](Self::from_indexed) into this scene: triangle indices in errors are
+    /// those the triangles would have had in the scene. On an error from a push, the triangles
+    /// before it stay in the scene ([`clear`](Self::clear) it to start again).
+    pub fn extend_indexed<I: Copy + TryInto<usize>>(
+        &mut self,
+        vertices: &[Vec3<S>],
+        indices: &[I],
+    ) -> Result<(), Error> {
+        if !indices.len().is_multiple_of(3) {
+            return Err(Error::IndexCount { len: indices.len() });
+        }
+        let first = self.len();
+        let corner = |k: usize| {
+            let index = indices[k].try_into().unwrap_or(usize::MAX);
+            vertices.get(index).copied().ok_or(Error::VertexIndex {
+                triangle: first + k / 3,
+                index,
+                vertices: vertices.len(),
+            })
+        };
+        for k in 0..indices.len() {
+            corner(k)?;
+        }
+        for k in (0..indices.len()).step_by(3) {
+            let t = Triangle::new(corner(k)?, corner(k + 1)?, corner(k + 2)?);
+            self.push(t)?;
+        }
+        Ok(())
+    }
+
+    /// Pushes every triangle of `triangles` (one-sided), stopping at the first error, which
+    /// names the triangle; those before it stay in the scene.
+    pub fn try_extend<T: IntoIterator<Item = Triangle<S>>>(
+        &mut self,
+        triangles: T,
+    ) -> Result<(), Error> {
+        triangles
+            .into_iter()
+            .try_for_each(|t| self.push(t).map(|_| ()))
+    }
+}
+
+/// Collecting triangles into a scene pushes each (one-sided), and fails as
+/// [`Scene::push`] does:
+///
+/// ```
+/// use ballcast::{Error, Scene, Triangle, Vec3};
+/// let v = Vec3::new;
+/// let tiles = (0..4).map(|i| {
+///     let x = i as f64;
+///     Triangle::new(v(x, 0.0, 0.0), v(x, 0.0, 1.0), v(x + 1.0, 0.0, 0.0))
+/// });
+/// let scene: Scene<f64, 4> = tiles.clone().collect::<Result<_, _>>()?;
+/// assert_eq!(scene.len(), 4);
+/// let full: Result<Scene<f64, 3>, _> = tiles.collect();
+/// assert_eq!(full.unwrap_err(), Error::Full { capacity: 3 });
+/// # Ok::<(), Error>(())
+/// ```
+impl<S: Scalar, const N: usize> FromIterator<Triangle<S>> for Result<Scene<S, N>, Error> {
+    fn from_iter<T: IntoIterator<Item = Triangle<S>>>(triangles: T) -> Self {
+        let mut scene = Scene::new();
+        scene.try_extend(triangles)?;
+        Ok(scene)
+    }
+}
+
+impl<S: Scalar> Triangle<S> {
+    /// The same triangle in another scalar, each coordinate rounded to nearest, refusing a
+    /// coordinate that `T` cannot hold within its safe range rather than saturating it.
+    ///
+    /// Errors: [`Error::NaN`]; [`Error::OutOfRange`] with the coordinate's value and `T`'s
+    /// range.
+    ///
+    /// ```
+    /// use ballcast::{Error, Triangle, Vec3};
+    /// use fixed::types::I16F16;
+    /// let v = Vec3::new;
+    /// let t = Triangle::new(v(0.0f32, 0.0, 0.0), v(0.0, 0.0, 1.5), v(1.0, 0.0, 0.0));
+    /// assert_eq!(t.try_cast::<I16F16>()?.v1.z, I16F16::from_num(1.5));
+    /// let far = Triangle::new(v(0.0f32, 0.0, 0.0), v(0.0, 0.0, 1e6), v(1.0, 0.0, 0.0));
+    /// assert!(matches!(far.try_cast::<I16F16>(), Err(Error::OutOfRange { value: 1e6, .. })));
+    /// # Ok::<(), Error>(())
+    /// ```
+    pub fn try_cast<T: Scalar>(&self) -> Result<Triangle<T>, Error> {
+        let p = |v: Vec3<S>| -> Result<Vec3<T>, Error> {
+            let c = |x: S| check::convert::<T>(x.to_f64());
+            Ok(Vec3::new(c(v.x)?, c(v.y)?, c(v.z)?))
+        };
+        Ok(Triangle::new(p(self.v0)?, p(self.v1)?, p(self.v2)?))
+    }
+}

@@ -1,0 +1,126 @@
+//! Errors that say where: the triangle's index, the offending value and the limit it broke, NaN
+//! as its own cause, and a sentence from `Display`.
+
+mod common;
+
+use ballcast::{Error, Scalar, Scene, Slider, Sweep, Triangle, Vec3, move_and_slide};
+use common::v;
+use fixed::types::{I16F16, I32F32};
+
+fn floor<S: Scalar>(x: f64) -> Triangle<S> {
+    Triangle::new(v([x, 0.0, 0.0]), v([x, 0.0, 1.0]), v([x + 1.0, 0.0, 0.0]))
+}
+
+/// The scene's push of a degenerate triangle after many good ones names the index it would
+/// have had, in the value and in the sentence.
+fn push_of_degenerate_triangle_names_its_index<S: Scalar>() {
+    let mut scene: Scene<S, 64> = Scene::new();
+    for i in 0..40 {
+        scene.push(floor(2.0 * f64::from(i))).unwrap();
+    }
+    let p = v::<S>([1.0, 2.0, 3.0]);
+    let e = scene.push(Triangle::new(p, p, v([0.0; 3]))).unwrap_err();
+    assert_eq!(e, Error::Degenerate { triangle: Some(40) });
+    assert_eq!(
+        e.to_string(),
+        "triangle 40: degenerate (coincident or collinear vertices)"
+    );
+    // Nothing was added: the next good triangle still gets index 40.
+    assert_eq!(scene.push(floor(100.0)), Ok(40));
+}
+
+/// A full scene says how many it holds.
+fn full_gives_capacity<S: Scalar>() {
+    let mut scene: Scene<S, 3> = Scene::new();
+    for i in 0..3 {
+        scene.push(floor(2.0 * f64::from(i))).unwrap();
+    }
+    let e = scene.push(floor(10.0)).unwrap_err();
+    assert_eq!(e, Error::Full { capacity: 3 });
+    assert_eq!(e.to_string(), "full: it holds 3 triangles");
+}
+
+/// An out-of-range vertex gives its value, the range, and the triangle.
+fn out_of_range_vertex_gives_value_and_limit<S: Scalar>() {
+    let mut scene: Scene<S, 4> = Scene::new();
+    scene.push(floor(0.0)).unwrap();
+    let far = 2.0 * S::LIMIT.to_f64();
+    let t = Triangle::new(v([0.0; 3]), v([0.0, 0.0, 1.0]), v([far, 0.0, 0.0]));
+    let l = S::LIMIT.to_f64();
+    let e = scene.push(t).unwrap_err();
+    assert_eq!(
+        e,
+        Error::OutOfRange {
+            value: far,
+            min: -l,
+            max: l,
+            triangle: Some(1)
+        }
+    );
+    assert_eq!(
+        e.to_string(),
+        format!("triangle 1: {far} is outside the accepted range [-{l}, {l}]")
+    );
+}
+
+/// A NaN coordinate reads as NaN, not as out of range, for every entry point that takes one.
+fn nan_is_its_own_cause<S: Scalar>() {
+    let (z, nan) = (Vec3::new(0.0, 0.0, 0.0), S::from_f64(f64::NAN));
+    let p: Vec3<S> = z.cast();
+    let bad = Vec3::new(S::ZERO, nan, S::ZERO);
+    let e = Error::NaN { triangle: None };
+    assert_eq!(Sweep::new(p, bad, S::ONE).unwrap_err(), e);
+    assert_eq!(Slider::new(nan).unwrap_err(), e);
+    let scene: Scene<S, 1> = Scene::new();
+    assert_eq!(move_and_slide(&scene, p, bad, S::ONE).unwrap_err(), e);
+    assert_eq!(e.to_string(), "a coordinate or radius is NaN");
+    let mut scene: Scene<S, 1> = Scene::new();
+    let t = Triangle::new(p, bad, v([1.0, 0.0, 0.0]));
+    assert_eq!(scene.push(t).unwrap_err(), Error::NaN { triangle: Some(0) });
+}
+
+/// Negative radius and a radius too small for the scalar give the value (and the limit).
+fn radius_errors_give_the_radius<S: Scalar>() {
+    let scene: Scene<S, 1> = Scene::new();
+    let z = v::<S>([0.0; 3]);
+    let e = move_and_slide(&scene, z, z, S::from_f64(-1.0)).unwrap_err();
+    assert_eq!(e, Error::NegativeRadius { value: -1.0 });
+    assert_eq!(e.to_string(), "the radius -1 is negative");
+    let tiny = S::EPSILON;
+    let e = move_and_slide(&scene, z, z, tiny).unwrap_err();
+    let min = ballcast::slide::min_radius(S::ZERO).to_f64();
+    assert_eq!(
+        e,
+        Error::RadiusTooSmall {
+            radius: tiny.to_f64(),
+            min
+        }
+    );
+    assert!(e.to_string().starts_with("the radius "), "{e}");
+}
+
+macro_rules! per_scalar {
+    ($($m:ident: $t:ty),*) => {$(mod $m {
+        #[allow(unused_imports)] // the fixed-point types, unused where $t is a float
+        use super::*;
+        #[test] fn push_of_degenerate_triangle_names_its_index() {
+            super::push_of_degenerate_triangle_names_its_index::<$t>()
+        }
+        #[test] fn full_gives_capacity() { super::full_gives_capacity::<$t>() }
+        #[test] fn out_of_range_vertex_gives_value_and_limit() {
+            super::out_of_range_vertex_gives_value_and_limit::<$t>()
+        }
+        #[test] fn radius_errors_give_the_radius() { super::radius_errors_give_the_radius::<$t>() }
+    })*};
+}
+per_scalar!(f32_: f32, f64_: f64, i16f16: I16F16, i32f32: I32F32);
+
+/// Fixed point has no NaN: only the floats can carry one in.
+#[test]
+fn nan_is_its_own_cause_f32() {
+    nan_is_its_own_cause::<f32>();
+}
+#[test]
+fn nan_is_its_own_cause_f64() {
+    nan_is_its_own_cause::<f64>();
+}
