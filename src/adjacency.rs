@@ -159,3 +159,17 @@ fn mix(mut z: u64) -> u64 {
     z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
     z ^ (z >> 31)
 }
+
+/// The Morton key of a point with coordinates below `2^21`: their bits interleaved, x lowest
+/// (each spread to every third bit by the usual shifts and masks).
+pub(crate) fn morton(q: [u64; 3]) -> u64 {
+    let spread = |v: u64| {
+        let mut x = v & 0x1f_ffff;
+        x = (x | x << 32) & 0x1f_0000_0000_ffff;
+        x = (x | x << 16) & 0x1f_0000_ff00_00ff;
+        x = (x | x << 8) & 0x100f_00f0_0f00_f00f;
+        x = (x | x << 4) & 0x10c3_0c30_c30c_30c3;
+        (x | x << 2) & 0x1249_2492_4924_9249
+    };
+    spread(q[0]) | spread(q[1]) << 1 | spread(q[2]) << 2
+}

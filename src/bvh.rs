@@ -15,30 +15,36 @@
 //! traversal on GPUs through compressed wide BVHs*, HPG 2017). Here the arithmetic is integer,
 //! so decoding is exact and the same on every target. A leaf is a run of at most [`LEAF`]
 //! consecutive triangles, referenced from its parent's child slot, whose top bits also carry the
-//! subtree's *seam class* (below). A node costs 44 bytes per about 12 triangles: 3.7 bytes per
-//! triangle, in every scalar.
+//! subtree's *seam class* (below). The boxes are stored bound by bound (the four children's
+//! minima in x, then in y, ...), so the traversal loads one bound of all four children at once.
+//! A node costs 44 bytes per about 12 triangles: 3.7 bytes per triangle, in every scalar.
 //!
 //! # Build
-//! The triangles are put in Morton order of their box centres (13 bits per axis, one scale for
-//! all three so a flat terrain's few height levels do not scatter it; ties by index), by one
-//! stable radix sort, as linear BVH builders do (Lauterbach et al., *Fast BVH construction on
-//! GPUs*, 2009; Karras, *Maximizing parallelism in the construction of BVHs, octrees, and k-d
-//! trees*, HPG 2012). Then top down, a node's run of triangles is cut into up to four runs, each
-//! (but the last) as long as a complete subtree one level down holds, so leaves are full and a
-//! node is shared by about `3 LEAF` triangles (Jolt's `AABBTreeBuilder` likewise gathers a binary
-//! tree's descendants into quad-tree nodes). Each level costs one pass to bound the
-//! children, so the build takes `O(N log N)` (the sort is `O(N)`), and the depth is at most
-//! `log4(N / LEAF) + 1`, which bounds the traversal stack. Keys and boxes are integers, so every
-//! decision is exact: the same triangles in the same order give the same nodes, byte for byte,
-//! on every target. Cuts by count in Morton order give up some of the quality of binned SAH
-//! (Wald, *On fast construction of SAH-based bounding volume hierarchies*, 2007, as tinybvh
-//! builds) for a guaranteed depth and a build several times faster; on a terrain, whose
-//! triangles are alike and spread evenly, they lose little.
+//! Top down, a node's triangles are split at the median of their box centres along the longest
+//! axis of the node's box, and each half again along its own longest axis, into up to four runs,
+//! each (but the last) as long as a complete subtree one level down holds, so leaves are full and
+//! a node is shared by about `3 LEAF` triangles (Jolt's `AABBTreeBuilder` likewise gathers a
+//! binary tree's descendants into quad-tree nodes). Splitting into equal counts along the
+//! longest axis is pbrt's *equal counts* method (Pharr, Jakob and Humphreys, *Physically Based
+//! Rendering*, 4th ed., 7.3); each split is a selection (`select_nth_unstable`, `O(n)`) on a key
+//! of the centre and the triangle's index, so each level costs `O(N)`, the build `O(N log N)`,
+//! and the depth is at most `log4(N / LEAF) + 1`, which bounds the traversal stack. Keys and
+//! boxes are integers and the order they define is total, so every split is exact: the same
+//! triangles in the same order give the same nodes, byte for byte, on every target, whatever
+//! algorithm makes the selection. Equal counts give up some of the quality of binned SAH (Wald,
+//! *On fast construction of SAH-based bounding volume hierarchies*, 2007, as tinybvh builds)
+//! for a guaranteed depth and a faster build; on a terrain, whose triangles are alike and
+//! spread evenly, they lose little. Cutting a Morton order into runs by count, as linear BVH
+//! builders do (Lauterbach et al., *Fast BVH construction on GPUs*, 2009), makes runs that
+//! straddle the Morton cells: on a 10^5-triangle terrain, short moves visit more nodes.
 //!
 //! # Traversal
 //! The segment from `p0` to `p1` is taken to grid units in `f64` once per query, with the
-//! reciprocal of its direction; each child box is decoded, grown, and clipped against the
-//! segment with the slab test (Kay and Kajiya, 1986), so no node needs a division. Children are
+//! reciprocal of its direction (`2^600` on an axis where the direction is below `2^-600`: the
+//! pad below covers the difference); each node takes the segment into its own byte steps per
+//! axis (`t = byte · 2^shift / d + (lo − p0) / d`), and its four child boxes, grown, are clipped
+//! against it with the slab test (Kay and Kajiya, 1986) side by side, bound by bound, without a
+//! branch or a division. Children are
 //! pushed farthest first, so the nearest is visited first, and a subtree is skipped when the
 //! segment enters its box after the reach of the contacts found so far (the earliest alpha plus
 //! the tie window).
@@ -61,7 +67,7 @@ mod build;
 mod traverse;
 
 pub use build::nodes_for;
-pub(crate) use build::{BuildError, MORTON_BITS, build, item, item_index, morton};
+pub(crate) use build::{BuildError, build, item, key_index};
 pub(crate) use traverse::{Segment, traverse};
 
 /// Most triangles in a leaf.
@@ -121,16 +127,17 @@ pub(crate) fn seam_class(all_active: bool, [x1, z1, x2]: [f64; 3]) -> u32 {
 
 /// A 4-wide node: child boxes quantized to bytes relative to this node's own box.
 ///
-/// Child `k < count` has the box `lo + (boxes[k][a] << shift[a])` to
-/// `lo + (boxes[k][3 + a] << shift[a])` per axis `a`, in grid cells, where `lo` is the node's
+/// Child `k < count` has the box `lo + (boxes[a][k] << shift[a])` to
+/// `lo + (boxes[3 + a][k] << shift[a])` per axis `a`, in grid cells, where `lo` is the node's
 /// box's minimum (known from its parent, or [`Grid`] for the root). `children[k]` is a node
 /// index, or with the top bit set a leaf: `first << 2 | (count - 1)` over the mesh's triangle
 /// slots `first .. first + count`.
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 pub struct Node {
-    /// Per child: minimum x, y, z, then maximum x, y, z, in steps of `2^shift`.
-    pub boxes: [[u8; 6]; 4],
+    /// Minimum x, y, z, then maximum x, y, z, each per child, in steps of `2^shift` (bound by
+    /// bound, so the traversal loads one bound of the four children at once).
+    pub boxes: [[u8; 4]; 6],
     /// Per axis: the step of the quantized boxes, `2^shift` grid cells.
     pub shift: [u8; 3],
     /// Children in use, 1 to 4.

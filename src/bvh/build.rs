@@ -1,5 +1,5 @@
-//! The build: Morton-ordered items cut into complete 4-wide subtrees (see the module docs of
-//! [`bvh`](super)).
+//! The build: items split at the median of their centres into complete 4-wide subtrees (see
+//! the module docs of [`bvh`](super)).
 
 use super::{CLASS_SHIFT, Cells, LEAF, LEAF_FLAG, MAX_CLASS, MAX_DEPTH, Node, STACK};
 
@@ -65,11 +65,6 @@ pub(crate) fn item((lo, hi): Cells, index: usize, class: u32) -> Item {
     ]
 }
 
-/// The index of an [`Item`].
-pub(crate) fn item_index(it: &Item) -> usize {
-    it[3] as u32 as usize
-}
-
 /// The box of an [`Item`].
 pub(crate) fn item_box(it: &Item) -> Cells {
     let lo = |w: u64| w as u32 as i32;
@@ -80,42 +75,70 @@ pub(crate) fn item_box(it: &Item) -> Cells {
     )
 }
 
-/// The union of the items' boxes.
-pub(crate) fn union(items: &[Item]) -> Cells {
+/// Bits of a key holding an item's index.
+const INDEX_BITS: u32 = 24;
+/// The index part of a key.
+const INDEX: u64 = (1 << INDEX_BITS) - 1;
+
+/// The index of the item a key refers to.
+pub(crate) fn key_index(key: u64) -> usize {
+    (key & INDEX) as usize
+}
+
+/// The union of the boxes of the items `keys` refer to, and their largest seam class.
+fn union(keys: &[u64], items: &[Item]) -> (Cells, u32) {
     let mut b = ([i32::MAX; 3], [i32::MIN; 3]);
-    for it in items {
+    let mut class = 0;
+    for it in keys.iter().filter_map(|&k| items.get(key_index(k))) {
         let (lo, hi) = item_box(it);
         for a in 0..3 {
             b.0[a] = b.0[a].min(lo[a]);
             b.1[a] = b.1[a].max(hi[a]);
         }
+        class = class.max((it[3] >> 32) as u32);
     }
-    b
+    (b, class)
 }
 
-/// Bits per axis of a Morton key.
-pub(crate) const MORTON_BITS: u32 = 13;
-
-/// The Morton key of a point with coordinates below `2^MORTON_BITS`: their bits interleaved,
-/// x lowest.
-pub(crate) fn morton(q: [u64; 3]) -> u64 {
-    let mut key = 0;
-    for bit in 0..MORTON_BITS {
-        for (a, &v) in q.iter().enumerate() {
-            key |= (v >> bit & 1) << (3 * bit + a as u32);
+/// Puts the `m` keys with the smallest centres on the longest axis of `bounds` (the lowest such
+/// axis on a tie) first: an object-median split. Each key is rewritten to twice the centre of
+/// its item's box on that axis (offset to be positive) above its index: a total order, so the
+/// split is the same whatever algorithm makes it.
+fn split(keys: &mut [u64], items: &[Item], m: usize, (lo, hi): Cells) {
+    if m == 0 || m >= keys.len() {
+        return;
+    }
+    let mut axis = 0;
+    for a in 1..3 {
+        if hi[a] as i64 - lo[a] as i64 > hi[axis] as i64 - lo[axis] as i64 {
+            axis = a;
         }
     }
-    key
+    for key in keys.iter_mut() {
+        let c = key_index(*key);
+        if let Some(it) = items.get(c) {
+            let (lo, hi) = item_box(it);
+            let twice = lo[axis] as i64 + hi[axis] as i64 + (1 << 34);
+            *key = (twice as u64) << INDEX_BITS | c as u64;
+        }
+    }
+    keys.select_nth_unstable(m);
 }
 
-/// Builds the tree over `items` (each a triangle's box, index and seam class, in Morton order)
-/// into `nodes`, the root's box being `root`. Returns the number of nodes used.
+/// Builds the tree over `items` (each a triangle's box, index and seam class) into `nodes`, the
+/// root's box being `root`. `keys` (one per item, any values) ends in leaf order: slot `s`
+/// holds item [`key_index`]`(keys[s])`. Returns the number of nodes used.
 pub(crate) fn build(
-    items: &mut [Item],
+    items: &[Item],
+    keys: &mut [u64],
     root: Cells,
     nodes: &mut [Node],
 ) -> Result<usize, BuildError> {
-    let n = items.len();
+    let n = items.len().min(keys.len());
+    let keys = &mut keys[..n];
+    for (c, key) in keys.iter_mut().enumerate() {
+        *key = c as u64;
+    }
     let needed = nodes_for(n);
     if nodes.len() < needed {
         return Err(BuildError::Nodes(needed));
@@ -131,9 +154,14 @@ pub(crate) fn build(
         if depth > MAX_DEPTH {
             return Err(BuildError::Depth);
         }
-        let range = &mut items[first..first + count];
-        // Up to four runs of the Morton order.
+        let range = &mut keys[first..first + count];
+        // Up to four runs: the two halves split at the median, each split again.
         let p = parts(count);
+        split(range, items, p[0] + p[1], (lo, hi));
+        let (left, right) = range.split_at_mut(p[0] + p[1]);
+        let (lb, rb) = (union(left, items).0, union(right, items).0);
+        split(left, items, p[0], lb);
+        split(right, items, p[2], rb);
         let bounds = [
             (0, p[0]),
             (p[0], p[0] + p[1]),
@@ -154,7 +182,7 @@ pub(crate) fn build(
                 continue;
             }
             let part = &mut range[s..e];
-            let (clo, chi) = union(part);
+            let ((clo, chi), class) = union(part, items);
             let k = node.count as usize;
             let mut dlo = [0; 3];
             let mut dhi = [0; 3];
@@ -163,19 +191,14 @@ pub(crate) fn build(
                 let step = 1i64 << sh;
                 let qlo = (clo[ax] as i64 - lo[ax] as i64) >> sh;
                 let qhi = (chi[ax] as i64 - lo[ax] as i64 + step - 1) >> sh;
-                node.boxes[k][ax] = qlo as u8;
-                node.boxes[k][3 + ax] = qhi as u8;
+                node.boxes[ax][k] = qlo as u8;
+                node.boxes[3 + ax][k] = qhi as u8;
                 dlo[ax] = lo[ax] + ((qlo as i32) << sh);
                 dhi[ax] = lo[ax] + ((qhi as i32) << sh);
             }
-            let class = part
-                .iter()
-                .map(|it| (it[3] >> 32) as u32)
-                .max()
-                .unwrap_or(0);
             let class = class.min(MAX_CLASS) << CLASS_SHIFT;
             if part.len() <= LEAF {
-                part.sort_unstable_by_key(item_index);
+                part.sort_unstable_by_key(|&k| k & INDEX);
                 node.children[k] =
                     LEAF_FLAG | class | ((first + s) as u32) << 2 | (part.len() - 1) as u32;
             } else {

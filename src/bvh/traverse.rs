@@ -17,7 +17,8 @@ struct Entry {
 /// The swept segment in grid units, with what every box test needs.
 pub(crate) struct Segment {
     q0: [f64; 3],
-    d: [f64; 3],
+    /// Per axis, the reciprocal of the segment's extent, `2^600` where that is below `2^-600`
+    /// (parallel to the slab, as good as: the pad covers the difference).
     inv: [f64; 3],
     /// How far (cells) every box is grown: the radius plus every rounding (module docs).
     pad: f64,
@@ -49,10 +50,10 @@ impl Segment {
         let seam = r / 64.0 + 4.0 * eps;
         let q0 = p0.map(|x| x * s);
         let d = d.map(|x| x * s);
+        let tiny = 1.0 / pow2(600);
         Self {
             q0,
-            d,
-            inv: d.map(|x| 1.0 / x),
+            inv: d.map(|x| if x.abs() > tiny { 1.0 / x } else { pow2(600) }),
             pad: pad * s + 2.0,
             seam: seam * s,
         }
@@ -60,61 +61,55 @@ impl Segment {
 
     /// Where the segment, over `[0, limit]`, enters each of the four child boxes of `node` (whose
     /// own minimum is `lo`), each grown by the pad and `2^class` seam margins of its child;
-    /// infinity where it misses. The four are computed side by side, lane by lane, so the
-    /// compiler can use vector registers; slots beyond `count` are computed and ignored.
+    /// infinity where it misses. The four are computed side by side, lane by lane and without
+    /// branches, so the compiler can use vector registers; slots beyond `count` are computed and
+    /// ignored.
     #[inline]
     fn enter4(&self, node: &Node, lo: [i32; 3], limit: f64) -> [f64; 4] {
-        let mut pad = [0.0f64; 4];
-        for (k, p) in pad.iter_mut().enumerate() {
+        let pad: [f64; 4] = core::array::from_fn(|k| {
             let class = ((node.children[k] & !LEAF_FLAG) >> CLASS_SHIFT).min(MAX_CLASS);
-            // 2^class, exactly.
-            *p = self.pad + self.seam * f64::from_bits(((1023 + class) as u64) << 52);
-        }
+            self.pad + self.seam * pow2(class)
+        });
         let (mut t0, mut t1) = ([0.0f64; 4], [limit; 4]);
-        for (a, &base) in lo.iter().enumerate() {
-            let sh = node.shift[a].min(31) as u32;
-            let at = |v: u8| base.wrapping_add((v as i32).wrapping_shl(sh)) as f64;
-            let near: [f64; 4] =
-                core::array::from_fn(|k| at(node.boxes[k][a]) - pad[k] - self.q0[a]);
-            let far: [f64; 4] =
-                core::array::from_fn(|k| at(node.boxes[k][3 + a]) + pad[k] - self.q0[a]);
-            let inv = self.inv[a];
-            if !inv.is_finite() {
-                // Parallel to the slab (or as good as): inside it all along, or never.
-                let d = self.d[a].abs();
-                for k in 0..4 {
-                    if near[k] > d || far[k] < -d {
-                        t0[k] = f64::INFINITY;
-                    }
-                }
-                continue;
-            }
-            let (first, second) = if inv > 0.0 { (near, far) } else { (far, near) };
+        for (a, (&inv, &base)) in self.inv.iter().zip(&lo).enumerate() {
+            // The side the segment enters a slab by, and the pad's sign there, as parameters.
+            let (first, second, signed) = if inv >= 0.0 {
+                (a, 3 + a, inv)
+            } else {
+                (3 + a, a, -inv)
+            };
+            // In the node's steps: t = byte * per_step + at_zero, each rounded within 2^-50 of
+            // the magnitudes involved (module docs).
+            let per_step = pow2(node.shift[a].min(31) as u32) * inv;
+            let at_zero = (base as f64 - self.q0[a]) * inv;
+            let (qa, qb) = (node.boxes[first], node.boxes[second]);
             for k in 0..4 {
-                let (ta, tb) = (first[k] * inv, second[k] * inv);
+                let grow = pad[k] * signed;
+                let ta = qa[k] as f64 * per_step + (at_zero - grow);
+                let tb = qb[k] as f64 * per_step + (at_zero + grow);
                 // Plain comparisons: a NaN (never expected) would only widen the interval.
-                if ta > t0[k] {
-                    t0[k] = ta;
-                }
-                if tb < t1[k] {
-                    t1[k] = tb;
-                }
+                t0[k] = if ta > t0[k] { ta } else { t0[k] };
+                t1[k] = if tb < t1[k] { tb } else { t1[k] };
             }
         }
         core::array::from_fn(|k| if t0[k] <= t1[k] { t0[k] } else { f64::INFINITY })
     }
 }
 
+/// `2^e` for `e <= 1023`, exactly.
+#[inline]
+fn pow2(e: u32) -> f64 {
+    f64::from_bits(((1023 + e.min(1023)) as u64) << 52)
+}
+
 /// Decodes child `k` of `node`, whose own box has minimum `lo`.
 #[inline]
 fn child_cells(node: &Node, k: usize, lo: [i32; 3]) -> Cells {
-    let q = node.boxes[k];
-    let at =
-        |a: usize, v: u8| lo[a].wrapping_add((v as i32).wrapping_shl(node.shift[a].min(31) as u32));
-    (
-        [at(0, q[0]), at(1, q[1]), at(2, q[2])],
-        [at(0, q[3]), at(1, q[4]), at(2, q[5])],
-    )
+    let at = |b: usize| {
+        let (a, v) = (b % 3, node.boxes[b][k & 3]);
+        lo[a].wrapping_add((v as i32).wrapping_shl(node.shift[a].min(31) as u32))
+    };
+    ([at(0), at(1), at(2)], [at(3), at(4), at(5)])
 }
 
 /// The triangle slots of a leaf reference: `first .. first + count`.
