@@ -21,22 +21,24 @@
 //!
 //! # Build
 //! Top down, a node's triangles are split at the median of their box centres along the longest
-//! axis of the node's box, and each half again along its own longest axis, into up to four runs,
-//! each (but the last) as long as a complete subtree one level down holds, so leaves are full and
-//! a node is shared by about `3 LEAF` triangles (Jolt's `AABBTreeBuilder` likewise gathers a
-//! binary tree's descendants into quad-tree nodes). Splitting into equal counts along the
-//! longest axis is pbrt's *equal counts* method (Pharr, Jakob and Humphreys, *Physically Based
-//! Rendering*, 4th ed., 7.3); each split is a selection (`select_nth_unstable`, `O(n)`) on a key
-//! of the centre and the triangle's index, so each level costs `O(N)`, the build `O(N log N)`,
-//! and the depth is at most `log4(N / LEAF) + 1`, which bounds the traversal stack. Keys and
-//! boxes are integers and the order they define is total, so every split is exact: the same
-//! triangles in the same order give the same nodes, byte for byte, on every target, whatever
-//! algorithm makes the selection. Equal counts give up some of the quality of binned SAH (Wald,
-//! *On fast construction of SAH-based bounding volume hierarchies*, 2007, as tinybvh builds)
-//! for a guaranteed depth and a faster build; on a terrain, whose triangles are alike and
-//! spread evenly, they lose little. Cutting a Morton order into runs by count, as linear BVH
-//! builders do (Lauterbach et al., *Fast BVH construction on GPUs*, 2009), makes runs that
-//! straddle the Morton cells: on a 10^5-triangle terrain, short moves visit more nodes.
+//! axis of the node's box, and each half again along its own longest axis (of the node's box cut
+//! at the median), into up to four runs, each (but the last) as long as a complete subtree one
+//! level down holds, so leaves are full and a node is shared by about `3 LEAF` triangles (Jolt's
+//! `AABBTreeBuilder` likewise gathers a binary tree's descendants into quad-tree nodes).
+//! Splitting into equal counts along the longest axis is pbrt's *equal counts* method (Pharr,
+//! Jakob and Humphreys, *Physically Based Rendering*, 4th ed., 7.3). Each triangle is one
+//! 64-bit key: its centre quantized to 13 bits per axis on one scale for the three axes, above
+//! its index; each split is a selection (`select_nth_unstable`, `O(n)`) by the centre on the axis,
+//! then the index. So each level costs `O(N)`, the build `O(N log N)`, and the depth is at most
+//! `log4(N / LEAF) + 1`, which bounds the traversal stack. Keys and boxes are integers and the
+//! order is total, so every split is exact: the same triangles in the same order give the same
+//! nodes, byte for byte, on every target, whatever algorithm makes the selection. Equal counts
+//! give up some of the quality of binned SAH (Wald, *On fast construction of SAH-based bounding
+//! volume hierarchies*, 2007, as tinybvh builds) for a guaranteed depth and a faster build; on a
+//! terrain, whose triangles are alike and spread evenly, they lose little. Cutting a Morton
+//! order into runs by count, as linear BVH builders do (Lauterbach et al., *Fast BVH
+//! construction on GPUs*, 2009), makes runs that straddle the Morton cells: on a 10^5-triangle
+//! terrain, short moves visit more nodes.
 //!
 //! # Traversal
 //! The segment from `p0` to `p1` is taken to grid units in `f64` once per query, with the
@@ -65,6 +67,8 @@
 
 mod build;
 mod traverse;
+
+use crate::{Scalar, Triangle};
 
 pub use build::nodes_for;
 pub(crate) use build::{BuildError, build, item, key_index};
@@ -174,6 +178,17 @@ impl Grid {
     pub(crate) fn exponent_for(largest: f64) -> i32 {
         let e = ((largest.to_bits() >> 52) & 0x7ff) as i32 - 1023;
         (e + 1 - 24).clamp(-900, 1000)
+    }
+
+    /// The bounding box of a triangle in world units, `f64`.
+    pub(crate) fn bounds<S: Scalar>(t: &Triangle<S>) -> ([f64; 3], [f64; 3]) {
+        let [p, q, r] = t.vertices().map(|v| v.to_array());
+        let lo = |a: S, b: S| if b < a { b } else { a };
+        let hi = |a: S, b: S| if b > a { b } else { a };
+        (
+            [0, 1, 2].map(|a| lo(lo(p[a], q[a]), r[a]).to_f64()),
+            [0, 1, 2].map(|a| hi(hi(p[a], q[a]), r[a]).to_f64()),
+        )
     }
 
     /// The cells of the box from `min` to `max` (world units, `min <= max`), rounded outward

@@ -184,14 +184,20 @@ impl<'a, S: Scalar> Mesh<'a, S> {
         if let Some(e) = checks.into_iter().flatten().next() {
             return Err(e);
         }
-        // Prepare, in input order, keeping the input index.
+        // Prepare, in input order, keeping the input index; the kept triangles' world bounds.
         let mut kept = 0;
+        let (mut wlo, mut whi) = ([f64::MAX; 3], [f64::MIN; 3]);
         for (index, t) in sources.iter().enumerate() {
             match StandardTriangle::new(t) {
                 Ok(st) => {
                     triangles[kept] = st;
                     order[kept] = index as u32;
                     kept += 1;
+                    let (lo, hi) = Grid::bounds(t);
+                    for a in 0..3 {
+                        wlo[a] = wlo[a].min(lo[a]);
+                        whi[a] = whi[a].max(hi[a]);
+                    }
                 }
                 Err(Error::Degenerate) if degenerates == Degenerates::Skip => {}
                 Err(error) => return Err(MeshError::Triangle { index, error }),
@@ -201,35 +207,14 @@ impl<'a, S: Scalar> Mesh<'a, S> {
             return Err(e);
         }
         let (triangles, order) = (&mut triangles[..kept], &mut order[..kept]);
-        // The grid, from the kept triangles' world bounds.
-        let corners = |c: usize| {
-            sources[order[c] as usize]
-                .vertices()
-                .map(|p| p.to_array().map(S::to_f64))
-        };
-        let bounds = |v: [[f64; 3]; 3]| {
-            let lo = [0, 1, 2].map(|a| v[0][a].min(v[1][a]).min(v[2][a]));
-            let hi = [0, 1, 2].map(|a| v[0][a].max(v[1][a]).max(v[2][a]));
-            (lo, hi)
-        };
-        let (mut wlo, mut whi) = ([f64::MAX; 3], [f64::MIN; 3]);
-        for c in 0..kept {
-            let (lo, hi) = bounds(corners(c));
-            for a in 0..3 {
-                wlo[a] = wlo[a].min(lo[a]);
-                whi[a] = whi[a].max(hi[a]);
-            }
-        }
         let largest = (0..3).fold(0.0f64, |m, a| m.max(wlo[a].abs()).max(whi[a].abs()));
         // Active edges, visited region by region: 16 regions per axis over the bounds' cube.
         let side = (0..3).fold(0.0f64, |m, a| m.max(whi[a] - wlo[a]));
+        let per_side = 16.0 / side;
         let region = |p: Vec3<S>| {
             let q = p.to_array().map(S::to_f64);
-            let r = [0, 1, 2].map(|a| {
-                let t = (q[a] - wlo[a]) / side * 16.0;
-                if t >= 0.0 { (t as u64).min(15) } else { 0 }
-            });
-            morton(r)
+            // Saturating: below zero (and NaN, for a mesh of one point) is region 0.
+            morton([0, 1, 2].map(|a| (((q[a] - wlo[a]) * per_side) as u32).min(15) as u64))
         };
         link_all(sources, order, triangles, &mut scratch[..6 * kept], region);
         let exponent = Grid::exponent_for(largest);
@@ -243,7 +228,7 @@ impl<'a, S: Scalar> Mesh<'a, S> {
         let (items, _) = items.as_chunks_mut::<4>();
         let (keys, rest) = rest.split_at_mut(kept);
         for (c, it) in items.iter_mut().enumerate() {
-            let (blo, bhi) = bounds(corners(c));
+            let (blo, bhi) = Grid::bounds(&sources[order[c] as usize]);
             let t = &triangles[c];
             let all_active = (0..3).all(|e| t.features().edge(e));
             let [_, b, c2] = t.vertices();

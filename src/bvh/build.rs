@@ -100,13 +100,36 @@ fn union(keys: &[u64], items: &[Item]) -> (Cells, u32) {
     (b, class)
 }
 
+/// Bits per axis of a key's quantized centre.
+const CENTRE_BITS: u32 = 13;
+
+/// The key of an item: its box's centre quantized to [`CENTRE_BITS`] per axis on one scale for
+/// the three axes (x above y above z), above its index.
+fn key_of(it: &Item, c: usize, (lo, hi): Cells) -> u64 {
+    let extent = (0..3).fold(0i64, |m, a| m.max(hi[a] as i64 - lo[a] as i64));
+    let (blo, bhi) = item_box(it);
+    let q = |a: usize| {
+        let twice = blo[a] as i64 + bhi[a] as i64 - 2 * lo[a] as i64;
+        ((twice.clamp(0, 2 * extent) << CENTRE_BITS) / (2 * extent + 1)) as u64
+    };
+    let centres = q(0) << (2 * CENTRE_BITS) | q(1) << CENTRE_BITS | q(2);
+    centres << INDEX_BITS | c as u64 & INDEX
+}
+
+/// The order of a median split on axis `a`: the quantized centre, then the index.
+fn on_axis(key: u64, a: usize) -> u64 {
+    let shift = INDEX_BITS + (2 - a as u32) * CENTRE_BITS;
+    (key >> shift & ((1 << CENTRE_BITS) - 1)) << INDEX_BITS | key & INDEX
+}
+
 /// Puts the `m` keys with the smallest centres on the longest axis of `bounds` (the lowest such
-/// axis on a tie) first: an object-median split. Each key is rewritten to twice the centre of
-/// its item's box on that axis (offset to be positive) above its index: a total order, so the
-/// split is the same whatever algorithm makes it.
-fn split(keys: &mut [u64], items: &[Item], m: usize, (lo, hi): Cells) {
+/// axis on a tie) first: an object-median split. The order is a total one (the quantized centre,
+/// then the index), so the split is the same whatever algorithm makes it. Returns `bounds` cut
+/// at the median: the two sides' boxes as far as choosing their own split axis needs. `root` is
+/// the box the centres were quantized in.
+fn split(keys: &mut [u64], m: usize, (lo, hi): Cells, root: Cells) -> (Cells, Cells) {
     if m == 0 || m >= keys.len() {
-        return;
+        return ((lo, hi), (lo, hi));
     }
     let mut axis = 0;
     for a in 1..3 {
@@ -114,15 +137,13 @@ fn split(keys: &mut [u64], items: &[Item], m: usize, (lo, hi): Cells) {
             axis = a;
         }
     }
-    for key in keys.iter_mut() {
-        let c = key_index(*key);
-        if let Some(it) = items.get(c) {
-            let (lo, hi) = item_box(it);
-            let twice = lo[axis] as i64 + hi[axis] as i64 + (1 << 34);
-            *key = (twice as u64) << INDEX_BITS | c as u64;
-        }
-    }
-    keys.select_nth_unstable(m);
+    let (_, &mut median, _) = keys.select_nth_unstable_by_key(m, |&k| on_axis(k, axis));
+    let extent = (0..3).fold(0i64, |m, a| m.max(root.1[a] as i64 - root.0[a] as i64));
+    let q = (on_axis(median, axis) >> INDEX_BITS) as i64;
+    let cut = root.0[axis] as i64 + ((q * (2 * extent + 1)) >> (CENTRE_BITS + 1));
+    let (mut left, mut right) = (hi, lo);
+    (left[axis], right[axis]) = (cut as i32, cut as i32);
+    ((lo, left), (right, hi))
 }
 
 /// Builds the tree over `items` (each a triangle's box, index and seam class) into `nodes`, the
@@ -136,8 +157,8 @@ pub(crate) fn build(
 ) -> Result<usize, BuildError> {
     let n = items.len().min(keys.len());
     let keys = &mut keys[..n];
-    for (c, key) in keys.iter_mut().enumerate() {
-        *key = c as u64;
+    for (c, (key, it)) in keys.iter_mut().zip(items).enumerate() {
+        *key = key_of(it, c, root);
     }
     let needed = nodes_for(n);
     if nodes.len() < needed {
@@ -157,11 +178,10 @@ pub(crate) fn build(
         let range = &mut keys[first..first + count];
         // Up to four runs: the two halves split at the median, each split again.
         let p = parts(count);
-        split(range, items, p[0] + p[1], (lo, hi));
+        let (lb, rb) = split(range, p[0] + p[1], (lo, hi), root);
         let (left, right) = range.split_at_mut(p[0] + p[1]);
-        let (lb, rb) = (union(left, items).0, union(right, items).0);
-        split(left, items, p[0], lb);
-        split(right, items, p[2], rb);
+        split(left, p[0], lb, root);
+        split(right, p[2], rb, root);
         let bounds = [
             (0, p[0]),
             (p[0], p[0] + p[1]),
