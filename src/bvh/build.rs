@@ -116,18 +116,34 @@ fn key_of(it: &Item, c: usize, (lo, hi): Cells) -> u64 {
     centres << INDEX_BITS | c as u64 & INDEX
 }
 
-/// The order of a median split on axis `a`: the quantized centre, then the index.
-fn on_axis(key: u64, a: usize) -> u64 {
-    let shift = INDEX_BITS + (2 - a as u32) * CENTRE_BITS;
-    (key >> shift & ((1 << CENTRE_BITS) - 1)) << INDEX_BITS | key & INDEX
+/// Rotates the centres of `keys`, whose top field is that of axis `*top`, so that the top one
+/// is axis `a`'s: then the keys' own order is by the centre on `a`, the other two, the index.
+fn rotate(keys: &mut [u64], top: &mut usize, a: usize) {
+    let k = (a + 3 - *top) as u32 % 3 * CENTRE_BITS;
+    if k == 0 {
+        return;
+    }
+    let width = 3 * CENTRE_BITS;
+    for key in keys.iter_mut() {
+        let c = *key >> INDEX_BITS;
+        let c = (c << k | c >> (width - k)) & ((1 << width) - 1);
+        *key = c << INDEX_BITS | *key & INDEX;
+    }
+    *top = a;
 }
 
 /// Puts the `m` keys with the smallest centres on the longest axis of `bounds` (the lowest such
-/// axis on a tie) first: an object-median split. The order is a total one (the quantized centre,
-/// then the index), so the split is the same whatever algorithm makes it. Returns `bounds` cut
-/// at the median: the two sides' boxes as far as choosing their own split axis needs. `root` is
-/// the box the centres were quantized in.
-fn split(keys: &mut [u64], m: usize, (lo, hi): Cells, root: Cells) -> (Cells, Cells) {
+/// axis on a tie) first: an object-median split. The order is a total one (the quantized
+/// centres, then the index), so the split is the same whatever algorithm makes it. Returns
+/// `bounds` cut at the median: the two sides' boxes as far as choosing their own split axis
+/// needs. `root` is the box the centres were quantized in; `top`, the axis on top of the keys.
+fn split(
+    keys: &mut [u64],
+    m: usize,
+    (lo, hi): Cells,
+    root: Cells,
+    top: &mut usize,
+) -> (Cells, Cells) {
     if m == 0 || m >= keys.len() {
         return ((lo, hi), (lo, hi));
     }
@@ -137,9 +153,10 @@ fn split(keys: &mut [u64], m: usize, (lo, hi): Cells, root: Cells) -> (Cells, Ce
             axis = a;
         }
     }
-    let (_, &mut median, _) = keys.select_nth_unstable_by_key(m, |&k| on_axis(k, axis));
+    rotate(keys, top, axis);
+    let (_, &mut median, _) = keys.select_nth_unstable(m);
     let extent = (0..3).fold(0i64, |m, a| m.max(root.1[a] as i64 - root.0[a] as i64));
-    let q = (on_axis(median, axis) >> INDEX_BITS) as i64;
+    let q = (median >> (INDEX_BITS + 2 * CENTRE_BITS)) as i64;
     let cut = root.0[axis] as i64 + ((q * (2 * extent + 1)) >> (CENTRE_BITS + 1));
     let (mut left, mut right) = (hi, lo);
     (left[axis], right[axis]) = (cut as i32, cut as i32);
@@ -167,21 +184,24 @@ pub(crate) fn build(
     if n == 0 {
         return Ok(0);
     }
-    // (node, first item, item count, node box, depth)
-    let mut work: heapless::Vec<(usize, usize, usize, Cells, usize), STACK> = heapless::Vec::new();
-    let _ = work.push((0, 0, n, root, 1));
+    // (node, first item, item count, node box, depth, the axis on top of its keys)
+    type Work = (usize, usize, usize, Cells, usize, usize);
+    let mut work: heapless::Vec<Work, STACK> = heapless::Vec::new();
+    let _ = work.push((0, 0, n, root, 1, 0));
     let mut next = 1;
-    while let Some((at, first, count, (lo, hi), depth)) = work.pop() {
+    while let Some((at, first, count, (lo, hi), depth, mut top)) = work.pop() {
         if depth > MAX_DEPTH {
             return Err(BuildError::Depth);
         }
         let range = &mut keys[first..first + count];
         // Up to four runs: the two halves split at the median, each split again.
         let p = parts(count);
-        let (lb, rb) = split(range, p[0] + p[1], (lo, hi), root);
+        let (lb, rb) = split(range, p[0] + p[1], (lo, hi), root, &mut top);
         let (left, right) = range.split_at_mut(p[0] + p[1]);
-        split(left, p[0], lb, root);
-        split(right, p[2], rb, root);
+        let (mut ltop, mut rtop) = (top, top);
+        split(left, p[0], lb, root, &mut ltop);
+        split(right, p[2], rb, root, &mut rtop);
+        let tops = [ltop, ltop, rtop, rtop];
         let bounds = [
             (0, p[0]),
             (p[0], p[0] + p[1]),
@@ -197,7 +217,7 @@ pub(crate) fn build(
             }
             node.shift[ax] = s as u8;
         }
-        for &(s, e) in &bounds {
+        for (&(s, e), &top) in bounds.iter().zip(&tops) {
             if s == e {
                 continue;
             }
@@ -229,7 +249,7 @@ pub(crate) fn build(
                 }
                 node.children[k] = class | child as u32;
                 if work
-                    .push((child, first + s, e - s, (dlo, dhi), depth + 1))
+                    .push((child, first + s, e - s, (dlo, dhi), depth + 1, top))
                     .is_err()
                 {
                     return Err(BuildError::Depth);
