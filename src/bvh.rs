@@ -43,21 +43,23 @@
 //!
 //! # Traversal
 //! The segment from `p0` to `p1` is taken to grid units in `f64` once per query, with the
-//! reciprocal of its direction (`2^600` on an axis where the direction is below `2^-600`: the
-//! pad below covers the difference); each node takes the segment into its own byte steps per
-//! axis (`t = byte · 2^shift / d + (lo − p0) / d`), and its four child boxes, grown, are clipped
-//! against it with the slab test (Kay and Kajiya, 1986) side by side, bound by bound, without a
-//! branch or a division. Children are
-//! pushed farthest first, so the nearest is visited first, and a subtree is skipped when the
-//! segment enters its box after the reach of the contacts found so far (the earliest alpha plus
-//! the tie window).
+//! reciprocal of its direction (`2^100` on an axis where the direction is below `2^-100`: the
+//! pad below covers the difference). Each node takes the segment into its own byte steps per
+//! axis, in `f64` (`t = byte · 2^shift / d + (lo − p0) / d`: a scale and an offset per axis),
+//! and clips its four child boxes, grown, against it with the slab test (Kay and Kajiya, 1986)
+//! in `f32`, four lanes side by side, bound by bound, without a branch or a division. Children
+//! are pushed farthest first, so the nearest is visited first, and a subtree is skipped when
+//! the segment enters its box after the reach of the contacts found so far (the earliest alpha
+//! plus the tie window); a leaf's triangles are cast in index order.
 //!
 //! Culling is conservative: a box is grown by `r`, by a bound on every rounding between the
 //! exact segment and what [`StandardTriangle::cast`](crate::StandardTriangle::cast) computes —
 //! `64 EPSILON` per unit of the path's length and of the coordinates' magnitude (floats;
 //! `1/1024` of that for fixed point, whose frames round to 30 or 62 fractional bits), `64
-//! EPSILON` absolute, `2^-40` of the magnitudes for the `f64` arithmetic here, two grid cells —
-//! and by `2^c` seam margins `r / 64 + 4 EPSILON`. The face test moves a triangle's inactive
+//! EPSILON` absolute, `2^-40` of the magnitudes for the `f64` arithmetic here, two grid cells,
+//! and for the `f32` node tests (a few roundings of `2^-24` of their terms) `2^-19` of twice the
+//! magnitudes in cells plus a node's largest extent (2^26 cells), with the whole pad grown by
+//! `2^-19` of itself — and by `2^c` seam margins `r / 64 + 4 EPSILON`. The face test moves a triangle's inactive
 //! edges out by one seam margin, so it reaches beyond the triangle by up to `1 / sin(θ/2)`
 //! margins at a corner of angle θ (`1 / sin θ` where only one of the corner's edges moved): far,
 //! for a sliver. Each child carries the class `c` of its subtree, with `2^c` at least twice the
