@@ -74,10 +74,12 @@ pub(crate) fn link_all<S: Scalar>(
         let h = v.map(hash);
         for (e, slot) in slots.iter_mut().enumerate() {
             let (a, b) = (v[e], v[(e + 1) % 3]);
-            let forward = lexical(a, b) == Ordering::Less;
             let (ha, hb) = (h[e], h[(e + 1) % 3]);
-            // The region of the edge's first vertex (in x, y, z order) above a 21-bit hash: edges
-            // meet in sorted order region by region, so their triangles are still in the cache.
+            // Any order of a pair's two vertices on which both its edges agree: by hash, and
+            // on equal hashes (equal or colliding points) by x, then y, then z.
+            let forward = ha < hb || (ha == hb && lexical(a, b) == Ordering::Less);
+            // The region of the edge's first vertex above a hash of the pair: edges meet in
+            // sorted order region by region, so their triangles are still in the cache.
             let first = if forward { a } else { b };
             let hash = mix(ha.min(hb) ^ ha.max(hb).rotate_left(32)) >> (64 - HASH_BITS);
             let key = (region(first) & 0xfff) << HASH_BITS | hash;
