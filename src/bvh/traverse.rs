@@ -186,7 +186,7 @@ pub(crate) fn traverse<S: Scalar>(
             }
         }
         for &(enter, k) in near[..n].iter().rev() {
-            let child = node.children[k];
+            let child = node.children[k & 3];
             let entry = Entry {
                 enter,
                 child,
