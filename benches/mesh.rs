@@ -14,66 +14,9 @@ use std::hint::black_box;
 
 mod inputs;
 mod peer;
+mod terrain;
 
-type P = [f64; 3];
-/// Sweeps per iteration of a query benchmark.
-const QUERIES: usize = 256;
-
-/// The terrain height at grid point `(i, j)`: within ±0.65.
-fn height(x: f64, z: f64) -> f64 {
-    0.4 * (0.7 * x).sin() * (0.5 * z).cos() + 0.25 * (1.3 * x + 0.9 * z).sin()
-}
-
-/// `2 w²` triangles over `[-w/2, w/2]²`, front faces up.
-fn heightfield(w: usize) -> Vec<[P; 3]> {
-    let half = w as f64 / 2.0;
-    let p = |i: usize, j: usize| {
-        let (x, z) = (i as f64 - half, j as f64 - half);
-        [x, height(x, z), z]
-    };
-    let mut out = Vec::with_capacity(2 * w * w);
-    for i in 0..w {
-        for j in 0..w {
-            let (a, b, c, d) = (p(i, j), p(i, j + 1), p(i + 1, j + 1), p(i + 1, j));
-            out.push([a, b, c]);
-            out.push([a, c, d]);
-        }
-    }
-    out
-}
-
-/// Short moves: radius 0.2–0.5, starting 0.1–0.3 above the ground, 0.5 forward and 0.5 down.
-fn short_moves(w: usize, rng: &mut inputs::Rng) -> Vec<(P, P, f64)> {
-    let half = w as f64 / 2.0 - 1.0;
-    (0..QUERIES)
-        .map(|_| {
-            let r = rng.range(0.2, 0.5);
-            let (x, z) = (rng.range(-half, half), rng.range(-half, half));
-            let p0 = [x, height(x, z) + r + rng.range(0.1, 0.3), z];
-            let a = rng.range(0.0, std::f64::consts::TAU);
-            (p0, [x + 0.5 * a.cos(), p0[1] - 0.5, z + 0.5 * a.sin()], r)
-        })
-        .collect()
-}
-
-/// Long casts: radius 0.1–0.5, from 2–5 above the ground to 1 below it, across 0.5–1 terrain
-/// widths horizontally.
-fn long_casts(w: usize, rng: &mut inputs::Rng) -> Vec<(P, P, f64)> {
-    let (width, half) = (w as f64, w as f64 / 2.0 - 0.5);
-    let mut out = Vec::new();
-    while out.len() < QUERIES {
-        let (x0, z0) = (rng.range(-half, half), rng.range(-half, half));
-        let (x1, z1) = (rng.range(-half, half), rng.range(-half, half));
-        let dist = ((x1 - x0).powi(2) + (z1 - z0).powi(2)).sqrt();
-        if dist < 0.5 * width || dist > width {
-            continue;
-        }
-        let p0 = [x0, height(x0, z0) + rng.range(2.0, 5.0), z0];
-        let p1 = [x1, height(x1, z1) - 1.0, z1];
-        out.push((p0, p1, rng.range(0.1, 0.5)));
-    }
-    out
-}
+use terrain::{QUERIES, heightfield};
 
 /// A mesh's buffers, allocated once.
 struct Buffers<S: Scalar> {
@@ -107,7 +50,7 @@ impl<S: Scalar> Buffers<S> {
     }
 }
 
-fn to_sweeps<S: Scalar>(raw: &[(P, P, f64)]) -> Vec<Sweep<S>> {
+fn to_sweeps<S: Scalar>(raw: &[inputs::Path]) -> Vec<Sweep<S>> {
     inputs::sweeps(raw)
 }
 
@@ -115,9 +58,8 @@ fn ours<S: Scalar>(c: &mut Criterion, name: &str, w: usize) {
     let src: Vec<Triangle<S>> = heightfield(w).iter().map(|&t| inputs::tri(t)).collect();
     let n = src.len();
     let mut buffers = Buffers::<S>::new(n);
-    let mut rng = inputs::Rng(0x4D45_5348 + w as u64);
-    let short = to_sweeps::<S>(&short_moves(w, &mut rng));
-    let long = to_sweeps::<S>(&long_casts(w, &mut rng));
+    let (short, long) = terrain::queries(w);
+    let (short, long) = (to_sweeps::<S>(&short), to_sweeps::<S>(&long));
 
     let mut g = c.benchmark_group(format!("mesh_build_{n}"));
     g.sample_size(10);
@@ -152,9 +94,7 @@ fn parry(c: &mut Criterion, w: usize) {
     });
     g.finish();
     let mesh = TriMesh::new(vertices.clone(), indices.clone()).unwrap();
-    let mut rng = inputs::Rng(0x4D45_5348 + w as u64);
-    let short = short_moves(w, &mut rng);
-    let long = long_casts(w, &mut rng);
+    let (short, long) = terrain::queries(w);
     for (what, raw) in [("short_move", &short), ("long_cast", &long)] {
         let sweeps = peer::sweeps(raw);
         let mut g = c.benchmark_group(format!("mesh_{what}_{n}"));

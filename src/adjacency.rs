@@ -36,6 +36,9 @@ pub(crate) fn deactivate<S: Scalar>(tri: &mut StandardTriangle<S>, edge: usize) 
 
 /// Bits of a record holding `triangle * 3 + edge`: room for 2^28 triangles.
 const SLOT_BITS: u32 = 30;
+/// Bits of an edge's hash in a record: with the region's 12 and the direction, the sort's key
+/// is four bytes.
+const HASH_BITS: u32 = 19;
 
 /// Applies [`hides`] to every pair of triangles sharing an edge with opposite winding, as
 /// [`Scene`](crate::Scene) does pair by pair, in `O(N + P)`: one record per edge, radix-sorted.
@@ -45,7 +48,7 @@ const SLOT_BITS: u32 = 30;
 /// buffer), and `triangles.len() <= 2^28`.
 /// `region` gives a 12-bit cell of a vertex (the key's top bits: nearby edges sort together, which
 /// keeps the triangles they touch in the cache). A record is the region of the edge's first
-/// vertex and a 21-bit hash of its unordered vertex pair, one bit for its direction and
+/// vertex and a 19-bit hash of its unordered vertex pair, one bit for its direction and
 /// the edge's slot; records with equal keys are adjacent once sorted, and only the pairs of
 /// opposite direction within such a run are compared, exactly. P counts those pairs: one per
 /// shared edge in a manifold mesh; `k * m` where `k` triangles run one way along an edge and `m`
@@ -71,20 +74,22 @@ pub(crate) fn link_all<S: Scalar>(
         let h = v.map(hash);
         for (e, slot) in slots.iter_mut().enumerate() {
             let (a, b) = (v[e], v[(e + 1) % 3]);
-            let forward = lexical(a, b) == Ordering::Less;
             let (ha, hb) = (h[e], h[(e + 1) % 3]);
-            // The region of the edge's first vertex (in x, y, z order) above a 21-bit hash: edges
-            // meet in sorted order region by region, so their triangles are still in the cache.
+            // Any order of a pair's two vertices on which both its edges agree: by hash, and
+            // on equal hashes (equal or colliding points) by x, then y, then z.
+            let forward = ha < hb || (ha == hb && lexical(a, b) == Ordering::Less);
+            // The region of the edge's first vertex above a hash of the pair: edges meet in
+            // sorted order region by region, so their triangles are still in the cache.
             let first = if forward { a } else { b };
-            let hash = mix(ha.min(hb) ^ mix(ha.max(hb))) >> (64 - 21);
-            let key = (region(first) & 0xfff) << 21 | hash;
+            let hash = mix(ha.min(hb) ^ ha.max(hb).rotate_left(32)) >> (64 - HASH_BITS);
+            let key = (region(first) & 0xfff) << HASH_BITS | hash;
             *slot = key << 31 | (forward as u64) << SLOT_BITS | (c * 3 + e) as u64;
         }
         used += 3;
     }
     let records = &mut records[..used];
     // Records are made in slot order, so a stable sort on the hash and direction sorts them fully.
-    crate::radix::sort(records, temp, SLOT_BITS, 64);
+    crate::radix::sort(records, temp, SLOT_BITS, SLOT_BITS + 1 + 12 + HASH_BITS);
     let mut start = 0;
     while start < records.len() {
         let key = records[start] >> 31;
@@ -150,7 +155,7 @@ fn lexical<S: Scalar>(a: Vec3<S>, b: Vec3<S>) -> Ordering {
 /// A hash of a point's exact value: equal points (`-0.0 == 0.0` included) hash equal.
 fn hash<S: Scalar>(p: Vec3<S>) -> u64 {
     let bits = |s: S| (s.to_f64() + 0.0).to_bits();
-    mix(bits(p.x) ^ mix(bits(p.y) ^ mix(bits(p.z))))
+    mix(bits(p.x) ^ bits(p.y).rotate_left(21) ^ bits(p.z).rotate_left(42))
 }
 
 /// SplitMix64's finaliser (Steele, Lea and Flood, 2014): a fixed, portable bit mixer.
@@ -158,4 +163,18 @@ fn mix(mut z: u64) -> u64 {
     z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
     z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
     z ^ (z >> 31)
+}
+
+/// The Morton key of a point with coordinates below `2^21`: their bits interleaved, x lowest
+/// (each spread to every third bit by the usual shifts and masks).
+pub(crate) fn morton(q: [u64; 3]) -> u64 {
+    let spread = |v: u64| {
+        let mut x = v & 0x1f_ffff;
+        x = (x | x << 32) & 0x1f_0000_0000_ffff;
+        x = (x | x << 16) & 0x1f_0000_ff00_00ff;
+        x = (x | x << 8) & 0x100f_00f0_0f00_f00f;
+        x = (x | x << 4) & 0x10c3_0c30_c30c_30c3;
+        (x | x << 2) & 0x1249_2492_4924_9249
+    };
+    spread(q[0]) | spread(q[1]) << 1 | spread(q[2]) << 2
 }

@@ -15,40 +15,51 @@
 //! traversal on GPUs through compressed wide BVHs*, HPG 2017). Here the arithmetic is integer,
 //! so decoding is exact and the same on every target. A leaf is a run of at most [`LEAF`]
 //! consecutive triangles, referenced from its parent's child slot, whose top bits also carry the
-//! subtree's *seam class* (below). A node costs 44 bytes per about 12 triangles: 3.7 bytes per
-//! triangle, in every scalar.
+//! subtree's *seam class* (below). The boxes are stored bound by bound (the four children's
+//! minima in x, then in y, ...), so the traversal loads one bound of all four children at once.
+//! A node costs 44 bytes per about 12 triangles: 3.7 bytes per triangle, in every scalar.
 //!
 //! # Build
-//! The triangles are put in Morton order of their box centres (13 bits per axis, one scale for
-//! all three so a flat terrain's few height levels do not scatter it; ties by index), by one
-//! stable radix sort, as linear BVH builders do (Lauterbach et al., *Fast BVH construction on
-//! GPUs*, 2009; Karras, *Maximizing parallelism in the construction of BVHs, octrees, and k-d
-//! trees*, HPG 2012). Then top down, a node's run of triangles is cut into up to four runs, each
-//! (but the last) as long as a complete subtree one level down holds, so leaves are full and a
-//! node is shared by about `3 LEAF` triangles (Jolt's `AABBTreeBuilder` likewise gathers a binary
-//! tree's descendants into quad-tree nodes). Each level costs one pass to bound the
-//! children, so the build takes `O(N log N)` (the sort is `O(N)`), and the depth is at most
-//! `log4(N / LEAF) + 1`, which bounds the traversal stack. Keys and boxes are integers, so every
-//! decision is exact: the same triangles in the same order give the same nodes, byte for byte,
-//! on every target. Cuts by count in Morton order give up some of the quality of binned SAH
-//! (Wald, *On fast construction of SAH-based bounding volume hierarchies*, 2007, as tinybvh
-//! builds) for a guaranteed depth and a build several times faster; on a terrain, whose
-//! triangles are alike and spread evenly, they lose little.
+//! Top down, a node's triangles are split at the median of their box centres along the longest
+//! axis of the node's box, and each half again along its own longest axis (of the node's box cut
+//! at the median), into up to four runs, each (but the last) as long as a complete subtree one
+//! level down holds, so leaves are full and a node is shared by about `3 LEAF` triangles (Jolt's
+//! `AABBTreeBuilder` likewise gathers a binary tree's descendants into quad-tree nodes).
+//! Splitting into equal counts along the longest axis is pbrt's *equal counts* method (Pharr,
+//! Jakob and Humphreys, *Physically Based Rendering*, 4th ed., 7.3). Each triangle is one
+//! 64-bit key: its centre quantized to 13 bits per axis on one scale for the three axes, above
+//! its index; each split rotates the split axis's centre to the top of the keys and selects
+//! (`select_nth_unstable`, `O(n)`) by the whole key: the centre on that axis, the other two, the
+//! index. So each level costs `O(N)`, the build `O(N log N)`, and the depth is at most
+//! `log4(N / LEAF) + 1`, which bounds the traversal stack. Keys and boxes are integers and the
+//! order is total, so every split is exact: the same triangles in the same order give the same
+//! nodes, byte for byte, on every target, whatever algorithm makes the selection. Equal counts
+//! give up some of the quality of binned SAH (Wald, *On fast construction of SAH-based bounding
+//! volume hierarchies*, 2007, as tinybvh builds) for a guaranteed depth and a faster build; on a
+//! terrain, whose triangles are alike and spread evenly, they lose little. Cutting a Morton
+//! order into runs by count, as linear BVH builders do (Lauterbach et al., *Fast BVH
+//! construction on GPUs*, 2009), makes runs that straddle the Morton cells: on a 10^5-triangle
+//! terrain, short moves visit more nodes.
 //!
 //! # Traversal
 //! The segment from `p0` to `p1` is taken to grid units in `f64` once per query, with the
-//! reciprocal of its direction; each child box is decoded, grown, and clipped against the
-//! segment with the slab test (Kay and Kajiya, 1986), so no node needs a division. Children are
-//! pushed farthest first, so the nearest is visited first, and a subtree is skipped when the
-//! segment enters its box after the reach of the contacts found so far (the earliest alpha plus
-//! the tie window).
+//! reciprocal of its direction (`2^100` on an axis where the direction is below `2^-100`: the
+//! pad below covers the difference). Each node takes the segment into its own byte steps per
+//! axis, in `f64` (`t = byte · 2^shift / d + (lo − p0) / d`: a scale and an offset per axis),
+//! and clips its four child boxes, grown, against it with the slab test (Kay and Kajiya, 1986)
+//! in `f32`, four lanes side by side, bound by bound, without a branch or a division. Children
+//! are pushed farthest first, so the nearest is visited first, and a subtree is skipped when
+//! the segment enters its box after the reach of the contacts found so far (the earliest alpha
+//! plus the tie window); a leaf's triangles are cast in index order.
 //!
 //! Culling is conservative: a box is grown by `r`, by a bound on every rounding between the
 //! exact segment and what [`StandardTriangle::cast`](crate::StandardTriangle::cast) computes —
 //! `64 EPSILON` per unit of the path's length and of the coordinates' magnitude (floats;
 //! `1/1024` of that for fixed point, whose frames round to 30 or 62 fractional bits), `64
-//! EPSILON` absolute, `2^-40` of the magnitudes for the `f64` arithmetic here, two grid cells —
-//! and by `2^c` seam margins `r / 64 + 4 EPSILON`. The face test moves a triangle's inactive
+//! EPSILON` absolute, `2^-40` of the magnitudes for the `f64` arithmetic here, two grid cells,
+//! and for the `f32` node tests (a few roundings of `2^-24` of their terms) `2^-19` of twice the
+//! magnitudes in cells plus a node's largest extent (2^26 cells), with the whole pad grown by
+//! `2^-19` of itself — and by `2^c` seam margins `r / 64 + 4 EPSILON`. The face test moves a triangle's inactive
 //! edges out by one seam margin, so it reaches beyond the triangle by up to `1 / sin(θ/2)`
 //! margins at a corner of angle θ (`1 / sin θ` where only one of the corner's edges moved): far,
 //! for a sliver. Each child carries the class `c` of its subtree, with `2^c` at least twice the
@@ -60,8 +71,10 @@
 mod build;
 mod traverse;
 
+use crate::{Scalar, Triangle};
+
 pub use build::nodes_for;
-pub(crate) use build::{BuildError, MORTON_BITS, build, item, item_index, morton};
+pub(crate) use build::{BuildError, build, item, key_index};
 pub(crate) use traverse::{Segment, rounding_pad, traverse};
 
 /// Most triangles in a leaf.
@@ -121,16 +134,17 @@ pub(crate) fn seam_class(all_active: bool, [x1, z1, x2]: [f64; 3]) -> u32 {
 
 /// A 4-wide node: child boxes quantized to bytes relative to this node's own box.
 ///
-/// Child `k < count` has the box `lo + (boxes[k][a] << shift[a])` to
-/// `lo + (boxes[k][3 + a] << shift[a])` per axis `a`, in grid cells, where `lo` is the node's
+/// Child `k < count` has the box `lo + (boxes[a][k] << shift[a])` to
+/// `lo + (boxes[3 + a][k] << shift[a])` per axis `a`, in grid cells, where `lo` is the node's
 /// box's minimum (known from its parent, or [`Grid`] for the root). `children[k]` is a node
 /// index, or with the top bit set a leaf: `first << 2 | (count - 1)` over the mesh's triangle
 /// slots `first .. first + count`.
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 pub struct Node {
-    /// Per child: minimum x, y, z, then maximum x, y, z, in steps of `2^shift`.
-    pub boxes: [[u8; 6]; 4],
+    /// Minimum x, y, z, then maximum x, y, z, each per child, in steps of `2^shift` (bound by
+    /// bound, so the traversal loads one bound of the four children at once).
+    pub boxes: [[u8; 4]; 6],
     /// Per axis: the step of the quantized boxes, `2^shift` grid cells.
     pub shift: [u8; 3],
     /// Children in use, 1 to 4.
@@ -167,6 +181,17 @@ impl Grid {
     pub(crate) fn exponent_for(largest: f64) -> i32 {
         let e = ((largest.to_bits() >> 52) & 0x7ff) as i32 - 1023;
         (e + 1 - 24).clamp(-900, 1000)
+    }
+
+    /// The bounding box of a triangle in world units, `f64`.
+    pub(crate) fn bounds<S: Scalar>(t: &Triangle<S>) -> ([f64; 3], [f64; 3]) {
+        let [p, q, r] = t.vertices().map(|v| v.to_array());
+        let lo = |a: S, b: S| if b < a { b } else { a };
+        let hi = |a: S, b: S| if b > a { b } else { a };
+        (
+            [0, 1, 2].map(|a| lo(lo(p[a], q[a]), r[a]).to_f64()),
+            [0, 1, 2].map(|a| hi(hi(p[a], q[a]), r[a]).to_f64()),
+        )
     }
 
     /// The cells of the box from `min` to `max` (world units, `min <= max`), rounded outward

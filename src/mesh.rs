@@ -1,7 +1,7 @@
 //! [`Mesh`]: many triangles behind a [`bvh`], borrowed from wherever they live (a
 //! `static` in flash, a caller's buffer, `Vec`s on a PC), answering exactly as a linear scan.
 
-use crate::adjacency::link_all;
+use crate::adjacency::{link_all, morton};
 use crate::bvh::{self, BuildError, Grid, MAX_TRIANGLES, Node, Segment};
 use crate::merge::earliest;
 use crate::{Error, Features, Geometry, Parts, Scalar, SceneHit, StandardTriangle, Sweep};
@@ -184,14 +184,20 @@ impl<'a, S: Scalar> Mesh<'a, S> {
         if let Some(e) = checks.into_iter().flatten().next() {
             return Err(e);
         }
-        // Prepare, in input order, keeping the input index.
+        // Prepare, in input order, keeping the input index; the kept triangles' world bounds.
         let mut kept = 0;
+        let (mut wlo, mut whi) = ([f64::MAX; 3], [f64::MIN; 3]);
         for (index, t) in sources.iter().enumerate() {
             match StandardTriangle::new(t) {
                 Ok(st) => {
                     triangles[kept] = st;
                     order[kept] = index as u32;
                     kept += 1;
+                    let (lo, hi) = Grid::bounds(t);
+                    for a in 0..3 {
+                        wlo[a] = wlo[a].min(lo[a]);
+                        whi[a] = whi[a].max(hi[a]);
+                    }
                 }
                 Err(e) if e.is_degenerate() && degenerates == Degenerates::Skip => {}
                 Err(e) => {
@@ -206,35 +212,14 @@ impl<'a, S: Scalar> Mesh<'a, S> {
             return Err(e);
         }
         let (triangles, order) = (&mut triangles[..kept], &mut order[..kept]);
-        // The grid, from the kept triangles' world bounds.
-        let corners = |c: usize| {
-            sources[order[c] as usize]
-                .vertices()
-                .map(|p| p.to_array().map(S::to_f64))
-        };
-        let bounds = |v: [[f64; 3]; 3]| {
-            let lo = [0, 1, 2].map(|a| v[0][a].min(v[1][a]).min(v[2][a]));
-            let hi = [0, 1, 2].map(|a| v[0][a].max(v[1][a]).max(v[2][a]));
-            (lo, hi)
-        };
-        let (mut wlo, mut whi) = ([f64::MAX; 3], [f64::MIN; 3]);
-        for c in 0..kept {
-            let (lo, hi) = bounds(corners(c));
-            for a in 0..3 {
-                wlo[a] = wlo[a].min(lo[a]);
-                whi[a] = whi[a].max(hi[a]);
-            }
-        }
         let largest = (0..3).fold(0.0f64, |m, a| m.max(wlo[a].abs()).max(whi[a].abs()));
         // Active edges, visited region by region: 16 regions per axis over the bounds' cube.
         let side = (0..3).fold(0.0f64, |m, a| m.max(whi[a] - wlo[a]));
+        let per_side = 16.0 / side;
         let region = |p: Vec3<S>| {
             let q = p.to_array().map(S::to_f64);
-            let r = [0, 1, 2].map(|a| {
-                let t = (q[a] - wlo[a]) / side * 16.0;
-                if t >= 0.0 { (t as u64).min(15) } else { 0 }
-            });
-            bvh::morton(r)
+            // Saturating: below zero (and NaN, for a mesh of one point) is region 0.
+            morton([0, 1, 2].map(|a| (((q[a] - wlo[a]) * per_side) as u32).min(15) as u64))
         };
         link_all(sources, order, triangles, &mut scratch[..6 * kept], region);
         let exponent = Grid::exponent_for(largest);
@@ -243,26 +228,12 @@ impl<'a, S: Scalar> Mesh<'a, S> {
         } else {
             Grid::cells(exponent, wlo, whi)
         };
-        // Morton order of the boxes' centres, ties by index (one radix sort). One scale for the
-        // three axes (cubic cells): a flat terrain's few height levels do not split its order.
-        let extent = (0..3).fold(0i64, |m, a| m.max(hi[a] as i64 - lo[a] as i64));
-        let (keys, rest) = scratch.split_at_mut(kept);
-        let (temp, rest) = rest.split_at_mut(kept);
-        for (c, key) in keys.iter_mut().enumerate() {
-            let (blo, bhi) = bounds(corners(c));
-            let (clo, chi) = Grid::cells(exponent, blo, bhi);
-            let q = [0, 1, 2].map(|a| {
-                let centre = clo[a] as i64 + chi[a] as i64 - 2 * lo[a] as i64;
-                ((centre << bvh::MORTON_BITS) / (2 * extent + 1)) as u64
-            });
-            *key = bvh::morton(q) << 24 | c as u64;
-        }
-        crate::radix::sort(keys, temp, 24, 64);
-        let (items, _) = rest.as_chunks_mut::<4>();
-        let items = &mut items[..kept];
-        for (it, key) in items.iter_mut().zip(keys.iter()) {
-            let c = (key & 0xff_ffff) as usize;
-            let (blo, bhi) = bounds(corners(c));
+        // Scratch: the items (four words each), the build's keys, the old order.
+        let (items, rest) = scratch.split_at_mut(4 * kept);
+        let (items, _) = items.as_chunks_mut::<4>();
+        let (keys, rest) = rest.split_at_mut(kept);
+        for (c, it) in items.iter_mut().enumerate() {
+            let (blo, bhi) = Grid::bounds(&sources[order[c] as usize]);
             let t = &triangles[c];
             let all_active = (0..3).all(|e| t.features().edge(e));
             let [_, b, c2] = t.vertices();
@@ -270,7 +241,7 @@ impl<'a, S: Scalar> Mesh<'a, S> {
             let class = bvh::seam_class(all_active, shape);
             *it = bvh::item(Grid::cells(exponent, blo, bhi), c, class);
         }
-        let used = bvh::build(items, (lo, hi), nodes).map_err(|e| match e {
+        let used = bvh::build(items, keys, (lo, hi), nodes).map_err(|e| match e {
             BuildError::Nodes(needed) => MeshError::Capacity {
                 buffer: Buffer::Nodes,
                 needed,
@@ -278,23 +249,25 @@ impl<'a, S: Scalar> Mesh<'a, S> {
             BuildError::Depth => MeshError::TooMany,
         })?;
 
-        // Into leaf order: slot s takes compact triangle items[s][3].
-        for it in items.iter_mut() {
-            it[1] = order[bvh::item_index(it)] as u64;
-            it[0] = 0; // not yet placed
+        // Into leaf order: slot s takes compact triangle key_index(keys[s]).
+        let old = &mut rest[..kept];
+        for (o, &i) in old.iter_mut().zip(order.iter()) {
+            *o = i as u64;
         }
-        for (s, it) in items.iter().enumerate() {
-            order[s] = it[1] as u32;
+        for (i, &k) in order.iter_mut().zip(keys.iter()) {
+            *i = old[bvh::key_index(k)] as u32;
         }
+        // Along each cycle of the permutation, marking the slots placed.
+        const PLACED: u64 = 1 << 63;
         for start in 0..kept {
-            if items[start][0] != 0 {
+            if keys[start] & PLACED != 0 {
                 continue;
             }
             let held = triangles[start];
             let mut s = start;
             loop {
-                items[s][0] = 1;
-                let from = bvh::item_index(&items[s]);
+                keys[s] |= PLACED;
+                let from = bvh::key_index(keys[s]);
                 if from == start {
                     triangles[s] = held;
                     break;

@@ -1,6 +1,5 @@
 //! A stable least-significant-digit radix sort of `u64` keys: `O(n)` per 8-bit digit, no
-//! comparisons, the same result on every target. The mesh build sorts its edge records and its
-//! Morton keys with it.
+//! comparisons, the same result on every target. The mesh build sorts its edge records with it.
 
 /// Sorts `keys` by bits `from..to` (stable: keys equal there keep their order), using `temp`
 /// (at least as long as `keys`) as the other buffer. Digits of 8 bits; a digit on which every key

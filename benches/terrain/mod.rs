@@ -1,11 +1,13 @@
-//! The terrain of the mesh and heightfield benches and their two kinds of sweep.
+//! The terrain inputs of `benches/mesh.rs`, shared with `examples/callgrind_mesh.rs` so that
+//! time and instruction counts are measured on the same sweeps: a bumpy heightfield (1-unit
+//! cells, heights within ±0.65 from a fixed sin/cos formula, front faces up), short moves and
+//! long casts over it; and the same terrain as one level in every form's inputs (`Level`), for
+//! the heightfield and compact-mesh benches.
 #![allow(dead_code)] // each bench and example uses a different part
 
-use crate::inputs::Rng;
+use super::inputs::{P, Path, Rng};
 
-pub type P = [f64; 3];
-
-/// Sweeps per iteration of a query benchmark.
+/// Sweeps per query benchmark.
 pub const QUERIES: usize = 256;
 
 /// The terrain height at `(x, z)`: within ±0.65.
@@ -13,8 +15,26 @@ pub fn height(x: f64, z: f64) -> f64 {
     0.4 * (0.7 * x).sin() * (0.5 * z).cos() + 0.25 * (1.3 * x + 0.9 * z).sin()
 }
 
+/// `2 w²` triangles over `[-w/2, w/2]²`, front faces up.
+pub fn heightfield(w: usize) -> Vec<[P; 3]> {
+    let half = w as f64 / 2.0;
+    let p = |i: usize, j: usize| {
+        let (x, z) = (i as f64 - half, j as f64 - half);
+        [x, height(x, z), z]
+    };
+    let mut out = Vec::with_capacity(2 * w * w);
+    for i in 0..w {
+        for j in 0..w {
+            let (a, b, c, d) = (p(i, j), p(i, j + 1), p(i + 1, j + 1), p(i + 1, j));
+            out.push([a, b, c]);
+            out.push([a, c, d]);
+        }
+    }
+    out
+}
+
 /// Short moves: radius 0.2–0.5, starting 0.1–0.3 above the ground, 0.5 forward and 0.5 down.
-pub fn short_moves(w: usize, rng: &mut Rng) -> Vec<(P, P, f64)> {
+pub fn short_moves(w: usize, rng: &mut Rng) -> Vec<Path> {
     let half = w as f64 / 2.0 - 1.0;
     (0..QUERIES)
         .map(|_| {
@@ -29,7 +49,7 @@ pub fn short_moves(w: usize, rng: &mut Rng) -> Vec<(P, P, f64)> {
 
 /// Long casts: radius 0.1–0.5, from 2–5 above the ground to 1 below it, across 0.5–1 terrain
 /// widths horizontally.
-pub fn long_casts(w: usize, rng: &mut Rng) -> Vec<(P, P, f64)> {
+pub fn long_casts(w: usize, rng: &mut Rng) -> Vec<Path> {
     let (width, half) = (w as f64, w as f64 / 2.0 - 0.5);
     let mut out = Vec::new();
     while out.len() < QUERIES {
@@ -44,6 +64,15 @@ pub fn long_casts(w: usize, rng: &mut Rng) -> Vec<(P, P, f64)> {
         out.push((p0, p1, rng.range(0.1, 0.5)));
     }
     out
+}
+
+/// The sweeps of a terrain of width `w`: short moves, then long casts (one generator, seeded by
+/// the width).
+pub fn queries(w: usize) -> (Vec<Path>, Vec<Path>) {
+    let mut rng = Rng(0x4D45_5348 + w as u64);
+    let short = short_moves(w, &mut rng);
+    let long = long_casts(w, &mut rng);
+    (short, long)
 }
 
 /// The terrain as one level in every form's inputs: `w × w` cells of side 1 centred on the
@@ -110,7 +139,7 @@ impl<S: ballcast::Scalar> Level<S> {
         cells: &'a mut [u8],
     ) -> ballcast::Heightfield<'a, S> {
         let half = w as f64 / 2.0;
-        let origin = crate::inputs::v::<S>([-half, 0.0, -half]);
+        let origin = super::inputs::v::<S>([-half, 0.0, -half]);
         let unit = S::from_f64(1.0 / 1024.0);
         let n = w as u32;
         ballcast::Heightfield::build(origin, S::ONE, unit, n, n, heights, |_, _| false, cells)
@@ -119,7 +148,7 @@ impl<S: ballcast::Scalar> Level<S> {
 
     pub fn heightfield(&self) -> ballcast::Heightfield<'_, S> {
         let half = self.w as f64 / 2.0;
-        let origin = crate::inputs::v::<S>([-half, 0.0, -half]);
+        let origin = super::inputs::v::<S>([-half, 0.0, -half]);
         let (unit, n) = (S::from_f64(1.0 / 1024.0), self.w as u32);
         ballcast::Heightfield::from_parts(
             origin,

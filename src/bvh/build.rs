@@ -1,5 +1,5 @@
-//! The build: Morton-ordered items cut into complete 4-wide subtrees (see the module docs of
-//! [`bvh`](super)).
+//! The build: items split at the median of their centres into complete 4-wide subtrees (see
+//! the module docs of [`bvh`](super)).
 
 use super::{CLASS_SHIFT, Cells, LEAF, LEAF_FLAG, MAX_CLASS, MAX_DEPTH, Node, STACK};
 
@@ -65,11 +65,6 @@ pub(crate) fn item((lo, hi): Cells, index: usize, class: u32) -> Item {
     ]
 }
 
-/// The index of an [`Item`].
-pub(crate) fn item_index(it: &Item) -> usize {
-    it[3] as u32 as usize
-}
-
 /// The box of an [`Item`].
 pub(crate) fn item_box(it: &Item) -> Cells {
     let lo = |w: u64| w as u32 as i32;
@@ -80,42 +75,108 @@ pub(crate) fn item_box(it: &Item) -> Cells {
     )
 }
 
-/// The union of the items' boxes.
-pub(crate) fn union(items: &[Item]) -> Cells {
+/// Bits of a key holding an item's index.
+const INDEX_BITS: u32 = 24;
+/// The index part of a key.
+const INDEX: u64 = (1 << INDEX_BITS) - 1;
+
+/// The index of the item a key refers to.
+pub(crate) fn key_index(key: u64) -> usize {
+    (key & INDEX) as usize
+}
+
+/// The union of the boxes of the items `keys` refer to, and their largest seam class.
+fn union(keys: &[u64], items: &[Item]) -> (Cells, u32) {
     let mut b = ([i32::MAX; 3], [i32::MIN; 3]);
-    for it in items {
+    let mut class = 0;
+    for it in keys.iter().filter_map(|&k| items.get(key_index(k))) {
         let (lo, hi) = item_box(it);
         for a in 0..3 {
             b.0[a] = b.0[a].min(lo[a]);
             b.1[a] = b.1[a].max(hi[a]);
         }
+        class = class.max((it[3] >> 32) as u32);
     }
-    b
+    (b, class)
 }
 
-/// Bits per axis of a Morton key.
-pub(crate) const MORTON_BITS: u32 = 13;
+/// Bits per axis of a key's quantized centre.
+const CENTRE_BITS: u32 = 13;
 
-/// The Morton key of a point with coordinates below `2^MORTON_BITS`: their bits interleaved,
-/// x lowest.
-pub(crate) fn morton(q: [u64; 3]) -> u64 {
-    let mut key = 0;
-    for bit in 0..MORTON_BITS {
-        for (a, &v) in q.iter().enumerate() {
-            key |= (v >> bit & 1) << (3 * bit + a as u32);
+/// The key of an item: its box's centre quantized to [`CENTRE_BITS`] per axis on one scale for
+/// the three axes (x above y above z), above its index.
+fn key_of(it: &Item, c: usize, (lo, hi): Cells) -> u64 {
+    let extent = (0..3).fold(0i64, |m, a| m.max(hi[a] as i64 - lo[a] as i64));
+    let (blo, bhi) = item_box(it);
+    let q = |a: usize| {
+        let twice = blo[a] as i64 + bhi[a] as i64 - 2 * lo[a] as i64;
+        ((twice.clamp(0, 2 * extent) << CENTRE_BITS) / (2 * extent + 1)) as u64
+    };
+    let centres = q(0) << (2 * CENTRE_BITS) | q(1) << CENTRE_BITS | q(2);
+    centres << INDEX_BITS | c as u64 & INDEX
+}
+
+/// Rotates the centres of `keys`, whose top field is that of axis `*top`, so that the top one
+/// is axis `a`'s: then the keys' own order is by the centre on `a`, the other two, the index.
+fn rotate(keys: &mut [u64], top: &mut usize, a: usize) {
+    let k = (a + 3 - *top) as u32 % 3 * CENTRE_BITS;
+    if k == 0 {
+        return;
+    }
+    let width = 3 * CENTRE_BITS;
+    for key in keys.iter_mut() {
+        let c = *key >> INDEX_BITS;
+        let c = (c << k | c >> (width - k)) & ((1 << width) - 1);
+        *key = c << INDEX_BITS | *key & INDEX;
+    }
+    *top = a;
+}
+
+/// Puts the `m` keys with the smallest centres on the longest axis of `bounds` (the lowest such
+/// axis on a tie) first: an object-median split. The order is a total one (the quantized
+/// centres, then the index), so the split is the same whatever algorithm makes it. Returns
+/// `bounds` cut at the median: the two sides' boxes as far as choosing their own split axis
+/// needs. `root` is the box the centres were quantized in; `top`, the axis on top of the keys.
+fn split(
+    keys: &mut [u64],
+    m: usize,
+    (lo, hi): Cells,
+    root: Cells,
+    top: &mut usize,
+) -> (Cells, Cells) {
+    if m == 0 || m >= keys.len() {
+        return ((lo, hi), (lo, hi));
+    }
+    let mut axis = 0;
+    for a in 1..3 {
+        if hi[a] as i64 - lo[a] as i64 > hi[axis] as i64 - lo[axis] as i64 {
+            axis = a;
         }
     }
-    key
+    rotate(keys, top, axis);
+    let (_, &mut median, _) = keys.select_nth_unstable(m);
+    let extent = (0..3).fold(0i64, |m, a| m.max(root.1[a] as i64 - root.0[a] as i64));
+    let q = (median >> (INDEX_BITS + 2 * CENTRE_BITS)) as i64;
+    let cut = root.0[axis] as i64 + ((q * (2 * extent + 1)) >> (CENTRE_BITS + 1));
+    let (mut left, mut right) = (hi, lo);
+    (left[axis], right[axis]) = (cut as i32, cut as i32);
+    ((lo, left), (right, hi))
 }
 
-/// Builds the tree over `items` (each a triangle's box, index and seam class, in Morton order)
-/// into `nodes`, the root's box being `root`. Returns the number of nodes used.
+/// Builds the tree over `items` (each a triangle's box, index and seam class) into `nodes`, the
+/// root's box being `root`. `keys` (one per item, any values) ends in leaf order: slot `s`
+/// holds item [`key_index`]`(keys[s])`. Returns the number of nodes used.
 pub(crate) fn build(
-    items: &mut [Item],
+    items: &[Item],
+    keys: &mut [u64],
     root: Cells,
     nodes: &mut [Node],
 ) -> Result<usize, BuildError> {
-    let n = items.len();
+    let n = items.len().min(keys.len());
+    let keys = &mut keys[..n];
+    for (c, (key, it)) in keys.iter_mut().zip(items).enumerate() {
+        *key = key_of(it, c, root);
+    }
     let needed = nodes_for(n);
     if nodes.len() < needed {
         return Err(BuildError::Nodes(needed));
@@ -123,17 +184,24 @@ pub(crate) fn build(
     if n == 0 {
         return Ok(0);
     }
-    // (node, first item, item count, node box, depth)
-    let mut work: heapless::Vec<(usize, usize, usize, Cells, usize), STACK> = heapless::Vec::new();
-    let _ = work.push((0, 0, n, root, 1));
+    // (node, first item, item count, node box, depth, the axis on top of its keys)
+    type Work = (usize, usize, usize, Cells, usize, usize);
+    let mut work: heapless::Vec<Work, STACK> = heapless::Vec::new();
+    let _ = work.push((0, 0, n, root, 1, 0));
     let mut next = 1;
-    while let Some((at, first, count, (lo, hi), depth)) = work.pop() {
+    while let Some((at, first, count, (lo, hi), depth, mut top)) = work.pop() {
         if depth > MAX_DEPTH {
             return Err(BuildError::Depth);
         }
-        let range = &mut items[first..first + count];
-        // Up to four runs of the Morton order.
+        let range = &mut keys[first..first + count];
+        // Up to four runs: the two halves split at the median, each split again.
         let p = parts(count);
+        let (lb, rb) = split(range, p[0] + p[1], (lo, hi), root, &mut top);
+        let (left, right) = range.split_at_mut(p[0] + p[1]);
+        let (mut ltop, mut rtop) = (top, top);
+        split(left, p[0], lb, root, &mut ltop);
+        split(right, p[2], rb, root, &mut rtop);
+        let tops = [ltop, ltop, rtop, rtop];
         let bounds = [
             (0, p[0]),
             (p[0], p[0] + p[1]),
@@ -149,12 +217,12 @@ pub(crate) fn build(
             }
             node.shift[ax] = s as u8;
         }
-        for &(s, e) in &bounds {
+        for (&(s, e), &top) in bounds.iter().zip(&tops) {
             if s == e {
                 continue;
             }
             let part = &mut range[s..e];
-            let (clo, chi) = union(part);
+            let ((clo, chi), class) = union(part, items);
             let k = node.count as usize;
             let mut dlo = [0; 3];
             let mut dhi = [0; 3];
@@ -163,19 +231,14 @@ pub(crate) fn build(
                 let step = 1i64 << sh;
                 let qlo = (clo[ax] as i64 - lo[ax] as i64) >> sh;
                 let qhi = (chi[ax] as i64 - lo[ax] as i64 + step - 1) >> sh;
-                node.boxes[k][ax] = qlo as u8;
-                node.boxes[k][3 + ax] = qhi as u8;
+                node.boxes[ax][k] = qlo as u8;
+                node.boxes[3 + ax][k] = qhi as u8;
                 dlo[ax] = lo[ax] + ((qlo as i32) << sh);
                 dhi[ax] = lo[ax] + ((qhi as i32) << sh);
             }
-            let class = part
-                .iter()
-                .map(|it| (it[3] >> 32) as u32)
-                .max()
-                .unwrap_or(0);
             let class = class.min(MAX_CLASS) << CLASS_SHIFT;
             if part.len() <= LEAF {
-                part.sort_unstable_by_key(item_index);
+                part.sort_unstable_by_key(|&k| k & INDEX);
                 node.children[k] =
                     LEAF_FLAG | class | ((first + s) as u32) << 2 | (part.len() - 1) as u32;
             } else {
@@ -186,7 +249,7 @@ pub(crate) fn build(
                 }
                 node.children[k] = class | child as u32;
                 if work
-                    .push((child, first + s, e - s, (dlo, dhi), depth + 1))
+                    .push((child, first + s, e - s, (dlo, dhi), depth + 1, top))
                     .is_err()
                 {
                     return Err(BuildError::Depth);

@@ -9,7 +9,7 @@ use crate::{Scalar, Sweep};
 /// (all that decoding its children needs).
 #[derive(Clone, Copy)]
 struct Entry {
-    enter: f64,
+    enter: f32,
     child: u32,
     lo: [i32; 3],
 }
@@ -31,12 +31,15 @@ pub(crate) fn rounding_pad<S: Scalar>(r: f64, length: f64, magnitude: f64) -> f6
 /// The swept segment in grid units, with what every box test needs.
 pub(crate) struct Segment {
     q0: [f64; 3],
-    d: [f64; 3],
+    /// Per axis, the reciprocal of the segment's extent, `2^100` where that is below `2^-100`
+    /// (parallel to the slab, as good as: the pad covers the difference).
     inv: [f64; 3],
-    /// How far (cells) every box is grown: the radius plus every rounding (module docs).
-    pad: f64,
-    /// The seam margin `r / 64 + 4 EPSILON` (cells), grown by `2^class` per child.
-    seam: f64,
+    /// How far (cells) every box is grown: the radius plus every rounding (module docs), in
+    /// `f32` for the node tests, rounded up.
+    pad: f32,
+    /// The seam margin `r / 64 + 4 EPSILON` (cells), grown by `2^class` per child; `f32`,
+    /// rounded up.
+    seam: f32,
 }
 
 impl Segment {
@@ -55,72 +58,75 @@ impl Segment {
         let seam = r / 64.0 + 4.0 * S::PRECISION.epsilon;
         let q0 = p0.map(|x| x * s);
         let d = d.map(|x| x * s);
+        let tiny = 1.0 / pow2(100);
+        // The node tests' `f32` arithmetic: a few roundings of 2^-24 of terms below the
+        // segment's and the mesh's magnitudes in cells, a node's extent (2^26) and the pad.
+        let grow = 1.0 + 1.0 / pow2(19);
+        let slack = (2.0 * magnitude * s + pow2(26)) / pow2(19);
         Self {
             q0,
-            d,
-            inv: d.map(|x| 1.0 / x),
-            pad: pad * s + 2.0,
-            seam: seam * s,
+            inv: d.map(|x| if x.abs() > tiny { 1.0 / x } else { pow2(100) }),
+            pad: up((pad * s + 2.0 + slack) * grow),
+            seam: up(seam * s * grow),
         }
     }
 
     /// Where the segment, over `[0, limit]`, enters each of the four child boxes of `node` (whose
     /// own minimum is `lo`), each grown by the pad and `2^class` seam margins of its child;
-    /// infinity where it misses. The four are computed side by side, lane by lane, so the
-    /// compiler can use vector registers; slots beyond `count` are computed and ignored.
+    /// infinity where it misses. The four are computed side by side, lane by lane and without
+    /// branches, so the compiler can use vector registers; slots beyond `count` are computed and
+    /// ignored.
     #[inline]
-    fn enter4(&self, node: &Node, lo: [i32; 3], limit: f64) -> [f64; 4] {
-        let mut pad = [0.0f64; 4];
-        for (k, p) in pad.iter_mut().enumerate() {
+    fn enter4(&self, node: &Node, lo: [i32; 3], limit: f32) -> [f32; 4] {
+        let pad: [f32; 4] = core::array::from_fn(|k| {
             let class = ((node.children[k] & !LEAF_FLAG) >> CLASS_SHIFT).min(MAX_CLASS);
-            // 2^class, exactly.
-            *p = self.pad + self.seam * f64::from_bits(((1023 + class) as u64) << 52);
-        }
-        let (mut t0, mut t1) = ([0.0f64; 4], [limit; 4]);
-        for (a, &base) in lo.iter().enumerate() {
-            let sh = node.shift[a].min(31) as u32;
-            let at = |v: u8| base.wrapping_add((v as i32).wrapping_shl(sh)) as f64;
-            let near: [f64; 4] =
-                core::array::from_fn(|k| at(node.boxes[k][a]) - pad[k] - self.q0[a]);
-            let far: [f64; 4] =
-                core::array::from_fn(|k| at(node.boxes[k][3 + a]) + pad[k] - self.q0[a]);
-            let inv = self.inv[a];
-            if !inv.is_finite() {
-                // Parallel to the slab (or as good as): inside it all along, or never.
-                let d = self.d[a].abs();
-                for k in 0..4 {
-                    if near[k] > d || far[k] < -d {
-                        t0[k] = f64::INFINITY;
-                    }
-                }
-                continue;
-            }
-            let (first, second) = if inv > 0.0 { (near, far) } else { (far, near) };
+            self.pad + self.seam * pow2(class) as f32
+        });
+        let (mut t0, mut t1) = ([0.0f32; 4], [limit; 4]);
+        for (a, (&inv, &base)) in self.inv.iter().zip(&lo).enumerate() {
+            // The side the segment enters a slab by, and the pad's sign there, as parameters.
+            let (first, second, signed) = if inv >= 0.0 {
+                (a, 3 + a, inv as f32)
+            } else {
+                (3 + a, a, -inv as f32)
+            };
+            // In the node's steps: t = byte * per_step + at_zero (module docs).
+            let per_step = (pow2(node.shift[a].min(31) as u32) * inv) as f32;
+            let at_zero = ((base as f64 - self.q0[a]) * inv) as f32;
+            let (qa, qb) = (node.boxes[first], node.boxes[second]);
             for k in 0..4 {
-                let (ta, tb) = (first[k] * inv, second[k] * inv);
-                // Plain comparisons: a NaN (never expected) would only widen the interval.
-                if ta > t0[k] {
-                    t0[k] = ta;
-                }
-                if tb < t1[k] {
-                    t1[k] = tb;
-                }
+                let grow = pad[k] * signed;
+                let ta = qa[k] as f32 * per_step + (at_zero - grow);
+                let tb = qb[k] as f32 * per_step + (at_zero + grow);
+                // Plain comparisons: a NaN (an overflow, never expected) only widens the interval.
+                t0[k] = if ta > t0[k] { ta } else { t0[k] };
+                t1[k] = if tb < t1[k] { tb } else { t1[k] };
             }
         }
-        core::array::from_fn(|k| if t0[k] <= t1[k] { t0[k] } else { f64::INFINITY })
+        core::array::from_fn(|k| if t0[k] <= t1[k] { t0[k] } else { f32::INFINITY })
     }
+}
+
+/// The smallest `f32` not below `x` (`x` finite or infinite, not NaN).
+fn up(x: f64) -> f32 {
+    let y = x as f32;
+    if (y as f64) < x { y.next_up() } else { y }
+}
+
+/// `2^e` for `e <= 1023`, exactly.
+#[inline]
+fn pow2(e: u32) -> f64 {
+    f64::from_bits(((1023 + e.min(1023)) as u64) << 52)
 }
 
 /// Decodes child `k` of `node`, whose own box has minimum `lo`.
 #[inline]
 fn child_cells(node: &Node, k: usize, lo: [i32; 3]) -> Cells {
-    let q = node.boxes[k];
-    let at =
-        |a: usize, v: u8| lo[a].wrapping_add((v as i32).wrapping_shl(node.shift[a].min(31) as u32));
-    (
-        [at(0, q[0]), at(1, q[1]), at(2, q[2])],
-        [at(0, q[3]), at(1, q[4]), at(2, q[5])],
-    )
+    let at = |b: usize| {
+        let (a, v) = (b % 3, node.boxes[b][k & 3]);
+        lo[a].wrapping_add((v as i32).wrapping_shl(node.shift[a].min(31) as u32))
+    };
+    ([at(0), at(1), at(2)], [at(3), at(4), at(5)])
 }
 
 /// The triangle slots of a leaf reference: `first .. first + count`.
@@ -146,7 +152,7 @@ pub(crate) fn traverse<S: Scalar>(
     if nodes.is_empty() {
         return true;
     }
-    let limit = |r: S| r.to_f64() + 1.0 / (1u64 << 50) as f64;
+    let limit = |r: S| up(r.to_f64() + 1.0 / (1u64 << 50) as f64);
     let mut stack: heapless::Vec<Entry, STACK> = heapless::Vec::new();
     let _ = stack.push(Entry {
         enter: 0.0,
@@ -171,7 +177,7 @@ pub(crate) fn traverse<S: Scalar>(
             return false;
         };
         let enter = seg.enter4(node, e.lo, lim);
-        let mut near = [(0.0f64, 0usize, [0i32; 3]); 4];
+        let mut near = [(0.0f32, 0usize); 4];
         let mut n = 0;
         for (k, &t) in enter.iter().enumerate().take((node.count as usize).min(4)) {
             if t <= lim {
@@ -181,15 +187,21 @@ pub(crate) fn traverse<S: Scalar>(
                     near[at] = near[at - 1];
                     at -= 1;
                 }
-                near[at] = (t, k, child_cells(node, k, e.lo).0);
+                near[at] = (t, k);
                 n += 1;
             }
         }
-        for &(t, k, lo) in near[..n].iter().rev() {
+        for &(enter, k) in near[..n].iter().rev() {
+            let child = node.children[k & 3];
             let entry = Entry {
-                enter: t,
-                child: node.children[k],
-                lo,
+                enter,
+                child,
+                // A leaf needs no box.
+                lo: if child & LEAF_FLAG == 0 {
+                    child_cells(node, k, e.lo).0
+                } else {
+                    e.lo
+                },
             };
             if stack.push(entry).is_err() {
                 return false;

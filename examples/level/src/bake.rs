@@ -237,7 +237,7 @@ fn write<S: Scalar + Emit>(mesh: &Mesh<S>, level: &Level, stats: &Stats) -> Stri
     );
     let _ = writeln!(
         o,
-        "const fn n(boxes: [[u8; 6]; 4], shift: [u8; 3], count: u8, children: [u32; 4]) -> Node {{ Node {{ boxes, shift, count, children }} }}"
+        "const fn n(boxes: [[u8; 4]; 6], shift: [u8; 3], count: u8, children: [u32; 4]) -> Node {{ Node {{ boxes, shift, count, children }} }}"
     );
     let list = |v: &[String]| format!("[{}]", v.join(", "));
     let vs = |p: Vec3<S>| list(&p.to_array().map(S::bits));
