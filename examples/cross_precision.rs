@@ -1,115 +1,153 @@
-//! Cross-precision check of a user's own scene: reads an OBJ-like triangle list (`v x y z` and
-//! `f a b c` lines, 1-based; default `examples/data/valley.obj`), rolls a few scripted balls
-//! through it with `move_and_slide` in every scalar, and prints where each scalar diverges from
-//! f64, next to what the precision planner predicts for one contact.
+//! Cross-precision check of a user's own level: loads a Wavefront OBJ or glTF 2.0 / GLB file
+//! (through `ballcast-level`, as the bake does; default `examples/data/valley.obj`), builds it
+//! as a `Mesh` in every scalar (degenerate triangles skipped), rolls three scripted balls
+//! dropped above it with `move_and_slide`, and prints where each scalar diverges from f64, next
+//! to what the precision planner predicts for one contact.
 //!
-//! Run: `cargo run --release --example cross_precision [path/to/scene.obj]`
+//! The scalars run side by side on all cores (`rayon`), with a progress bar (`indicatif`) on
+//! stderr; each run is independent of the others, so the numbers are those of a single thread.
+//!
+//! Run: `cargo run --release --example cross_precision [path/to/level.obj|.gltf|.glb]`
 
-use ballcast::{Scalar, Scene, Triangle, Vec3, move_and_slide};
+use ballcast::bvh::nodes_for;
+use ballcast::{Degenerates, Mesh, Node, Scalar, Triangle, Vec3, move_and_slide};
 use fixed::types::{I16F16, I32F32};
+use indicatif::{ProgressBar, ProgressStyle};
+use rayon::prelude::*;
 
-const CAPACITY: usize = 1024;
 const STEPS: usize = 600;
+const BALLS: usize = 3;
+const RADIUS: f64 = 0.25;
 type P = [f64; 3];
 
-/// Parses the triangle list; std-only helper, so the library itself stays allocation-free.
-fn parse(text: &str) -> Result<Vec<[P; 3]>, String> {
-    let (mut verts, mut tris) = (Vec::new(), Vec::new());
-    for (n, line) in text.lines().enumerate() {
-        let mut words = line.split_whitespace();
-        let nums = |w: std::str::SplitWhitespace| -> Result<Vec<f64>, String> {
-            w.map(|x| x.parse::<f64>().map_err(|e| format!("line {}: {e}", n + 1)))
-                .collect()
-        };
-        match words.next() {
-            Some("v") => match nums(words)?[..] {
-                [x, y, z] => verts.push([x, y, z]),
-                _ => return Err(format!("line {}: a vertex needs 3 numbers", n + 1)),
-            },
-            Some("f") => {
-                let ids = nums(words)?;
-                let get = |i: f64| verts.get((i as usize).wrapping_sub(1)).copied();
-                match ids[..] {
-                    [a, b, c] => match (get(a), get(b), get(c)) {
-                        (Some(a), Some(b), Some(c)) => tris.push([a, b, c]),
-                        _ => return Err(format!("line {}: no such vertex", n + 1)),
-                    },
-                    _ => return Err(format!("line {}: a face needs 3 vertices", n + 1)),
-                }
-            }
-            _ => {}
-        }
-    }
-    Ok(tris)
-}
-
 /// Every step's position of each scripted ball, in f64, plus the contacts.
-fn roll<S: Scalar>(tris: &[[P; 3]]) -> Result<(Vec<P>, usize), ballcast::Error> {
+fn roll<S: Scalar>(tris: &[[P; 3]], bar: &ProgressBar) -> Result<(Vec<P>, usize), String> {
     let v3 = |p: P| Vec3::new(S::from_f64(p[0]), S::from_f64(p[1]), S::from_f64(p[2]));
-    let mut scene: Scene<S, CAPACITY> = Scene::new();
-    for t in tris {
-        scene.push(Triangle::new(v3(t[0]), v3(t[1]), v3(t[2])))?;
-    }
-    let (dt, r) = (S::from_f64(1.0 / 60.0), S::from_f64(0.25));
+    let src: Vec<Triangle<S>> = tris
+        .iter()
+        .map(|t| Triangle::new(v3(t[0]), v3(t[1]), v3(t[2])))
+        .collect();
+    let n = src.len();
+    let (mut nodes, mut prepared) = (vec![Node::default(); nodes_for(n)], vec![Mesh::filler(); n]);
+    let (mut order, mut scratch) = (vec![0u32; n], vec![0u64; 6 * n]);
+    let (mesh, _) = Mesh::build(
+        &src,
+        Degenerates::Skip,
+        &mut nodes,
+        &mut prepared,
+        &mut order,
+        &mut scratch,
+    )
+    .map_err(|e| e.to_string())?;
+    // Drops above the level: at fixed fractions of its extent, one unit over its top.
+    let (lo, hi) = bounds(tris);
+    let at = |fx: f64, fz: f64| {
+        let f = [fx, 0.0, fz];
+        [0, 1, 2].map(|a| {
+            if a == 1 {
+                hi[1] + 1.0
+            } else {
+                lo[a] + f[a] * (hi[a] - lo[a])
+            }
+        })
+    };
+    let (dt, r) = (S::from_f64(1.0 / 60.0), S::from_f64(RADIUS));
     let g = v3([0.0, -9.81, 0.0]);
     let (mut path, mut contacts) = (Vec::new(), 0);
-    for start in [[-3.0, 4.0, 1.0], [2.5, 3.0, -2.0], [0.5, 2.0, 3.0]] {
+    for start in [at(0.2, 0.6), at(0.75, 0.3), at(0.55, 0.8)] {
         let (mut p, mut v) = (v3(start), v3([0.0, 0.0, -1.0]));
         for _ in 0..STEPS {
             v += g.scale(dt);
-            let out = move_and_slide(&scene, p, v.scale(dt), r)?;
+            let out = move_and_slide(&mesh, p, v.scale(dt), r).map_err(|e| e.to_string())?;
             contacts += out.contacts.iter().flatten().count();
             p = out.position;
-            v = out.clip(v)?;
+            v = out.clip(v).map_err(|e| e.to_string())?;
             path.push(p.to_array().map(S::to_f64));
         }
+        bar.inc(STEPS as u64);
     }
     Ok((path, contacts))
 }
 
-fn main() -> Result<(), String> {
+/// The level's bounding box.
+fn bounds(tris: &[[P; 3]]) -> (P, P) {
+    let points = tris.iter().flatten();
+    let lo = points
+        .clone()
+        .fold([f64::MAX; 3], |m, p| [0, 1, 2].map(|a| m[a].min(p[a])));
+    let hi = points.fold([f64::MIN; 3], |m, p| [0, 1, 2].map(|a| m[a].max(p[a])));
+    (lo, hi)
+}
+
+fn main() {
     let file = std::env::args()
         .nth(1)
         .unwrap_or_else(|| "examples/data/valley.obj".into());
-    let text = std::fs::read_to_string(&file).map_err(|e| format!("{file}: {e}"))?;
-    let tris = parse(&text)?;
+    let level = match ballcast_level::load(&file) {
+        Ok(level) => level,
+        Err(e) => {
+            eprintln!("{e}");
+            std::process::exit(1);
+        }
+    };
+    let tris = &level.triangles;
     let extent = tris
         .iter()
         .flatten()
         .flatten()
         .fold(0.0f64, |m, x| m.max(x.abs()));
     println!("{file}: {} triangles, extent ±{extent}", tris.len());
-    let reference = roll::<f64>(&tris).map_err(|e| e.to_string())?.0;
+    let names = ["f64", "f32", "I32F32", "I16F16"];
+    let bar = ProgressBar::new((names.len() * BALLS * STEPS) as u64).with_style(
+        ProgressStyle::with_template("{msg} {wide_bar} {percent}%").expect("a valid template"),
+    );
+    bar.set_message("rolling");
+    let runs: Vec<Result<(Vec<P>, usize), String>> = names
+        .par_iter()
+        .map(|&name| match name {
+            "f64" => roll::<f64>(tris, &bar),
+            "f32" => roll::<f32>(tris, &bar),
+            "I32F32" => roll::<I32F32>(tris, &bar),
+            _ => roll::<I16F16>(tris, &bar),
+        })
+        .collect();
+    bar.finish_and_clear();
+    let reference = match &runs[0] {
+        Ok((path, _)) => path,
+        Err(e) => {
+            eprintln!("{file}: f64 refused the level: {e}");
+            std::process::exit(1);
+        }
+    };
     println!(
         "| scalar | contacts | largest divergence from f64 | first step over 1e-3 | planner: one contact's error |"
     );
     println!("|---|---|---|---|---|");
-    let report =
-        |name: &str, run: Result<(Vec<P>, usize), ballcast::Error>, p: ballcast::Precision| {
-            let Ok((path, contacts)) = run else {
-                println!("| {name} | refused: {} | | | |", run.unwrap_err());
-                return;
-            };
-            let dist = |a: &P, b: &P| (0..3).map(|k| (a[k] - b[k]).powi(2)).sum::<f64>().sqrt();
-            let d: Vec<f64> = path
-                .iter()
-                .zip(&reference)
-                .map(|(a, b)| dist(a, b))
-                .collect();
-            let worst = d.iter().fold(0.0f64, |m, x| m.max(*x));
-            let first = d
-                .iter()
-                .position(|x| *x > 1e-3)
-                .map_or("never".into(), |i| i.to_string());
-            let planned = if p.fits(extent, 0.25) {
-                format!("{:.1e}", p.distance_error(extent, 1.0))
-            } else {
-                "does not fit".into()
-            };
-            println!("| {name} | {contacts} | {worst:.2e} | {first} | {planned} |");
+    let precisions = [f32::PRECISION, I32F32::PRECISION, I16F16::PRECISION];
+    for ((name, run), p) in names.iter().zip(&runs).skip(1).zip(precisions) {
+        let (path, contacts) = match run {
+            Ok(r) => r,
+            Err(e) => {
+                println!("| {name} | refused: {e} | | | |");
+                continue;
+            }
         };
-    report("f32", roll::<f32>(&tris), f32::PRECISION);
-    report("I32F32", roll::<I32F32>(&tris), I32F32::PRECISION);
-    report("I16F16", roll::<I16F16>(&tris), I16F16::PRECISION);
-    Ok(())
+        let dist = |a: &P, b: &P| (0..3).map(|k| (a[k] - b[k]).powi(2)).sum::<f64>().sqrt();
+        let d: Vec<f64> = path
+            .iter()
+            .zip(reference)
+            .map(|(a, b)| dist(a, b))
+            .collect();
+        let worst = d.iter().fold(0.0f64, |m, x| m.max(*x));
+        let first = d
+            .iter()
+            .position(|x| *x > 1e-3)
+            .map_or("never".into(), |i| i.to_string());
+        let planned = if p.fits(extent, RADIUS) {
+            format!("{:.1e}", p.distance_error(extent, 1.0))
+        } else {
+            "does not fit".into()
+        };
+        println!("| {name} | {contacts} | {worst:.2e} | {first} | {planned} |");
+    }
 }
