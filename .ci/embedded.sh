@@ -63,7 +63,7 @@ echo "lockstep: every scalar's hash equals the host's on thumbv6m-none-eabi and 
 
 echo "== firmware: levels baked at build time (embedded/build.rs) into flash, on thumbv6m-none-eabi"
 (cd embedded && cargo build --quiet --release --target thumbv6m-none-eabi \
-    --bin firmware --bin arena --bin mesh_counts)
+    --bin firmware --bin arena --bin forms --bin mesh_counts)
 (cd embedded && timeout 120 cargo run --quiet --release --target thumbv6m-none-eabi --bin firmware) \
     | tee "$work/firmware.txt"
 grep -q "^firmware: " "$work/firmware.txt"
@@ -75,6 +75,16 @@ if [ "$(head -1 "$work/arena.txt")" = "$(cat "$work/arena-host.txt")" ]; then
     echo "arena: the baked mesh's hash on thumbv6m-none-eabi equals the host's ($(cat "$work/arena-host.txt"))"
 else
     echo "FAIL: arena on thumbv6m-none-eabi: $(head -1 "$work/arena.txt") (host $(cat "$work/arena-host.txt"))" >&2
+    exit 1
+fi
+# The compact forms baked into flash: the arena as a compact mesh, the 64 x 64 terrain heightfield.
+cargo run --quiet --release --example forms >"$work/forms-host.txt"
+(cd embedded && timeout 300 cargo run --quiet --release --target thumbv6m-none-eabi --bin forms) \
+    | tee "$work/forms.txt"
+if [ "$(head -2 "$work/forms.txt")" = "$(cat "$work/forms-host.txt")" ]; then
+    echo "forms: the compact mesh's and the heightfield's hashes on thumbv6m-none-eabi equal the host's"
+else
+    echo "FAIL: forms on thumbv6m-none-eabi differ from the host's: $(cat "$work/forms-host.txt")" >&2
     exit 1
 fi
 # The mesh-count program's runs (its ramp mesh must agree with the ramp's linear scan); the

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Instructions per query on the Cortex-M0 (thumbv6m-none-eabi) for baked I16F16 meshes, from
 # the bare-metal `mesh_counts` program: the 96-triangle ramp room as a linear scan and as a mesh,
-# the 2 168-triangle arena as a mesh (a query is one `Geometry::cast` of `move_and_slide`).
+# the 2 168-triangle arena as a mesh and as a compact mesh, the 64 × 64 terrain heightfield (a
+# query is one `Geometry::cast` of `move_and_slide`).
 #
 #   embedded/mesh_count.sh        # prints a markdown table; several minutes (singlestep log)
 #
@@ -41,3 +42,5 @@ echo "|---|---:|---:|"
 row query_ramp_scan "ramp room, 96 triangles, linear scan"
 row query_ramp_mesh "ramp room, 96 triangles, mesh"
 row query_arena_mesh "arena, 2 168 triangles, mesh"
+row query_arena_compact "arena, 2 168 triangles, compact mesh"
+row query_terrain_field "terrain, 8 192 triangles, heightfield"

@@ -4,13 +4,15 @@
 //! - the firmware's ramp room (96 triangles) as a linear scan of its prepared triangles
 //!   (`query_ramp_scan`) and as a mesh (`query_ramp_mesh`): the ball of `firmware`, 60 steps;
 //! - the arena (2 168 triangles, `query_arena_mesh`): the first throw of the arena run, 100
-//!   steps (it lands after about 50).
+//!   steps (it lands after about 50); the same on the arena as a compact mesh
+//!   (`query_arena_compact`) and on the 64 × 64 terrain heightfield (`query_terrain_field`) of
+//!   `forms`.
 //!
 //! Run: `cargo m0 mesh_counts` in `embedded/` (prints the runs' hashes; `count.sh` counts).
 #![no_std]
 #![no_main]
 
-use ballcast::{Geometry, SceneHit, Sweep};
+use ballcast::{Geometry, SceneHit, StandardTriangle, Sweep, Vec3};
 use cortex_m_rt::entry;
 use cortex_m_semihosting::{debug, hprintln};
 use fixed::types::I16F16;
@@ -26,15 +28,34 @@ mod level {
 mod ramp {
     include!(concat!(env!("OUT_DIR"), "/ramp.rs"));
 }
+mod compact {
+    include!(concat!(env!("OUT_DIR"), "/compact.rs"));
+}
+mod terrain {
+    include!(concat!(env!("OUT_DIR"), "/terrain.rs"));
+}
 
 type Hit = Option<SceneHit<I16F16>>;
 
-/// A geometry whose casts go through one non-inlined function.
-struct Probe(fn(&Sweep<I16F16>) -> Hit);
+/// Calls `f` with the triangles of a geometry that may meet a box.
+type Visit = fn(Vec3<I16F16>, Vec3<I16F16>, &mut dyn FnMut(usize, &StandardTriangle<I16F16>));
+
+/// A geometry whose casts go through one non-inlined function (its visits, for the push-out
+/// of a starting overlap, through another).
+struct Probe(fn(&Sweep<I16F16>) -> Hit, Visit);
 
 impl Geometry<I16F16> for Probe {
     fn cast(&self, sweep: &Sweep<I16F16>) -> Hit {
         (self.0)(sweep)
+    }
+
+    fn visit(
+        &self,
+        min: Vec3<I16F16>,
+        max: Vec3<I16F16>,
+        f: &mut dyn FnMut(usize, &StandardTriangle<I16F16>),
+    ) {
+        (self.1)(min, max, f)
     }
 }
 
@@ -54,6 +75,18 @@ fn query_ramp_mesh(s: &Sweep<I16F16>) -> Hit {
 #[unsafe(no_mangle)]
 fn query_arena_mesh(s: &Sweep<I16F16>) -> Hit {
     level::MESH.cast(s)
+}
+
+#[inline(never)]
+#[unsafe(no_mangle)]
+fn query_arena_compact(s: &Sweep<I16F16>) -> Hit {
+    compact::MESH.cast(s)
+}
+
+#[inline(never)]
+#[unsafe(no_mangle)]
+fn query_terrain_field(s: &Sweep<I16F16>) -> Hit {
+    terrain::FIELD.cast(s)
 }
 
 /// The firmware's ball in the ramp room: `steps` steps from (5.5, 4.5, 4.5) at rest.
@@ -79,17 +112,43 @@ fn ramp_run(g: &Probe, steps: usize) -> u64 {
 
 #[entry]
 fn main() -> ! {
-    let scan = ramp_run(&Probe(query_ramp_scan), 60);
-    let mesh = ramp_run(&Probe(query_ramp_mesh), 60);
-    let arena = arena::simulate::<I16F16, _>(&Probe(query_arena_mesh), 1, 100);
+    let scan = ramp_run(
+        &Probe(query_ramp_scan, |a, b, f| {
+            ramp::TRIANGLES[..].visit(a, b, f)
+        }),
+        60,
+    );
+    let mesh = ramp_run(
+        &Probe(query_ramp_mesh, |a, b, f| ramp::MESH.visit(a, b, f)),
+        60,
+    );
+    let arena = arena::simulate::<I16F16, _>(
+        &Probe(query_arena_mesh, |a, b, f| level::MESH.visit(a, b, f)),
+        1,
+        100,
+    );
+    let compact = arena::simulate::<I16F16, _>(
+        &Probe(query_arena_compact, |a, b, f| compact::MESH.visit(a, b, f)),
+        1,
+        100,
+    );
+    let field = arena::simulate::<I16F16, _>(
+        &Probe(query_terrain_field, |a, b, f| terrain::FIELD.visit(a, b, f)),
+        1,
+        100,
+    );
     hprintln!(
-        "ramp scan {:016x}, ramp mesh {:016x}, arena {:016x}",
+        "ramp scan {:016x}, ramp mesh {:016x}, arena {:016x}, arena compact {:016x}, terrain {:016x}",
         scan,
         mesh,
-        arena.hash
+        arena.hash,
+        compact.hash,
+        field.hash
     );
-    if scan != mesh {
-        hprintln!("FAIL: the ramp's mesh and linear scan disagree");
+    if scan != mesh || arena.hash != compact.hash {
+        hprintln!(
+            "FAIL: the ramp's mesh and linear scan, or the arena's mesh and compact mesh, disagree"
+        );
         debug::exit(debug::EXIT_FAILURE);
     }
     debug::exit(debug::EXIT_SUCCESS);

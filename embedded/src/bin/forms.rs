@@ -1,0 +1,77 @@
+//! The arena run (`../arena.rs`) on the two compact forms baked into flash by `build.rs`: the
+//! 2 168-triangle arena as a `CompactMesh` and a 64 × 64 terrain `Heightfield` (8 192 triangles;
+//! `../forms.rs`). Prints `compact I16F16 hash` and `heightfield I16F16 hash`, the lines the
+//! host's `cargo run --release --example forms` (the forms built at run time) prints, then each
+//! form's bytes in flash and the RAM the runs never touched (the stack is painted first).
+//!
+//! Run: `cargo m0 forms` in `embedded/`.
+#![no_std]
+#![no_main]
+
+use cortex_m_rt::entry;
+use cortex_m_semihosting::{debug, hprintln};
+use fixed::types::I16F16;
+use panic_semihosting as _;
+
+#[path = "../arena.rs"]
+mod arena;
+#[path = "../lockstep.rs"]
+mod lockstep;
+mod compact {
+    include!(concat!(env!("OUT_DIR"), "/compact.rs"));
+}
+mod terrain {
+    include!(concat!(env!("OUT_DIR"), "/terrain.rs"));
+}
+
+const PAINT: u32 = 0xDEAD_BEEF;
+
+unsafe extern "C" {
+    /// The end of static data: the stack grows down towards it (cortex-m-rt's link.x).
+    static mut __sheap: u32;
+}
+
+#[entry]
+fn main() -> ! {
+    let start = &raw mut __sheap;
+    let sp = cortex_m::register::msp::read() as usize - 256;
+    let words = (sp - start as usize) / 4;
+    for i in 0..words {
+        // SAFETY: the words lie between the end of static data and below the live stack.
+        unsafe { start.add(i).write_volatile(PAINT) };
+    }
+    let (throws, steps) = (arena::THROWS, arena::STEPS_PER_THROW);
+    let c = arena::simulate::<I16F16, _>(&compact::MESH, throws, steps);
+    hprintln!("compact I16F16 {:016x}", c.hash);
+    let h = arena::simulate::<I16F16, _>(&terrain::FIELD, throws, steps);
+    hprintln!("heightfield I16F16 {:016x}", h.hash);
+    use core::mem::size_of_val as size;
+    let compact_bytes = size(&compact::NODES)
+        + size(&compact::VERTICES)
+        + size(&compact::TRIANGLES)
+        + size(&compact::ORDER)
+        + size(&compact::BYTES);
+    hprintln!(
+        "compact: {} triangles, {} bytes in flash; {} contacts, {} escapes",
+        compact::MESH.len(),
+        compact_bytes,
+        c.contacts,
+        c.escapes
+    );
+    hprintln!(
+        "heightfield: {} triangles, {} bytes in flash; {} contacts, {} escapes",
+        terrain::FIELD.len(),
+        size(&terrain::HEIGHTS) + size(&terrain::CELLS),
+        h.contacts,
+        h.escapes
+    );
+    // SAFETY: as above; only read.
+    let untouched = (0..words)
+        .take_while(|&i| unsafe { start.add(i).read_volatile() } == PAINT)
+        .count();
+    hprintln!("stack: {} bytes of RAM never touched", untouched * 4);
+    debug::exit(debug::EXIT_SUCCESS);
+    loop {
+        cortex_m::asm::wfi();
+    }
+}
