@@ -10,6 +10,7 @@
 //! radius R (default 0.5). A bad file or a level outside the scalar's range gets a message
 //! naming the file and the problem, a non-zero exit status and no output on stdout.
 
+use ballcast::plan::{Memory, ScalarType};
 use ballcast_level::{Baked, LevelError, bake, load, verdicts};
 use fixed::types::{I16F16, I32F32};
 use std::process::ExitCode;
@@ -77,12 +78,29 @@ fn run(path: &str, scalar: &str, radius: f64) -> Result<(), Box<dyn std::error::
             Err(_) => format!("{name} out of range"),
         })
         .collect();
+    // The planner's memory figures for the compact form, over the level's distinct vertices.
+    let vertices: std::collections::HashSet<[u64; 3]> = level
+        .triangles
+        .iter()
+        .flatten()
+        .map(|p| p.map(f64::to_bits))
+        .collect();
+    let compact: Vec<String> = ScalarType::ALL
+        .iter()
+        .map(|&s| {
+            let kept = baked.stats.triangles - baked.stats.skipped.len();
+            let m = Memory::of(s, kept, vertices.len());
+            format!("{s} {}", m.compact)
+        })
+        .collect();
     print!("{}", baked.source);
     eprintln!(
-        "{}: {}; bytes in flash: {}; {}",
+        "{}: {}; bytes in flash: {}; as a compact mesh ({} vertices): {}; {}",
         level.path.display(),
         baked.stats,
         sizes.join(", "),
+        vertices.len(),
+        compact.join(", "),
         verdicts(baked.stats.extent, radius)
     );
     Ok(())

@@ -2,6 +2,9 @@
 //! what error each will show. The error model is the one the accuracy report measures
 //! (`cargo run --release --example tradeoff`) and `tests/plan.rs` checks case by case.
 //!
+//! [`Memory::of`] gives the bytes a level of so many triangles and vertices takes in each form
+//! (prepared mesh, compact mesh, heightfield) and scalar.
+//!
 //! A verdict names its scalar as a [`ScalarType`], so a program can pick the type it runs with:
 //!
 //! ```
@@ -44,7 +47,8 @@
 //! against a reference that uses the same rounded constants; `tests/plan.rs` checks the
 //! `speed × time × rounding of dt` figure against a run.
 
-use crate::Scalar;
+use crate::{Node, Scalar, StandardTriangle, Vec3, bvh::nodes_for};
+use core::mem::size_of;
 use fixed::types::{I16F16, I32F32};
 
 /// The four scalar types, as a value: what a [`Verdict`] selects.
@@ -63,6 +67,14 @@ pub enum ScalarType {
 }
 
 impl ScalarType {
+    /// The four, cheapest first (as [`plan`] orders its verdicts).
+    pub const ALL: [ScalarType; 4] = [
+        ScalarType::I16F16,
+        ScalarType::F32,
+        ScalarType::I32F32,
+        ScalarType::F64,
+    ];
+
     /// The type's name as Rust spells it.
     pub const fn name(self) -> &'static str {
         match self {
@@ -248,6 +260,52 @@ impl Verdict {
             distance_error: precision.distance_error(extent, path),
             position_error: precision.position_error(extent),
             min_radius: precision.min_radius(extent),
+        }
+    }
+}
+
+/// Bytes a level takes in each form, for one scalar: what [`Memory::of`] counts.
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Memory {
+    /// A [`Mesh`](crate::Mesh): prepared triangles, their input order and the tree's nodes.
+    pub mesh: usize,
+    /// A [`CompactMesh`](crate::CompactMesh): the same nodes, the shared vertices, and per
+    /// triangle three vertex indices, its input index and a byte (`u16` indices where vertices
+    /// and triangles number at most 65 536, else `u32`).
+    pub compact: usize,
+    /// A [`Heightfield`](crate::Heightfield) of a grid with these vertices and triangles: two
+    /// bytes per vertex, one per cell (two triangles). Meaningful only for a grid.
+    pub heightfield: usize,
+}
+
+impl Memory {
+    /// The bytes of a level of `triangles` triangles over `vertices` distinct vertices in each
+    /// form, in `scalar`: the sizes the builds make, exactly (the build's scratch not counted).
+    pub const fn of(scalar: ScalarType, triangles: usize, vertices: usize) -> Self {
+        let (prepared, vertex) = match scalar {
+            ScalarType::I16F16 => (
+                size_of::<StandardTriangle<I16F16>>(),
+                size_of::<Vec3<I16F16>>(),
+            ),
+            ScalarType::F32 => (size_of::<StandardTriangle<f32>>(), size_of::<Vec3<f32>>()),
+            ScalarType::I32F32 => (
+                size_of::<StandardTriangle<I32F32>>(),
+                size_of::<Vec3<I32F32>>(),
+            ),
+            ScalarType::F64 => (size_of::<StandardTriangle<f64>>(), size_of::<Vec3<f64>>()),
+        };
+        let nodes = nodes_for(triangles) * size_of::<Node>();
+        let index = if triangles <= 1 << 16 && vertices <= 1 << 16 {
+            2
+        } else {
+            4
+        };
+        Self {
+            mesh: nodes + triangles * (prepared + 4),
+            compact: nodes + vertices * vertex + triangles * (4 * index + 1),
+            heightfield: 2 * vertices + triangles / 2,
         }
     }
 }

@@ -6,7 +6,8 @@ mod common;
 #[allow(dead_code)] // the mesh tests use the rest
 mod meshes;
 
-use ballcast::{CompactError, CompactMesh, Degenerates, Scalar, Sweep, Vec3};
+use ballcast::plan::Memory;
+use ballcast::{CompactError, CompactMesh, Degenerates, Heightfield, Scalar, Sweep, Vec3};
 use common::{P, Rng, v};
 use fixed::types::{I16F16, I32F32};
 use meshes::{boxes, build, heightfield, soup, tri};
@@ -96,6 +97,51 @@ fn errors_not_panics<S: Scalar>() {
     assert!(CompactMesh::compact(&mesh, &many, &indices, &mut t32, &mut o32, &mut b).is_ok());
 }
 
+/// The planner's memory figures are the bytes the builds make, for each form.
+fn memory_is_what_the_builds_make<S: Scalar>() {
+    let mut rng = Rng(0xc0_4ac9);
+    let src = heightfield(&mut rng, 12, 1.0, 0.65);
+    let (vertices, indices) = indexed::<S>(&src);
+    let input: Vec<_> = src.iter().map(|&t| tri::<S>(t)).collect();
+    let owned = build(&input, Degenerates::Refuse).unwrap();
+    let mesh = owned.mesh();
+    let n = mesh.len();
+    let (mut t, mut o, mut b) = (vec![[0u16; 3]; n], vec![0u16; n], vec![0u8; n]);
+    let compact = CompactMesh::compact(&mesh, &vertices, &indices, &mut t, &mut o, &mut b).unwrap();
+    let (nodes, _, v, tris, order, bytes, _) = compact.parts();
+    let heights = vec![0i16; 13 * 13];
+    let mut cells = vec![0u8; 144];
+    let one = S::ONE;
+    let field = Heightfield::build(
+        Vec3::ZERO,
+        one,
+        one,
+        12,
+        12,
+        &heights,
+        |_, _| false,
+        &mut cells,
+    )
+    .unwrap();
+    let want = Memory::of(S::PRECISION.scalar, n, vertices.len());
+    assert_eq!(
+        want.mesh,
+        size_of_val(mesh.nodes()) + size_of_val(mesh.triangles()) + size_of_val(mesh.order())
+    );
+    assert_eq!(
+        want.compact,
+        size_of_val(nodes)
+            + size_of_val(v)
+            + size_of_val(tris)
+            + size_of_val(order)
+            + size_of_val(bytes)
+    );
+    assert_eq!(
+        want.heightfield,
+        size_of_val(field.heights()) + size_of_val(field.cells())
+    );
+}
+
 macro_rules! per_scalar {
     ($($test:ident),* $(,)?) => {$(
         mod $test {
@@ -119,4 +165,8 @@ macro_rules! per_scalar {
     )*};
 }
 
-per_scalar!(matches_prepared_mesh, errors_not_panics);
+per_scalar!(
+    matches_prepared_mesh,
+    errors_not_panics,
+    memory_is_what_the_builds_make
+);
