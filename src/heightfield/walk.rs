@@ -26,7 +26,7 @@ fn beside_diagonal(path: &Path, c: [f64; 2], above: bool, (t0, t1): (f64, f64)) 
 
 impl<S: Scalar> Heightfield<'_, S> {
     /// The earliest contact along the sweep: the answer of the slice
-    /// [`Geometry`](crate::Geometry) over the same prepared triangles (holes left out) in index
+    /// [`Geometry`] over the same prepared triangles (holes left out) in index
     /// order, bit for bit, simultaneous contacts merged as in [`Scene::cast`](crate::Scene::cast).
     /// Its cost grows with the cells the grown path crosses.
     pub fn cast(&self, sweep: &Sweep<S>) -> Option<SceneHit<S>> {
