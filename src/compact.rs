@@ -30,14 +30,24 @@ pub trait MeshIndex: Copy + sealed::Sealed {
     const MAX: usize;
     /// The index as a `usize`.
     fn get(self) -> usize;
-    /// `i` in this type (callers check [`MAX`](Self::MAX) first).
-    fn new(i: usize) -> Self;
 }
 
 mod sealed {
-    pub trait Sealed {}
-    impl Sealed for u16 {}
-    impl Sealed for u32 {}
+    /// Made only by [`CompactMesh::compact`](super::CompactMesh::compact), which checks the
+    /// range first.
+    pub trait Sealed {
+        fn from_usize(i: usize) -> Self;
+    }
+    impl Sealed for u16 {
+        fn from_usize(i: usize) -> Self {
+            i as u16
+        }
+    }
+    impl Sealed for u32 {
+        fn from_usize(i: usize) -> Self {
+            i as u32
+        }
+    }
 }
 
 impl MeshIndex for u16 {
@@ -45,18 +55,12 @@ impl MeshIndex for u16 {
     fn get(self) -> usize {
         self as usize
     }
-    fn new(i: usize) -> Self {
-        i as u16
-    }
 }
 
 impl MeshIndex for u32 {
     const MAX: usize = u32::MAX as usize;
     fn get(self) -> usize {
         self as usize
-    }
-    fn new(i: usize) -> Self {
-        i as u32
     }
 }
 
@@ -195,8 +199,8 @@ impl<'a, S: Scalar, I: MeshIndex> CompactMesh<'a, S, I> {
             let [_, b, c] = prepared.vertices();
             let shape = [b.x, b.z, c.x].map(S::to_f64);
             class = class.max(bvh::seam_class(all_active, shape) as u8);
-            triangles[s] = corners.map(|c| I::new(c as usize));
-            order[s] = I::new(index);
+            triangles[s] = corners.map(|c| I::from_usize(c as usize));
+            order[s] = I::from_usize(index);
             bytes[s] = byte;
         }
         let (triangles, order, bytes): (&'a [[I; 3]], &'a [I], &'a [u8]) =

@@ -92,7 +92,8 @@ pub enum HeightfieldError {
     TooMany,
     /// `spacing` is not positive and finite, or `unit` or `origin` not finite.
     Spacing,
-    /// The grid reaches beyond the scalar's safe range ([`Scalar::LIMIT`]).
+    /// The grid reaches beyond the scalar's safe range ([`Scalar::LIMIT`]), or has more columns
+    /// or rows than the scalar counts exactly.
     OutOfRange,
     /// A triangle was refused by [`StandardTriangle::new`] (out of the scalar's range, or
     /// degenerate at its precision).
@@ -154,9 +155,10 @@ impl<'a, S: Scalar> Heightfield<'a, S> {
         }
     }
 
-    /// Validates the grid, prepares every triangle once (refusing any that
-    /// [`StandardTriangle::new`] refuses, by index) and writes each cell's byte (active edges,
-    /// [`HOLE`] where `hole(column, row)`) into `cells`. Time `O(N)`, no allocation.
+    /// Validates the grid, prepares every triangle (refusing any that [`StandardTriangle::new`]
+    /// refuses, by index; each is prepared a few times, with its neighbours) and writes each
+    /// cell's byte (active edges, [`HOLE`] where `hole(column, row)`) into the first
+    /// `columns × rows` bytes of `cells`. Time `O(N)`, no allocation.
     ///
     /// Errors: [`HeightfieldError`]: sizes that do not match or overflow, a spacing that is not
     /// positive and finite, a grid beyond the scalar's range, a degenerate triangle.
@@ -199,7 +201,10 @@ impl<'a, S: Scalar> Heightfield<'a, S> {
             [o[1] + u * lo as f64, o[1] + u * hi as f64],
             [o[2], o[2] + sp * h as f64],
         ];
-        if ends.iter().flatten().any(|v| v.abs() > limit) {
+        // Every column and row number must be exact in the scalar (I16F16 stops at 32 767),
+        // or the vertices would not be where the walk looks for them.
+        let exact = |n: u32| S::from_f64(n as f64).to_f64() == n as f64;
+        if ends.iter().flatten().any(|v| v.abs() > limit) || !exact(columns) || !exact(rows) {
             return Err(HeightfieldError::OutOfRange);
         }
         let mut field = Self::from_parts(
@@ -257,7 +262,7 @@ impl<'a, S: Scalar> Heightfield<'a, S> {
                 class = class.max(crate::bvh::seam_class(all_active, shape));
             }
         }
-        field.cells = cells;
+        field.cells = &cells[..n];
         field.class = class as u8;
         Ok(field)
     }
@@ -276,7 +281,9 @@ impl<'a, S: Scalar> Heightfield<'a, S> {
         if column > self.columns || row > self.rows {
             return None;
         }
-        let at = row as usize * (self.columns as usize + 1) + column as usize;
+        let at = (row as usize)
+            .checked_mul(self.columns as usize + 1)?
+            .checked_add(column as usize)?;
         let h = *self.heights.get(at)?;
         let step = |n: f64| S::from_f64(n);
         Some(Vec3::new(
@@ -290,7 +297,7 @@ impl<'a, S: Scalar> Heightfield<'a, S> {
     pub fn triangle(&self, index: usize) -> Option<Triangle<S>> {
         let c = index / 2;
         let w = self.columns.max(1) as usize;
-        if c >= w * self.rows as usize {
+        if c >= self.cells_count()? {
             return None;
         }
         let (i, k) = ((c % w) as u32, (c / w) as u32);
@@ -324,9 +331,16 @@ impl<'a, S: Scalar> Heightfield<'a, S> {
         (self.columns, self.rows)
     }
 
-    /// Triangles, holes included: `2 columns rows`.
+    /// Triangles, holes included: `2 columns rows` (zero for parts whose size overflows).
     pub fn len(&self) -> usize {
-        2 * self.columns as usize * self.rows as usize
+        2 * self.cells_count().unwrap_or(0)
+    }
+
+    /// `columns × rows`, if within what a heightfield holds (parts from elsewhere may not be).
+    pub(crate) fn cells_count(&self) -> Option<usize> {
+        (self.columns as usize)
+            .checked_mul(self.rows as usize)
+            .filter(|&n| n <= MAX_TRIANGLES / 2)
     }
 
     /// Whether the grid has no cells (never true of a built heightfield).

@@ -30,13 +30,22 @@ impl<S: Scalar> Heightfield<'_, S> {
     /// order, bit for bit, simultaneous contacts merged as in [`Scene::cast`](crate::Scene::cast).
     /// Its cost grows with the cells the grown path crosses.
     pub fn cast(&self, sweep: &Sweep<S>) -> Option<SceneHit<S>> {
+        self.cells_count()?;
+        let path = Path::new(sweep, self.extent(), self.class);
+        let o = self.origin.to_array().map(S::to_f64);
+        earliest(|acc| self.walk(sweep, &path, o, acc))
+    }
+
+    /// The largest magnitude of any coordinate of the grid.
+    fn extent(&self) -> f64 {
         let o = self.origin.to_array().map(S::to_f64);
         let (sp, unit) = (self.spacing.to_f64(), self.unit.to_f64());
-        let (w, h) = (self.columns as f64, self.rows as f64);
-        let far = [sp * w, unit.abs() * 32768.0, sp * h];
-        let extent = (0..3).fold(0.0f64, |m, a| m.max(o[a].abs() + far[a]));
-        let path = Path::new(sweep, extent, self.class);
-        earliest(|acc| self.walk(sweep, &path, o, acc))
+        let far = [
+            sp * self.columns as f64,
+            unit.abs() * 32768.0,
+            sp * self.rows as f64,
+        ];
+        (0..3).fold(0.0f64, |m, a| m.max(o[a].abs() + far[a]))
     }
 
     /// Visits the cells the grown path crosses within the terrain's box, row by row in the
@@ -66,20 +75,34 @@ impl<S: Scalar> Heightfield<'_, S> {
             (u.min(v) - path.pad, u.max(v) + path.pad)
         };
         let (zlo, zhi) = span(2, ta, tb);
-        let (k0, k1) = (cell(zlo, 2, h), cell(zhi, 2, h));
+        // One row and column more on each side than the division gives: it may round.
+        let (k0, k1) = (
+            (cell(zlo, 2, h) - 1).max(0),
+            (cell(zhi, 2, h) + 1).min(h - 1),
+        );
         let (up, right) = (path.d[2] >= 0.0, path.d[0] >= 0.0);
         for n in 0..=(k1 - k0) {
             let k = if up { k0 + n } else { k1 - n };
-            // The part of the path within this row's strip, grown; strips come in travel order,
-            // so once one starts beyond the reach, so do the rest.
+            // The part of the path within this row's strip, grown. Strips come in travel order:
+            // once one's slab starts beyond the reach, so do the rest's (a strip missed for
+            // another reason, behind the start or beside a path along it, ends nothing).
             let z = [o[2] + sp * k as f64, o[2] + sp * (k + 1) as f64];
             let lim = limit(acc).min(tb);
+            if path.inv[2].is_finite() {
+                let near = if up { z[0] - path.pad } else { z[1] + path.pad };
+                if (near - path.p0[2]) * path.inv[2] > lim {
+                    break;
+                }
+            }
             let strip = ([f64::MIN, f64::MIN, z[0]], [f64::MAX, f64::MAX, z[1]]);
             let Some((t0, t1)) = path.clip(strip.0, strip.1, lim) else {
-                break;
+                continue;
             };
             let (xlo, xhi) = span(0, t0.max(ta), t1);
-            let (i0, i1) = (cell(xlo, 0, w), cell(xhi, 0, w));
+            let (i0, i1) = (
+                (cell(xlo, 0, w) - 1).max(0),
+                (cell(xhi, 0, w) + 1).min(w - 1),
+            );
             for m in 0..=(i1 - i0) {
                 let i = if right { i0 + m } else { i1 - m };
                 let x = [o[0] + sp * i as f64, o[0] + sp * (i + 1) as f64];
@@ -133,10 +156,16 @@ impl<S: Scalar> Geometry<S> for Heightfield<'_, S> {
         Heightfield::cast(self, sweep)
     }
 
-    /// The triangles of the cells under the box whose heights reach into it.
+    /// The triangles of the cells under the box whose heights reach into it (the box grown by
+    /// a bound on the rounding of the vertices).
     fn visit(&self, min: Vec3<S>, max: Vec3<S>, f: &mut dyn FnMut(usize, &StandardTriangle<S>)) {
+        if self.cells_count().is_none() {
+            return;
+        }
         let (o, sp) = (self.origin.to_array().map(S::to_f64), self.spacing.to_f64());
-        let (lo, hi) = (min.to_array().map(S::to_f64), max.to_array().map(S::to_f64));
+        let slack = crate::bvh::rounding_pad::<S>(0.0, 0.0, self.extent());
+        let lo = min.to_array().map(|v| v.to_f64() - slack);
+        let hi = max.to_array().map(|v| v.to_f64() + slack);
         // Cells along one axis that the box's span covers, clamped to the grid (empty if none).
         let range = |a: usize, n: u32| {
             let at = |v: f64| libm::floor((v - o[a]) / sp);

@@ -214,7 +214,13 @@ fn main() {
             run.name, run.contacts, run.speed
         );
     }
-    let file = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("target/demo.svg");
+    // The repository's `target/` (this package lives in `examples/demo/`).
+    let manifest = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+    let file = manifest
+        .ancestors()
+        .nth(2)
+        .unwrap_or(manifest)
+        .join("target/demo.svg");
     match picture(&runs, &file) {
         Ok(()) => println!("picture: {}", file.display()),
         Err(e) => {
