@@ -142,30 +142,7 @@ fn memory_is_what_the_builds_make<S: Scalar>() {
     );
 }
 
-macro_rules! per_scalar {
-    ($($test:ident),* $(,)?) => {$(
-        mod $test {
-            #[test]
-            fn f32() {
-                super::$test::<f32>()
-            }
-            #[test]
-            fn f64() {
-                super::$test::<f64>()
-            }
-            #[test]
-            fn i16f16() {
-                super::$test::<super::I16F16>()
-            }
-            #[test]
-            fn i32f32() {
-                super::$test::<super::I32F32>()
-            }
-        }
-    )*};
-}
-
-per_scalar!(
+meshes::per_scalar!(
     matches_prepared_mesh,
     errors_not_panics,
     memory_is_what_the_builds_make

@@ -457,34 +457,7 @@ fn edge_cases_match_the_scan<S: Scalar>() {
     assert!(hits > 1000, "{hits} hits");
 }
 
-macro_rules! per_scalar {
-    ($($test:ident $(#[$attr:meta])*),* $(,)?) => {$(
-        mod $test {
-            $(#[$attr])*
-            #[test]
-            fn f32() {
-                super::$test::<f32>()
-            }
-            $(#[$attr])*
-            #[test]
-            fn f64() {
-                super::$test::<f64>()
-            }
-            $(#[$attr])*
-            #[test]
-            fn i16f16() {
-                super::$test::<super::I16F16>()
-            }
-            $(#[$attr])*
-            #[test]
-            fn i32f32() {
-                super::$test::<super::I32F32>()
-            }
-        }
-    )*};
-}
-
-per_scalar!(
+meshes::per_scalar!(
     prepared_as_mesh,
     matches_linear_scan,
     slides_as_mesh,

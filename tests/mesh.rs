@@ -305,34 +305,7 @@ fn verify_baked_parts<S: Scalar>() {
     assert_eq!(verify(&input), Err(MeshError::Mismatch));
 }
 
-macro_rules! per_scalar {
-    ($($test:ident $(#[$attr:meta])*),* $(,)?) => {$(
-        mod $test {
-            $(#[$attr])*
-            #[test]
-            fn f32() {
-                super::$test::<f32>()
-            }
-            $(#[$attr])*
-            #[test]
-            fn f64() {
-                super::$test::<f64>()
-            }
-            $(#[$attr])*
-            #[test]
-            fn i16f16() {
-                super::$test::<super::I16F16>()
-            }
-            $(#[$attr])*
-            #[test]
-            fn i32f32() {
-                super::$test::<super::I32F32>()
-            }
-        }
-    )*};
-}
-
-per_scalar!(
+meshes::per_scalar!(
     matches_linear_scan,
     active_edges_are_scenes,
     deterministic,

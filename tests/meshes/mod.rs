@@ -187,3 +187,34 @@ pub fn against_linear<S: Scalar>(rng: &mut Rng, src: &[[P; 3]], sweeps: usize, h
     // The sweeps must exercise the tree: a fair share of them hit something.
     assert!(hits > sweeps / 10, "only {hits} of {sweeps} sweeps hit");
 }
+
+/// One test module per property, with a test per scalar: `per_scalar!(a, b #[ignore = ".."])`
+/// runs `a::<f32>()`, `a::<f64>()`, `a::<I16F16>()` and `a::<I32F32>()` as `a::f32` and so on
+/// (the test file imports `I16F16` and `I32F32`).
+macro_rules! per_scalar {
+    ($($test:ident $(#[$attr:meta])*),* $(,)?) => {$(
+        mod $test {
+            $(#[$attr])*
+            #[test]
+            fn f32() {
+                super::$test::<f32>()
+            }
+            $(#[$attr])*
+            #[test]
+            fn f64() {
+                super::$test::<f64>()
+            }
+            $(#[$attr])*
+            #[test]
+            fn i16f16() {
+                super::$test::<super::I16F16>()
+            }
+            $(#[$attr])*
+            #[test]
+            fn i32f32() {
+                super::$test::<super::I32F32>()
+            }
+        }
+    )*};
+}
+pub(crate) use per_scalar;
