@@ -191,6 +191,7 @@ pub fn against_linear<S: Scalar>(rng: &mut Rng, src: &[[P; 3]], sweeps: usize, h
 /// One test module per property, with a test per scalar: `per_scalar!(a, b #[ignore = ".."])`
 /// runs `a::<f32>()`, `a::<f64>()`, `a::<I16F16>()` and `a::<I32F32>()` as `a::f32` and so on
 /// (the test file imports `I16F16` and `I32F32`).
+#[allow(unused_macros)] // not every test that shares this module has per-scalar properties
 macro_rules! per_scalar {
     ($($test:ident $(#[$attr:meta])*),* $(,)?) => {$(
         mod $test {
@@ -217,4 +218,5 @@ macro_rules! per_scalar {
         }
     )*};
 }
+#[allow(unused_imports)]
 pub(crate) use per_scalar;
