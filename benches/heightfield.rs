@@ -5,10 +5,7 @@
 //!
 //! Run: `cargo bench --bench heightfield -- --warm-up-time 1 --measurement-time 3`
 
-use ballcast::bvh::nodes_for;
-use ballcast::{
-    CompactMesh, Degenerates, Geometry, Mesh, MeshIndex, Node, Scalar, StandardTriangle, Sweep,
-};
+use ballcast::{CompactMesh, Geometry, Mesh, MeshIndex, Scalar, StandardTriangle, Sweep};
 use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
 use fixed::types::I16F16;
 use std::hint::black_box;
@@ -28,19 +25,8 @@ fn hits<S: Scalar, G: Geometry<S>>(geometry: &G, sweeps: &[Sweep<S>]) -> usize {
 fn compare<S: Scalar>(c: &mut Criterion, name: &str, w: usize) {
     let level = Level::<S>::new(w);
     let hf = level.heightfield();
-    let (src, n) = (&level.triangles, level.triangles.len());
-    let mut nodes = vec![Node::default(); nodes_for(n)];
-    let mut tris = vec![Mesh::<S>::filler(); n];
-    let (mut order, mut scratch) = (vec![0u32; n], vec![0u64; 6 * n]);
-    let (mesh, _) = Mesh::build(
-        src,
-        Degenerates::Refuse,
-        &mut nodes,
-        &mut tris,
-        &mut order,
-        &mut scratch,
-    )
-    .unwrap();
+    let n = level.triangles.len();
+    let mesh = level.mesh();
     let mesh_bytes =
         size_of_val(mesh.nodes()) + n * (size_of::<StandardTriangle<S>>() + size_of::<u32>());
     let field_bytes = size_of_val(hf.heights()) + hf.cells().len();

@@ -4,8 +4,7 @@
 //!
 //! Run: `cargo run --release --example memory`
 
-use ballcast::bvh::nodes_for;
-use ballcast::{CompactMesh, Degenerates, Mesh, MeshIndex, Node, Scalar};
+use ballcast::{CompactMesh, Mesh, MeshIndex, Scalar};
 use fixed::types::{I16F16, I32F32};
 
 mod inputs;
@@ -15,18 +14,7 @@ mod terrain;
 fn bytes<S: Scalar>(w: usize) -> [usize; 3] {
     let level = terrain::Level::<S>::new(w);
     let n = level.triangles.len();
-    let mut nodes = vec![Node::default(); nodes_for(n)];
-    let mut tris = vec![Mesh::<S>::filler(); n];
-    let (mut order, mut scratch) = (vec![0u32; n], vec![0u64; 6 * n]);
-    let (mesh, _) = Mesh::build(
-        &level.triangles,
-        Degenerates::Refuse,
-        &mut nodes,
-        &mut tris,
-        &mut order,
-        &mut scratch,
-    )
-    .unwrap();
+    let mesh = level.mesh();
     let prepared =
         size_of_val(mesh.nodes()) + size_of_val(mesh.triangles()) + size_of_val(mesh.order());
     let compact = if level.vertices.len().max(n) <= u16::MAX as usize + 1 {

@@ -5,8 +5,7 @@
 //! --tool=callgrind target/release/examples/terrain_counts W [f32|i16f16]`, then `callgrind_annotate
 //! --inclusive=yes` (`short_*` and `long_*`, 256 sweeps each). W: 16, 64 or 224 cells a side.
 
-use ballcast::bvh::nodes_for;
-use ballcast::{CompactMesh, Degenerates, Geometry, Mesh, MeshIndex, Node, Scalar, Sweep};
+use ballcast::{CompactMesh, Geometry, Mesh, MeshIndex, Scalar, Sweep};
 use fixed::types::I16F16;
 use std::hint::black_box;
 
@@ -42,19 +41,7 @@ queries!(
 fn run<S: Scalar>(w: usize) {
     let level = terrain::Level::<S>::new(w);
     let hf = level.heightfield();
-    let n = level.triangles.len();
-    let mut nodes = vec![Node::default(); nodes_for(n)];
-    let mut tris = vec![Mesh::<S>::filler(); n];
-    let (mut order, mut scratch) = (vec![0u32; n], vec![0u64; 6 * n]);
-    let (mesh, _) = Mesh::build(
-        &level.triangles,
-        Degenerates::Refuse,
-        &mut nodes,
-        &mut tris,
-        &mut order,
-        &mut scratch,
-    )
-    .unwrap();
+    let mesh = level.mesh();
     let mut rng = inputs::Rng(0x4D45_5348 + w as u64);
     let short = inputs::sweeps::<S>(&terrain::short_moves(w, &mut rng));
     let long = inputs::sweeps::<S>(&terrain::long_casts(w, &mut rng));

@@ -87,6 +87,11 @@ pub struct Level<S: ballcast::Scalar> {
     pub triangles: Vec<ballcast::Triangle<S>>,
     pub vertices: Vec<ballcast::Vec3<S>>,
     pub indices: Vec<[u32; 3]>,
+    /// The prepared mesh of the same triangles: nodes, prepared triangles, order and grid.
+    nodes: Vec<ballcast::Node>,
+    prepared: Vec<ballcast::StandardTriangle<S>>,
+    order: Vec<u32>,
+    grid: ballcast::Grid,
 }
 
 impl<S: ballcast::Scalar> Level<S> {
@@ -101,7 +106,8 @@ impl<S: ballcast::Scalar> Level<S> {
         let mut cells = vec![0u8; w * w];
         let hf = Self::build(w, &heights, &mut cells);
         let (bounds, class) = (hf.bounds(), hf.class());
-        let triangles = (0..hf.len()).filter_map(|t| hf.triangle(t)).collect();
+        let triangles: Vec<ballcast::Triangle<S>> =
+            (0..hf.len()).filter_map(|t| hf.triangle(t)).collect();
         let vertices = (0..(w + 1) * (w + 1))
             .map(|v| {
                 hf.vertex((v % (w + 1)) as u32, (v / (w + 1)) as u32)
@@ -121,6 +127,22 @@ impl<S: ballcast::Scalar> Level<S> {
                 }
             })
             .collect();
+        let n = 2 * w * w;
+        let mut nodes = vec![ballcast::Node::default(); ballcast::bvh::nodes_for(n)];
+        let mut prepared = vec![ballcast::Mesh::<S>::filler(); n];
+        let (mut order, mut scratch) = (vec![0u32; n], vec![0u64; 6 * n]);
+        let refuse = ballcast::Degenerates::Refuse;
+        let (mesh, _) = ballcast::Mesh::build(
+            &triangles,
+            refuse,
+            &mut nodes,
+            &mut prepared,
+            &mut order,
+            &mut scratch,
+        )
+        .unwrap();
+        let (used, grid) = (mesh.nodes().len(), mesh.grid());
+        nodes.truncate(used);
         Self {
             w,
             heights,
@@ -130,7 +152,16 @@ impl<S: ballcast::Scalar> Level<S> {
             triangles,
             vertices,
             indices,
+            nodes,
+            prepared,
+            order,
+            grid,
         }
+    }
+
+    /// The prepared mesh of the level's triangles.
+    pub fn mesh(&self) -> ballcast::Mesh<'_, S> {
+        ballcast::Mesh::from_parts(&self.nodes, &self.prepared, &self.order, self.grid)
     }
 
     fn build<'a>(
