@@ -203,7 +203,7 @@ impl<'a, S: Scalar> Heightfield<'a, S> {
         ];
         // Every column and row number must be exact in the scalar (I16F16 stops at 32 767),
         // or the vertices would not be where the walk looks for them.
-        let exact = |n: u32| S::from_f64(n as f64).to_f64() == n as f64;
+        let exact = |n: u32| n <= i32::MAX as u32 && S::from_int(n as i32).to_f64() == n as f64;
         if ends.iter().flatten().any(|v| v.abs() > limit) || !exact(columns) || !exact(rows) {
             return Err(HeightfieldError::OutOfRange);
         }
@@ -285,11 +285,12 @@ impl<'a, S: Scalar> Heightfield<'a, S> {
             .checked_mul(self.columns as usize + 1)?
             .checked_add(column as usize)?;
         let h = *self.heights.get(at)?;
-        let step = |n: f64| S::from_f64(n);
+        // Indices beyond i32 saturate; `build` refuses grids whose indices are not exact.
+        let n = |i: u32| S::from_int(i.min(i32::MAX as u32) as i32);
         Some(Vec3::new(
-            self.origin.x + self.spacing.mul(step(column as f64)),
-            self.origin.y + self.unit.mul(step(h as f64)),
-            self.origin.z + self.spacing.mul(step(row as f64)),
+            self.origin.x + self.spacing.mul(n(column)),
+            self.origin.y + self.unit.mul(S::from_int(h as i32)),
+            self.origin.z + self.spacing.mul(n(row)),
         ))
     }
 

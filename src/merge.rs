@@ -80,10 +80,17 @@ impl<S: Scalar> Earliest<S> {
             }
             self.ties.pop();
         }
-        // Room was made above: the insert cannot fail.
-        let _ = self
+        // Room was made above, so the push succeeds; then the entry rotates into place. (No
+        // `insert`: its index assertion would leave a panic path the optimiser cannot remove.)
+        if self
             .ties
-            .insert(at, (index, hit.alpha, hit.normal, hit.contact));
+            .push((index, hit.alpha, hit.normal, hit.contact))
+            .is_ok()
+            && let Some(tail) = self.ties.get_mut(at..)
+            && !tail.is_empty()
+        {
+            tail.rotate_right(1);
+        }
     }
 
     fn finish(self) -> Option<SceneHit<S>> {

@@ -260,6 +260,10 @@ macro_rules! fixed_scalar {
             fn unit_to_scalar(u: $unit) -> Self {
                 <$t>::from_bits(round_shift!(u.to_bits() as $wide, $ufrac - $frac) as $bits)
             }
+            #[inline]
+            fn from_int(n: i32) -> Self {
+                <$t>::saturating_from_num(n)
+            }
         }
     };
 }

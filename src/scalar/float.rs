@@ -160,6 +160,10 @@ macro_rules! float_scalar {
             fn unit_to_scalar(u: Self) -> Self {
                 u
             }
+            #[inline]
+            fn from_int(n: i32) -> Self {
+                n as Self
+            }
         }
     };
 }

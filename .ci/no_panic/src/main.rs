@@ -1,4 +1,5 @@
-//! `#[no_mangle]` wrappers around `StandardTriangle::new`, `Sweep::new`, `face_collision` and `cast` for
+//! `#[no_mangle]` wrappers around `StandardTriangle::new`, `Sweep::new`, `face_collision`, `cast` and
+//! the scene-level casts (a slice, `Mesh`, `CompactMesh`, `Heightfield`) for
 //! every scalar, linked for a bare-metal target in release. Without the default `triangle`
 //! feature the triangle constructor is left out: the face wrappers then take their triangle from
 //! an opaque static, so the face test is checked on its own. The panic handler calls a function
@@ -9,7 +10,10 @@
 #![no_std]
 #![no_main]
 
-use ballcast::{Error, Hit, StandardTriangle, Sweep, Triangle, Vec3};
+use ballcast::{
+    CompactMesh, Error, Geometry, Grid, Heightfield, Hit, Mesh, SceneHit, StandardTriangle, Sweep,
+    Triangle, Vec3,
+};
 use core::hint::black_box;
 use fixed::types::{I16F16, I32F32};
 
@@ -33,7 +37,7 @@ fn panic(_: &core::panic::PanicInfo) -> ! {
 }
 
 macro_rules! wrappers {
-    ($t:ty, $tri:ident, $sweep:ident, $face:ident, $cast:ident, $run:ident) => {
+    ($t:ty, $tri:ident, $sweep:ident, $face:ident, $cast:ident, $geometry:ident, $run:ident) => {
         #[cfg(feature = "triangle")]
         #[unsafe(no_mangle)]
         #[inline(never)]
@@ -44,7 +48,8 @@ macro_rules! wrappers {
         /// Without the constructor: a triangle the optimiser knows nothing about.
         #[cfg(not(feature = "triangle"))]
         fn $tri(_: &Triangle<$t>) -> Result<StandardTriangle<$t>, Error> {
-            static SLOT: Result<StandardTriangle<$t>, Error> = Err(Error::Degenerate { triangle: None });
+            static SLOT: Result<StandardTriangle<$t>, Error> =
+                Err(Error::Degenerate { triangle: None });
             *black_box(&SLOT)
         }
 
@@ -67,6 +72,20 @@ macro_rules! wrappers {
             t.cast(s)
         }
 
+        /// The scene-level queries: a slice's linear scan (the merge of simultaneous contacts),
+        /// a mesh's tree, a compact mesh and a heightfield.
+        #[unsafe(no_mangle)]
+        #[inline(never)]
+        pub fn $geometry(
+            t: &[StandardTriangle<$t>],
+            m: &Mesh<'_, $t>,
+            c: &CompactMesh<'_, $t>,
+            h: &Heightfield<'_, $t>,
+            s: &Sweep<$t>,
+        ) -> [Option<SceneHit<$t>>; 4] {
+            [t.cast(s), m.cast(s), c.cast(s), h.cast(s)]
+        }
+
         /// Calls the wrappers on values the optimiser cannot see.
         fn $run() {
             let tri = black_box(Triangle::<$t>::default());
@@ -76,6 +95,25 @@ macro_rules! wrappers {
             if let (Ok(st), Ok(s)) = (st, s) {
                 black_box($face(&st, &s));
                 black_box($cast(&st, &s));
+                let many = [st; 3];
+                let m = black_box(Mesh::from_parts(
+                    &[],
+                    black_box(&many[..]),
+                    &[],
+                    Grid::default(),
+                ));
+                let c = black_box(CompactMesh::from_parts(
+                    &[],
+                    Grid::default(),
+                    &[],
+                    &[],
+                    &[],
+                    &[],
+                    0,
+                ));
+                let z = black_box(<$t>::default());
+                let h = black_box(Heightfield::from_parts(v, z, z, 1, 1, &[], &[], [0, 0], 0));
+                black_box($geometry(black_box(&many[..]), &m, &c, &h, &s));
             }
         }
     };
@@ -87,6 +125,7 @@ wrappers!(
     ballcast_f32_sweep,
     ballcast_f32_face,
     ballcast_f32_cast,
+    ballcast_f32_geometry,
     run_f32
 );
 wrappers!(
@@ -95,6 +134,7 @@ wrappers!(
     ballcast_f64_sweep,
     ballcast_f64_face,
     ballcast_f64_cast,
+    ballcast_f64_geometry,
     run_f64
 );
 wrappers!(
@@ -103,6 +143,7 @@ wrappers!(
     ballcast_i16f16_sweep,
     ballcast_i16f16_face,
     ballcast_i16f16_cast,
+    ballcast_i16f16_geometry,
     run_i16f16
 );
 wrappers!(
@@ -111,6 +152,7 @@ wrappers!(
     ballcast_i32f32_sweep,
     ballcast_i32f32_face,
     ballcast_i32f32_cast,
+    ballcast_i32f32_geometry,
     run_i32f32
 );
 
