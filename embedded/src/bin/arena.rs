@@ -16,26 +16,15 @@ use panic_semihosting as _;
 mod arena;
 #[path = "../lockstep.rs"]
 mod lockstep;
+#[path = "../stack.rs"]
+mod stack;
 mod level {
     include!(concat!(env!("OUT_DIR"), "/arena.rs"));
 }
 
-const PAINT: u32 = 0xDEAD_BEEF;
-
-unsafe extern "C" {
-    /// The end of static data: the stack grows down towards it (cortex-m-rt's link.x).
-    static mut __sheap: u32;
-}
-
 #[entry]
 fn main() -> ! {
-    let start = &raw mut __sheap;
-    let sp = cortex_m::register::msp::read() as usize - 256;
-    let words = (sp - start as usize) / 4;
-    for i in 0..words {
-        // SAFETY: the words lie between the end of static data and below the live stack.
-        unsafe { start.add(i).write_volatile(PAINT) };
-    }
+    let painted = stack::paint();
     let o = arena::simulate::<I16F16, _>(&level::MESH, arena::THROWS, arena::STEPS_PER_THROW);
     hprintln!("I16F16 {:016x}", o.hash);
     hprintln!(
@@ -48,11 +37,7 @@ fn main() -> ! {
         o.contacts,
         o.escapes
     );
-    // SAFETY: as above; only read.
-    let untouched = (0..words)
-        .take_while(|&i| unsafe { start.add(i).read_volatile() } == PAINT)
-        .count();
-    hprintln!("stack: {} bytes of RAM never touched", untouched * 4);
+    hprintln!("stack: {} bytes of RAM never touched", painted.untouched());
     debug::exit(debug::EXIT_SUCCESS);
     loop {
         cortex_m::asm::wfi();
