@@ -54,9 +54,10 @@
 //!
 //! Culling is conservative: a box is grown by `r`, by a bound on every rounding between the
 //! exact segment and what [`StandardTriangle::cast`](crate::StandardTriangle::cast) computes —
-//! `64 EPSILON` per unit of the path's length and of the coordinates' magnitude (floats;
-//! `1/1024` of that for fixed point, whose frames round to 30 or 62 fractional bits), `64
-//! EPSILON` absolute, `2^-40` of the magnitudes for the `f64` arithmetic here, two grid cells,
+//! `8 EPSILON` per unit of the path's largest component (a contact's alpha is rounded by up to
+//! half a step, `EPSILON / 2`, which moves it along the path by that much per unit of length),
+//! `192 EPSILON` per unit of the coordinates' magnitude (floats; `1/1024` of that for fixed
+//! point, whose frames round to 30 or 62 fractional bits), `64 EPSILON` absolute, `2^-40` of the magnitudes for the `f64` arithmetic here, two grid cells,
 //! and for the `f32` node tests (a few roundings of `2^-24` of their terms) `2^-19` of twice the
 //! magnitudes in cells plus a node's largest extent (2^26 cells), with the whole pad grown by
 //! `2^-19` of itself — and by `2^c` seam margins `r / 64 + 4 EPSILON`. The face test moves a triangle's inactive

@@ -48,9 +48,15 @@ fn matches_prepared_mesh<S: Scalar>() {
         let compact =
             CompactMesh::compact(&mesh, &vertices, &indices, &mut t, &mut o, &mut b).unwrap();
         assert_eq!(compact.len(), n);
-        for _ in 0..700 {
-            let (p0, p1) = (rng.point(half), rng.point(half));
-            let r = S::from_f64(rng.range(0.05, 1.0));
+        for k in 0..1000 {
+            let (p0, p1, r) = if k % 10 < 7 {
+                (rng.point(half), rng.point(half), rng.range(0.05, 1.0))
+            } else {
+                // A long path grazing an edge or vertex at the radius.
+                let length = rng.range(50.0, 250.0);
+                meshes::grazing(&mut rng, &src, length)
+            };
+            let r = S::from_f64(r);
             let sweep = Sweep::new(v::<S>(p0), v(p1), r).unwrap();
             let (x, y) = (compact.cast(&sweep), mesh.cast(&sweep));
             assert_eq!(format!("{x:?}"), format!("{y:?}"), "{p0:?} -> {p1:?}");

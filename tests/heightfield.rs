@@ -11,7 +11,7 @@ use ballcast::{
     Degenerates, Geometry, Heightfield, HeightfieldError, Scalar, SceneHit, Sweep, Triangle, Vec3,
     heightfield::HOLE,
 };
-use common::{Rng, v};
+use common::{P, Rng, v};
 use fixed::types::{I16F16, I32F32};
 
 /// A terrain's inputs: heights, holes and frame.
@@ -128,15 +128,28 @@ fn matches_linear_scan_n<S: Scalar>(terrains: u64, sweeps: usize) {
         let owned = meshes::build(&input, Degenerates::Refuse).unwrap();
         let linear = owned.linear();
         let half = [c as f64 * t.spacing / 2.0, 4.0, r as f64 * t.spacing / 2.0];
+        let points: Vec<[P; 3]> = input
+            .iter()
+            .map(|t| t.vertices().map(|p| p.to_array().map(S::to_f64)))
+            .collect();
         for n in 0..sweeps {
             let p0 = [0, 1, 2].map(|a| rng.range(-half[a] - 1.0, half[a] + 1.0));
-            let p1 = if n % 2 == 0 {
+            let (p0, p1, radius) = match n % 4 {
                 // A short move near where it starts.
-                [0, 1, 2].map(|a| p0[a] + rng.range(-0.8, 0.8))
-            } else {
-                [0, 1, 2].map(|a| rng.range(-half[a] - 1.0, half[a] + 1.0))
+                0 | 2 => (p0, [0, 1, 2].map(|a| p0[a] + rng.range(-0.8, 0.8)), None),
+                1 => (
+                    p0,
+                    [0, 1, 2].map(|a| rng.range(-half[a] - 1.0, half[a] + 1.0)),
+                    None,
+                ),
+                // A long path grazing an edge or vertex at the radius.
+                _ => {
+                    let length = rng.range(50.0, 250.0);
+                    let (p0, p1, r) = meshes::grazing(&mut rng, &points, length);
+                    (p0, p1, Some(r))
+                }
             };
-            let radius = S::from_f64(rng.range(0.05, 1.0));
+            let radius = S::from_f64(radius.unwrap_or_else(|| rng.range(0.05, 1.0)));
             let sweep = Sweep::new(v::<S>(p0), v(p1), radius).unwrap();
             let mut want = linear.as_slice().cast(&sweep);
             if let Some(h) = want.as_mut() {

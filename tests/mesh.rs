@@ -12,7 +12,7 @@ use ballcast::{
 };
 use common::{Rng, v};
 use fixed::types::{I16F16, I32F32};
-use meshes::{against_linear, boxes, build, heightfield, soup, tri};
+use meshes::{against_linear, against_linear_by, boxes, build, heightfield, soup, tri};
 
 fn sweeps_on_all<S: Scalar>(per_shape: usize) {
     let mut rng = Rng(0x5eed_0001);
@@ -37,6 +37,24 @@ fn matches_linear_scan_long<S: Scalar>() {
         against_linear::<S>(&mut rng, &b, 3000, 16.0);
         let s = soup(&mut rng, 600, 8.0);
         against_linear::<S>(&mut rng, &s, 3000, 9.0);
+    }
+}
+
+/// Paths 50–250 units long that graze an edge or vertex at the radius: the tree's boxes are
+/// grown for the rounding that grows with the path's length (alpha's last step times the
+/// length), and no such contact is culled.
+fn long_grazing_paths<S: Scalar>() {
+    let mut rng = Rng(0x5eed_0005);
+    let shapes = [
+        heightfield(&mut rng, 12, 1.0, 0.65),
+        boxes(&mut rng, 16, 5.0),
+        soup(&mut rng, 200, 4.0),
+    ];
+    for src in shapes {
+        against_linear_by::<S>(&mut rng, &src, 1500, |rng, _| {
+            let length = rng.range(50.0, 250.0);
+            meshes::grazing(rng, &src, length)
+        });
     }
 }
 
@@ -307,6 +325,7 @@ fn verify_baked_parts<S: Scalar>() {
 
 meshes::per_scalar!(
     matches_linear_scan,
+    long_grazing_paths,
     active_edges_are_scenes,
     deterministic,
     range_edges,

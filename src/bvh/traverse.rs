@@ -24,7 +24,7 @@ pub(crate) fn rounding_pad<S: Scalar>(r: f64, length: f64, magnitude: f64) -> f6
     } else {
         1.0 / 1024.0
     };
-    r + eps * 64.0 * (1.0 + 3.0 * length)
+    r + eps * (64.0 + 8.0 * length)
         + (64.0 * eps * per_unit + 1.0 / (1u64 << 40) as f64) * 3.0 * magnitude
 }
 

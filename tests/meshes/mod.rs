@@ -145,14 +145,7 @@ pub fn soup(rng: &mut Rng, count: usize, half: f64) -> Vec<[P; 3]> {
 /// Builds the mesh of `src` (skipping degenerates) and checks `sweeps` random sweeps within
 /// ±`half` against the linear scan; long paths, short moves, and paths aimed at vertices.
 pub fn against_linear<S: Scalar>(rng: &mut Rng, src: &[[P; 3]], sweeps: usize, half: f64) {
-    let input: Vec<Triangle<S>> = src.iter().map(|&t| tri(t)).collect();
-    let owned = build(&input, Degenerates::Skip).unwrap();
-    let mesh = owned.mesh();
-    let linear = owned.linear();
-    let mut kept: Vec<u32> = owned.order.clone();
-    kept.sort();
-    let mut hits = 0;
-    for k in 0..sweeps {
+    against_linear_by::<S>(rng, src, sweeps, |rng, k| {
         let r = match k % 4 {
             0 => 0.0,
             1 => rng.range(0.01, 0.2),
@@ -173,6 +166,26 @@ pub fn against_linear<S: Scalar>(rng: &mut Rng, src: &[[P; 3]], sweeps: usize, h
                 [0, 1, 2].map(|a| p0[a] + e * (at[a] - p0[a]))
             }
         };
+        (p0, p1, r)
+    });
+}
+
+/// Checks `sweeps` sweeps made by `sweep(rng, k)` (start, end, radius) against the linear scan.
+pub fn against_linear_by<S: Scalar>(
+    rng: &mut Rng,
+    src: &[[P; 3]],
+    sweeps: usize,
+    mut sweep: impl FnMut(&mut Rng, usize) -> (P, P, f64),
+) {
+    let input: Vec<Triangle<S>> = src.iter().map(|&t| tri(t)).collect();
+    let owned = build(&input, Degenerates::Skip).unwrap();
+    let mesh = owned.mesh();
+    let linear = owned.linear();
+    let mut kept: Vec<u32> = owned.order.clone();
+    kept.sort();
+    let mut hits = 0;
+    for k in 0..sweeps {
+        let (p0, p1, r) = sweep(rng, k);
         let Ok(sweep) = Sweep::new(v::<S>(p0), v(p1), S::from_f64(r)) else {
             continue;
         };
@@ -186,6 +199,49 @@ pub fn against_linear<S: Scalar>(rng: &mut Rng, src: &[[P; 3]], sweeps: usize, h
     }
     // The sweeps must exercise the tree: a fair share of them hit something.
     assert!(hits > sweeps / 10, "only {hits} of {sweeps} sweeps hit");
+}
+
+/// A long path (`length` units) that grazes a feature of a random triangle of `src`: its line
+/// passes a vertex or a point of an edge at the radius, within ±1 %, so the answer hangs on
+/// the last steps of rounding (what the culling's pad must allow for). Half of them pass the
+/// mesh's extreme vertex along an axis, square to it, where every box holding it ends: a box
+/// grown by the radius alone would cut them off. Returns start, end and radius.
+pub fn grazing(rng: &mut Rng, src: &[[P; 3]], length: f64) -> (P, P, f64) {
+    use crate::common::{add, cross, norm, scale, sub};
+    let t = src[(rng.next() * src.len() as f64) as usize];
+    let unit = |a: P| scale(a, 1.0 / norm(a));
+    let (f, u, o) = if rng.next() < 0.5 {
+        let (a, up) = ((rng.next() * 3.0) as usize, rng.next() < 0.5);
+        let sign = if up { 1.0 } else { -1.0 };
+        let f = *src
+            .iter()
+            .flatten()
+            .max_by(|p, q| (sign * p[a]).total_cmp(&(sign * q[a])))
+            .unwrap();
+        let mut u = rng.point(1.0);
+        u[a] = 0.0;
+        let mut o = [0.0; 3];
+        o[a] = sign;
+        (f, unit(u), o)
+    } else {
+        let i = (rng.next() * 3.0) as usize;
+        // A vertex a third of the time, else a point of an edge.
+        let f = if rng.next() < 1.0 / 3.0 {
+            t[i]
+        } else {
+            add(t[i], scale(sub(t[(i + 1) % 3], t[i]), rng.next()))
+        };
+        let u = unit(rng.point(1.0));
+        (f, u, unit(cross(u, rng.point(1.0))))
+    };
+    let r = rng.range(0.05, 1.0);
+    let closest = add(f, scale(o, r * rng.range(0.99, 1.01)));
+    let before = length * rng.range(0.05, 0.95);
+    (
+        sub(closest, scale(u, before)),
+        add(closest, scale(u, length - before)),
+        r,
+    )
 }
 
 /// One test module per property, with a test per scalar: `per_scalar!(a, b #[ignore = ".."])`
