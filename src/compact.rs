@@ -278,7 +278,7 @@ impl<'a, S: Scalar, I: MeshIndex> CompactMesh<'a, S, I> {
                     if let Some(span) = path.clip(lo, hi, limit)
                         && path.near_plane(v, span)
                         && let Some((i, t)) = slot(s)
-                        && let Some(hit) = t.cast(sweep)
+                        && let Some(hit) = t.cast_within(sweep, acc.reach())
                     {
                         acc.offer(i, hit);
                     }

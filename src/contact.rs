@@ -141,15 +141,17 @@ impl<S: Scalar> StandardTriangle<S> {
     /// # Ok::<(), ballcast::Error>(())
     /// ```
     pub fn cast(&self, sweep: &Sweep<S>) -> Option<Hit<S>> {
+        self.cast_within(sweep, S::ONE)
+    }
+
+    /// [`cast`](Self::cast) where only contacts at alpha `reach` or earlier matter: the same
+    /// answer when it is one of those, possibly `None` when `cast`'s contact would come later.
+    /// A scene passes the reach of the contacts it has so far, which rejects a triangle whose
+    /// plane the ball is still too high above at that alpha before any of the transform.
+    pub(crate) fn cast_within(&self, sweep: &Sweep<S>, reach: S) -> Option<Hit<S>> {
         let (y0, y1) = self.heights(sweep);
-        // Towards the back (or along the plane behind it): a one-sided triangle ignores it, a
-        // two-sided one mirrors y.
-        let back = y1 > y0 || (y1 == y0 && y0 < S::ZERO);
-        let (start, end) = if back { (-y0, -y1) } else { (y0, y1) };
-        // Contact needs the centre to start on the side it moves towards and to come within r
-        // of the plane: decided by the heights, before the rest of the transform. A path along
-        // the plane counts only where the ball starts overlapping the triangle.
-        if (back && !self.two_sided) || start < S::ZERO || end >= sweep.radius() {
+        let (back, start, end) = self.facing(sweep, (y0, y1))?;
+        if reach < S::ONE && above_at(sweep, (start, end), reach) {
             return None;
         }
         let mut s = self.standardize_from(sweep, (y0, y1));
@@ -185,6 +187,21 @@ impl<S: Scalar> StandardTriangle<S> {
             },
             contact,
         })
+    }
+
+    /// The side the sweep comes from (true: the back) and its heights as seen from that side,
+    /// or `None` where no contact is possible.
+    #[inline]
+    fn facing(&self, sweep: &Sweep<S>, (y0, y1): (S, S)) -> Option<(bool, S, S)> {
+        // Towards the back (or along the plane behind it): a one-sided triangle ignores it, a
+        // two-sided one mirrors y.
+        let back = y1 > y0 || (y1 == y0 && y0 < S::ZERO);
+        let (start, end) = if back { (-y0, -y1) } else { (y0, y1) };
+        // Contact needs the centre to start on the side it moves towards and to come within r
+        // of the plane: decided by the heights, before the rest of the transform. A path along
+        // the plane counts only where the ball starts overlapping the triangle.
+        let out = (back && !self.two_sided) || start < S::ZERO || end >= sweep.radius();
+        (!out).then_some((back, start, end))
     }
 
     /// `cast` for a sweep moving towards the front (or parallel to the plane).
@@ -333,6 +350,22 @@ impl<S: Scalar> StandardTriangle<S> {
         let offset = p0 - v + d.scale(beta);
         (offset.y >= S::ZERO).then_some(((beta, Some(offset), Contact::Vertex(i as u8)), key))
     }
+}
+
+/// Whether the ball's centre is still higher than `r` above the plane (heights `start` to
+/// `end`, falling) at alpha `reach`, by more than any rounding: then every contact with the
+/// triangle comes after `reach`. Every contact has the centre within `r` of a point of the plane
+/// at its alpha: exactly at the face's, and up to the rounding of the edge and vertex tests (a
+/// few steps of the heights' magnitude) plus that of alpha itself (half a step, times the
+/// path's length) at theirs; the bound allows for several times each.
+fn above_at<S: Scalar>(sweep: &Sweep<S>, (start, end): (S, S), reach: S) -> bool {
+    let r = sweep.radius();
+    let d = sweep.p1() - sweep.p0();
+    let length = largest(d.x.abs(), d.y.abs(), d.z.abs());
+    let m = largest(start.abs(), end.abs(), r);
+    let h = S::height_error(largest(m, length, S::ZERO));
+    let e = h + h + h + h + tie::<S>().mul(length) + tie::<S>().mul(length);
+    start + reach.mul(end - start) > r + e
 }
 
 /// The fraction of a path at which a point starting at offset `q0` from a feature, moving a

@@ -349,7 +349,7 @@ impl<'a, S: Scalar> Mesh<'a, S> {
             sound &= bvh::traverse(self.nodes, &self.grid, &seg, acc, |acc, slots| {
                 for s in slots {
                     if let (Some(t), Some(&i)) = (self.triangles.get(s), self.order.get(s))
-                        && let Some(hit) = t.cast(sweep)
+                        && let Some(hit) = t.cast_within(sweep, acc.reach())
                     {
                         acc.offer(i as usize, hit);
                     }

@@ -141,7 +141,7 @@ impl<S: Scalar> Heightfield<'_, S> {
                     if beside_diagonal(path, [x[0], z[0]], t % 2 == 0, span)
                         && path.near_plane(v, span)
                         && let Some(tri) = self.prepared(t)
-                        && let Some(hit) = tri.cast(sweep)
+                        && let Some(hit) = tri.cast_within(sweep, acc.reach())
                     {
                         acc.offer(t, hit);
                     }
