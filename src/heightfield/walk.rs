@@ -65,21 +65,24 @@ impl<S: Scalar> Heightfield<'_, S> {
         let Some((ta, tb)) = path.clip(whole.0, whole.1, limit(acc)) else {
             return;
         };
-        // The cell (along one axis) holding coordinate `v`, clamped to `0..n`.
-        let cell = |v: f64, a: usize, n: i64| {
-            let c = libm::floor((v - o[a]) / sp);
-            if c < 0.0 { 0 } else { (c as i64).min(n - 1) }
+        // The cells (along one axis) that may hold coordinate `v`, clamped to `0..n`: the one
+        // the division gives, and its neighbour where `v` lies within the division's rounding
+        // (a few ulps of the operands' magnitude, far below 2^-40 of it) of their border.
+        let cells = |v: f64, a: usize, n: i64| {
+            let q = (v - o[a]) / sp;
+            let e = (v.abs() + o[a].abs()) / sp / (1u64 << 40) as f64 + 1.0 / (1u64 << 40) as f64;
+            let at = |q: f64| {
+                let c = libm::floor(q);
+                if c < 0.0 { 0 } else { (c as i64).min(n - 1) }
+            };
+            (at(q - e), at(q + e))
         };
         let span = |a: usize, t0: f64, t1: f64| {
             let (u, v) = (path.p0[a] + path.d[a] * t0, path.p0[a] + path.d[a] * t1);
             (u.min(v) - path.pad, u.max(v) + path.pad)
         };
         let (zlo, zhi) = span(2, ta, tb);
-        // One row and column more on each side than the division gives: it may round.
-        let (k0, k1) = (
-            (cell(zlo, 2, h) - 1).max(0),
-            (cell(zhi, 2, h) + 1).min(h - 1),
-        );
+        let (k0, k1) = (cells(zlo, 2, h).0, cells(zhi, 2, h).1);
         let (up, right) = (path.d[2] >= 0.0, path.d[0] >= 0.0);
         for n in 0..=(k1 - k0) {
             let k = if up { k0 + n } else { k1 - n };
@@ -99,10 +102,7 @@ impl<S: Scalar> Heightfield<'_, S> {
                 continue;
             };
             let (xlo, xhi) = span(0, t0.max(ta), t1);
-            let (i0, i1) = (
-                (cell(xlo, 0, w) - 1).max(0),
-                (cell(xhi, 0, w) + 1).min(w - 1),
-            );
+            let (i0, i1) = (cells(xlo, 0, w).0, cells(xhi, 0, w).1);
             for m in 0..=(i1 - i0) {
                 let i = if right { i0 + m } else { i1 - m };
                 let x = [o[0] + sp * i as f64, o[0] + sp * (i + 1) as f64];
