@@ -275,8 +275,9 @@ impl<'a, S: Scalar, I: MeshIndex> CompactMesh<'a, S, I> {
                     };
                     let lo = [0, 1, 2].map(|a| v[0][a].min(v[1][a]).min(v[2][a]));
                     let hi = [0, 1, 2].map(|a| v[0][a].max(v[1][a]).max(v[2][a]));
+                    let two_sided = self.bytes.get(s).is_some_and(|b| b & TWO_SIDED != 0);
                     if let Some(span) = path.clip(lo, hi, limit)
-                        && path.near_plane(v, span)
+                        && path.near_plane(v, span, !two_sided)
                         && let Some((i, t)) = slot(s)
                         && let Some(hit) = t.cast_within(sweep, acc.reach())
                     {

@@ -12,6 +12,8 @@ pub(crate) struct Path {
     pub(crate) inv: [f64; 3],
     /// How far every box is grown: the radius, every rounding, and the seam margins.
     pub(crate) pad: f64,
+    /// The pad less the radius: more than the rounding of a triangle's heights in `cast`.
+    slack: f64,
 }
 
 impl Path {
@@ -34,6 +36,7 @@ impl Path {
             d,
             inv: d.map(|x| 1.0 / x),
             pad,
+            slack: pad - r,
         }
     }
 
@@ -61,8 +64,15 @@ impl Path {
 impl Path {
     /// Whether the path, over `[t0, t1]`, comes within the pad of the plane through `v`:
     /// every contact needs the ball within its radius of the triangle's plane. The distance
-    /// along the path is linear, so its ends decide.
-    pub(crate) fn near_plane(&self, v: [[f64; 3]; 3], (t0, t1): (f64, f64)) -> bool {
+    /// along the path is linear, so its ends decide. A one-sided triangle (front where `v` turns
+    /// counter-clockwise) is also passed by where the path starts behind its plane or moves
+    /// away from its front, beyond the rounding of the heights `cast` decides both by.
+    pub(crate) fn near_plane(
+        &self,
+        v: [[f64; 3]; 3],
+        (t0, t1): (f64, f64),
+        one_sided: bool,
+    ) -> bool {
         let sub = |a: [f64; 3], b: [f64; 3]| [0, 1, 2].map(|k| a[k] - b[k]);
         let dot = |a: [f64; 3], b: [f64; 3]| a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
         let (e, f) = (sub(v[1], v[0]), sub(v[2], v[0]));
@@ -74,8 +84,11 @@ impl Path {
         // Distances times |n|, where the path enters the triangle's box and where it leaves.
         let (start, along) = (dot(n, sub(self.p0, v[0])), dot(n, self.d));
         let (d0, d1) = (start + t0 * along, start + t1 * along);
-        let reach = self.pad * libm::sqrt(dot(n, n));
-        !(is_less(reach, d0.min(d1)) || is_less(d0.max(d1), -reach))
+        let norm = libm::sqrt(dot(n, n));
+        let reach = self.pad * norm;
+        let behind = one_sided
+            && (is_less(start, -self.slack * norm) || is_less(2.0 * self.slack * norm, along));
+        !(behind || is_less(reach, d0.min(d1)) || is_less(d0.max(d1), -reach))
     }
 }
 

@@ -49,12 +49,15 @@ fn matches_prepared_mesh<S: Scalar>() {
             CompactMesh::compact(&mesh, &vertices, &indices, &mut t, &mut o, &mut b).unwrap();
         assert_eq!(compact.len(), n);
         for k in 0..1000 {
-            let (p0, p1, r) = if k % 10 < 7 {
-                (rng.point(half), rng.point(half), rng.range(0.05, 1.0))
-            } else {
+            let (p0, p1, r) = match k % 10 {
+                0..6 => (rng.point(half), rng.point(half), rng.range(0.05, 1.0)),
+                // Along a triangle's plane, starting on it or near it.
+                6 | 7 => meshes::along_plane(&mut rng, &src),
                 // A long path grazing an edge or vertex at the radius.
-                let length = rng.range(50.0, 250.0);
-                meshes::grazing(&mut rng, &src, length)
+                _ => {
+                    let length = rng.range(50.0, 250.0);
+                    meshes::grazing(&mut rng, &src, length)
+                }
             };
             let r = S::from_f64(r);
             let sweep = Sweep::new(v::<S>(p0), v(p1), r).unwrap();

@@ -180,6 +180,42 @@ fn matches_linear_scan_long<S: Scalar>() {
     matches_linear_scan_n::<S>(0..50, 2000);
 }
 
+/// Paths along a triangle's plane, starting on it, a few roundings off it or near the radius,
+/// in front or behind: the culling's test of the side the ball starts on and moves to allows
+/// for the rounding of the heights `cast` decides by.
+fn along_a_plane<S: Scalar>() {
+    let (mut hits, mut count) = (0, 0);
+    for seed in 0..4u64 {
+        let mut rng = Rng(0x4f1e_0200 ^ seed << 16);
+        let t = terrain(&mut rng, 12, 10);
+        let mut cells = vec![0u8; 12 * 10];
+        let hf = t.build::<S>(&mut cells).unwrap();
+        let (input, kept) = triangles(&hf);
+        let linear = meshes::build(&input, Degenerates::Refuse).unwrap().linear();
+        let points: Vec<[P; 3]> = input
+            .iter()
+            .map(|t| t.vertices().map(|p| p.to_array().map(S::to_f64)))
+            .collect();
+        for n in 0..1500 {
+            let (p0, p1, r) = meshes::along_plane(&mut rng, &points);
+            let sweep = Sweep::new(v::<S>(p0), v(p1), S::from_f64(r)).unwrap();
+            let mut want = linear.as_slice().cast(&sweep);
+            if let Some(h) = want.as_mut() {
+                h.index = kept[h.index];
+            }
+            let got = hf.cast(&sweep);
+            same_hit(
+                got,
+                want,
+                &format!("seed {seed} sweep {n}: {p0:?} -> {p1:?}, r {r}"),
+            );
+            hits += got.is_some() as usize;
+            count += 1;
+        }
+    }
+    assert!(hits > count / 10, "{hits} hits of {count}");
+}
+
 /// Terrain 10 of the long run, whose sweep 1935 (a 140-unit path grazing a steep cell) meets a
 /// second face within the tie window of the first: rejecting a triangle by the reach from its
 /// heights alone must allow for the rounding of the contact tests, or that tie is lost.
@@ -485,6 +521,7 @@ meshes::per_scalar!(
     prepared_as_mesh,
     matches_linear_scan,
     tie_on_a_long_grazing_path,
+    along_a_plane,
     slides_as_mesh,
     errors_not_panics,
     range_edges,

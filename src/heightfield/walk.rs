@@ -139,7 +139,7 @@ impl<S: Scalar> Heightfield<'_, S> {
                 };
                 for (t, v) in [(2 * c, [p00, p01, p11]), (2 * c + 1, [p00, p11, p10])] {
                     if beside_diagonal(path, [x[0], z[0]], t % 2 == 0, span)
-                        && path.near_plane(v, span)
+                        && path.near_plane(v, span, true)
                         && let Some(tri) = self.prepared(t)
                         && let Some(hit) = tri.cast_within(sweep, acc.reach())
                     {

@@ -244,6 +244,42 @@ pub fn grazing(rng: &mut Rng, src: &[[P; 3]], length: f64) -> (P, P, f64) {
     )
 }
 
+/// A path along (or nearly along) the plane of a random triangle of `src`, starting over a point
+/// of it at a height of a few roundings to a little over the radius, in front or behind: whether
+/// the ball starts behind the plane or moves away from its front hangs on the heights' last
+/// steps. Returns start, end and radius.
+pub fn along_plane(rng: &mut Rng, src: &[[P; 3]]) -> (P, P, f64) {
+    use crate::common::{add, cross, norm, scale, sub};
+    let t = src[(rng.next() * src.len() as f64) as usize];
+    let (e, f) = (sub(t[1], t[0]), sub(t[2], t[0]));
+    let n = cross(e, f);
+    let n = scale(n, 1.0 / norm(n));
+    let (a, b) = (rng.next(), rng.next());
+    let (a, b) = if a + b > 1.0 {
+        (1.0 - a, 1.0 - b)
+    } else {
+        (a, b)
+    };
+    let on = add(t[0], add(scale(e, a), scale(f, b)));
+    let r = rng.range(0.05, 1.0);
+    let height = match (rng.next() * 4.0) as usize {
+        0 => 0.0,
+        1 => rng.range(-1e-5, 1e-5),
+        2 => r * rng.range(-0.2, 1.2),
+        _ => r * rng.range(0.9, 1.1),
+    };
+    let p0 = add(on, scale(n, height));
+    let tilt = [0.0, 1e-6, -1e-6, rng.range(-1e-3, 1e-3)][(rng.next() * 4.0) as usize];
+    let d = add(
+        add(
+            scale(e, rng.range(-1.0, 1.0)),
+            scale(f, rng.range(-1.0, 1.0)),
+        ),
+        scale(n, tilt),
+    );
+    (p0, add(p0, d), r)
+}
+
 /// One test module per property, with a test per scalar: `per_scalar!(a, b #[ignore = ".."])`
 /// runs `a::<f32>()`, `a::<f64>()`, `a::<I16F16>()` and `a::<I32F32>()` as `a::f32` and so on
 /// (the test file imports `I16F16` and `I32F32`).
