@@ -58,6 +58,21 @@ fn long_grazing_paths<S: Scalar>() {
     }
 }
 
+/// Paths along a triangle's plane, starting on it, a few roundings off it or near the radius.
+fn along_a_plane<S: Scalar>() {
+    let mut rng = Rng(0x5eed_0006);
+    let shapes = [
+        heightfield(&mut rng, 12, 1.0, 0.65),
+        boxes(&mut rng, 16, 5.0),
+        soup(&mut rng, 200, 4.0),
+    ];
+    for src in shapes {
+        against_linear_by::<S>(&mut rng, &src, 1500, |rng, _| {
+            meshes::along_plane(rng, &src)
+        });
+    }
+}
+
 /// The mesh's prepared triangles, features included, are `Scene`'s on the same input.
 fn active_edges_are_scenes<S: Scalar>() {
     let mut rng = Rng(0x5eed_0002);
@@ -326,6 +341,7 @@ fn verify_baked_parts<S: Scalar>() {
 meshes::per_scalar!(
     matches_linear_scan,
     long_grazing_paths,
+    along_a_plane,
     active_edges_are_scenes,
     deterministic,
     range_edges,
