@@ -70,12 +70,14 @@
 //! bit (`tests/mesh.rs` checks it on 10^5 sweeps per scalar).
 
 mod build;
+mod overlap;
 mod traverse;
 
 use crate::{Scalar, Triangle};
 
 pub use build::nodes_for;
 pub(crate) use build::{BuildError, build, item, key_index};
+pub(crate) use overlap::{overlapping, query_cells};
 pub(crate) use traverse::{Segment, rounding_pad, traverse};
 
 /// Most triangles in a leaf.

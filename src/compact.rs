@@ -329,30 +329,54 @@ impl<S: Scalar, I: MeshIndex> Geometry<S> for CompactMesh<'_, S, I> {
         CompactMesh::cast(self, sweep)
     }
 
-    /// Every triangle whose vertices' box meets the box (a scan; prepared only when it does).
+    /// Every triangle of the leaves whose boxes meet the box (the tree's box query) whose
+    /// vertices' box meets it too, prepared.
     fn visit(&self, min: Vec3<S>, max: Vec3<S>, f: &mut dyn FnMut(usize, &StandardTriangle<S>)) {
         let (lo, hi) = (min.to_array().map(S::to_f64), max.to_array().map(S::to_f64));
-        for (s, corners) in self.triangles.iter().enumerate() {
-            let Some(v) = world(self.vertices, corners.map(I::get)) else {
-                continue;
-            };
-            let apart = (0..3).any(|a| {
-                let (l, u) = (
-                    v[0][a].min(v[1][a]).min(v[2][a]),
-                    v[0][a].max(v[1][a]).max(v[2][a]),
-                );
-                u < lo[a] || l > hi[a]
+        let query = bvh::query_cells(&self.grid, lo, hi);
+        // A first walk that only checks the tree, so malformed parts (never from `compact`)
+        // are scanned instead without a triangle given twice.
+        if bvh::overlapping(self.nodes, &self.grid, query, |_| {}) {
+            bvh::overlapping(self.nodes, &self.grid, query, |slots| {
+                slots.for_each(|s| self.visit_slot(s, lo, hi, f))
             });
-            if apart {
-                continue;
-            }
-            let t = triangle(self.vertices, corners.map(I::get));
-            let byte = self.bytes.get(s).copied();
-            if let (Some(t), Some(b), Some(i)) = (t, byte, self.order.get(s))
-                && let Some(st) = prepare(&t, b)
-            {
-                f(i.get(), &st);
-            }
+        } else {
+            (0..self.triangles.len()).for_each(|s| self.visit_slot(s, lo, hi, f));
+        }
+    }
+}
+
+impl<S: Scalar, I: MeshIndex> CompactMesh<'_, S, I> {
+    /// Calls `f` with triangle slot `s`, prepared, if its vertices' box meets `lo..hi`.
+    fn visit_slot(
+        &self,
+        s: usize,
+        lo: [f64; 3],
+        hi: [f64; 3],
+        f: &mut dyn FnMut(usize, &StandardTriangle<S>),
+    ) {
+        let Some(corners) = self.triangles.get(s) else {
+            return;
+        };
+        let Some(v) = world(self.vertices, corners.map(I::get)) else {
+            return;
+        };
+        let apart = (0..3).any(|a| {
+            let (l, u) = (
+                v[0][a].min(v[1][a]).min(v[2][a]),
+                v[0][a].max(v[1][a]).max(v[2][a]),
+            );
+            u < lo[a] || l > hi[a]
+        });
+        if apart {
+            return;
+        }
+        let t = triangle(self.vertices, corners.map(I::get));
+        let byte = self.bytes.get(s).copied();
+        if let (Some(t), Some(b), Some(i)) = (t, byte, self.order.get(s))
+            && let Some(st) = prepare(&t, b)
+        {
+            f(i.get(), &st);
         }
     }
 }

@@ -375,7 +375,21 @@ impl<S: Scalar> Geometry<S> for Mesh<'_, S> {
         Mesh::cast(self, sweep)
     }
 
-    fn visit(&self, _: Vec3<S>, _: Vec3<S>, f: &mut dyn FnMut(usize, &StandardTriangle<S>)) {
-        crate::penetration::each(self.triangles, self.order, f)
+    /// The triangles of the leaves whose boxes meet the box (the tree's box query).
+    fn visit(&self, min: Vec3<S>, max: Vec3<S>, f: &mut dyn FnMut(usize, &StandardTriangle<S>)) {
+        let (lo, hi) = (min.to_array().map(S::to_f64), max.to_array().map(S::to_f64));
+        let query = bvh::query_cells(&self.grid, lo, hi);
+        // A first walk that only checks the tree, so malformed parts (never from `build`) are
+        // scanned instead without a triangle given twice.
+        if !bvh::overlapping(self.nodes, &self.grid, query, |_| {}) {
+            return crate::penetration::each(self.triangles, self.order, f);
+        }
+        bvh::overlapping(self.nodes, &self.grid, query, |slots| {
+            for s in slots {
+                if let (Some(t), Some(&i)) = (self.triangles.get(s), self.order.get(s)) {
+                    f(i as usize, t);
+                }
+            }
+        });
     }
 }

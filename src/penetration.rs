@@ -43,8 +43,9 @@ pub struct Penetration<S> {
 /// `±`[`Scalar::LIMIT`], [`Error::NegativeRadius`].
 ///
 /// Cost: a [`Scene`](crate::Scene) tests the triangles whose bounding boxes meet the ball's; a
-/// [`Mesh`](crate::Mesh) scans all of its triangles (not its tree), rejecting those far from
-/// the ball with a few comparisons each.
+/// [`Mesh`](crate::Mesh) or [`CompactMesh`](crate::CompactMesh) those of the leaves of its tree
+/// whose boxes meet the ball's (a box query, `O(log N)` nodes), a
+/// [`Heightfield`](crate::Heightfield) those of the cells under the ball.
 ///
 /// Accuracy: the depth carries the rounding of a height at the centre's coordinates
 /// ([`Precision::height_error`](crate::Precision::height_error)) plus that of a square root.
@@ -191,7 +192,8 @@ pub(crate) fn overlap<S: Scalar>(
     })
 }
 
-/// Every triangle of a mesh's parts with its input index: a linear scan, not the tree.
+/// Every triangle of a mesh's parts with its input index: a linear scan, for parts whose tree
+/// is malformed.
 pub(crate) fn each<S: Scalar>(
     triangles: &[StandardTriangle<S>],
     order: &[u32],

@@ -6,7 +6,9 @@ mod common;
 #[allow(dead_code)] // the mesh tests use the rest
 mod meshes;
 
+use ballcast::penetration::penetration;
 use ballcast::plan::Memory;
+use ballcast::winding::winding;
 use ballcast::{CompactError, CompactMesh, Degenerates, Heightfield, Scalar, Sweep, Vec3};
 use common::{P, Rng, v};
 use fixed::types::{I16F16, I32F32};
@@ -151,7 +153,41 @@ fn memory_is_what_the_builds_make<S: Scalar>() {
     );
 }
 
+/// `penetration` and `winding` on the compact mesh (the tree's box query, each triangle
+/// prepared) give the prepared mesh's answers.
+fn box_queries_as_mesh<S: Scalar>() {
+    let mut rng = Rng(0xc0_4ac8);
+    let shapes = [
+        heightfield(&mut rng, 12, 1.0, 0.65),
+        boxes(&mut rng, 16, 5.0),
+        soup(&mut rng, 200, 4.0),
+    ];
+    let mut overlaps = 0;
+    for src in shapes {
+        let (vertices, indices) = indexed::<S>(&src);
+        let input: Vec<_> = src.iter().map(|&t| tri::<S>(t)).collect();
+        let owned = build(&input, Degenerates::Skip).unwrap();
+        let mesh = owned.mesh();
+        let n = mesh.len();
+        let (mut t, mut o, mut b) = (vec![[0u16; 3]; n], vec![0u16; n], vec![0u8; n]);
+        let compact =
+            CompactMesh::compact(&mesh, &vertices, &indices, &mut t, &mut o, &mut b).unwrap();
+        for _ in 0..300 {
+            let t = src[(rng.next() * src.len() as f64) as usize];
+            let r = rng.range(0.05, 1.0);
+            let c = v::<S>([0, 1, 2].map(|a| t[1][a] + rng.range(-r, r)));
+            let r = S::from_f64(r);
+            let got = penetration(&compact, c, r).unwrap();
+            assert_eq!(got, penetration(&mesh, c, r).unwrap(), "{c:?}");
+            assert_eq!(winding(&compact, c).unwrap(), winding(&mesh, c).unwrap());
+            overlaps += got.is_some() as usize;
+        }
+    }
+    assert!(overlaps > 200, "{overlaps} overlaps");
+}
+
 meshes::per_scalar!(
+    box_queries_as_mesh,
     matches_prepared_mesh,
     errors_not_panics,
     memory_is_what_the_builds_make

@@ -7,8 +7,10 @@ mod common;
 mod meshes;
 
 use ballcast::bvh::nodes_for;
+use ballcast::penetration::{Penetration, penetration};
+use ballcast::winding::winding;
 use ballcast::{
-    Buffer, Degenerates, Geometry, Mesh, MeshError, Node, Scalar, Scene, Sweep, Triangle,
+    Buffer, Degenerates, Geometry, Mesh, MeshError, Node, Scalar, Scene, Sweep, Triangle, Vec3,
 };
 use common::{Rng, v};
 use fixed::types::{I16F16, I32F32};
@@ -71,6 +73,61 @@ fn along_a_plane<S: Scalar>() {
             meshes::along_plane(rng, &src)
         });
     }
+}
+
+/// `penetration` and `winding` on the mesh (its tree's box query) give the linear scan's
+/// answers, and a small box reaches a handful of the mesh's triangles, not all of them.
+fn box_queries_as_linear<S: Scalar>() {
+    let mut rng = Rng(0x5eed_0007);
+    let shapes = [
+        heightfield(&mut rng, 40, 1.0, 0.65),
+        boxes(&mut rng, 16, 5.0),
+        soup(&mut rng, 200, 4.0),
+    ];
+    for src in shapes {
+        let input: Vec<Triangle<S>> = src.iter().map(|&t| tri(t)).collect();
+        let owned = build(&input, Degenerates::Skip).unwrap();
+        let (mesh, linear) = (owned.mesh(), owned.linear());
+        let mut kept: Vec<u32> = owned.order.clone();
+        kept.sort();
+        let mut overlaps = 0;
+        for _ in 0..500 {
+            let t = src[(rng.next() * src.len() as f64) as usize];
+            let r = rng.range(0.05, 1.0);
+            let c = [0, 1, 2].map(|a| t[0][a] + rng.range(-r, r));
+            let (c, r) = (v::<S>(c), S::from_f64(r));
+            let got = penetration(&mesh, c, r).unwrap();
+            let want = penetration(linear.as_slice(), c, r)
+                .unwrap()
+                .map(|p| Penetration {
+                    index: kept[p.index] as usize,
+                    ..p
+                });
+            assert_eq!(got, want, "centre {c:?}, r {r:?}");
+            overlaps += got.is_some() as usize;
+            let mut want = winding(linear.as_slice(), c).unwrap();
+            want.first_away = want.first_away.map(|i| kept[i] as usize);
+            assert_eq!(winding(&mesh, c).unwrap(), want, "winding from {c:?}");
+        }
+        assert!(overlaps > 100, "{overlaps} overlaps");
+    }
+    // A ball-sized box on a 3 200-triangle terrain reaches a few leaves.
+    let src = heightfield(&mut rng, 40, 1.0, 0.65);
+    let input: Vec<Triangle<S>> = src.iter().map(|&t| tri(t)).collect();
+    let owned = build(&input, Degenerates::Refuse).unwrap();
+    let mut reached = 0;
+    let half = S::from_f64(0.5);
+    let c = v::<S>([0.3, 0.0, -0.2]);
+    owned.mesh().visit(
+        c - Vec3::new(half, half, half),
+        c + Vec3::new(half, half, half),
+        &mut |_, _| reached += 1,
+    );
+    assert!(
+        (4..=64).contains(&reached),
+        "{reached} of {} triangles",
+        input.len()
+    );
 }
 
 /// The mesh's prepared triangles, features included, are `Scene`'s on the same input.
@@ -342,6 +399,7 @@ meshes::per_scalar!(
     matches_linear_scan,
     long_grazing_paths,
     along_a_plane,
+    box_queries_as_linear,
     active_edges_are_scenes,
     deterministic,
     range_edges,

@@ -121,7 +121,7 @@ fn pow2(e: u32) -> f64 {
 
 /// Decodes child `k` of `node`, whose own box has minimum `lo`.
 #[inline]
-fn child_cells(node: &Node, k: usize, lo: [i32; 3]) -> Cells {
+pub(super) fn child_cells(node: &Node, k: usize, lo: [i32; 3]) -> Cells {
     let at = |b: usize| {
         let (a, v) = (b % 3, node.boxes[b][k & 3]);
         lo[a].wrapping_add((v as i32).wrapping_shl(node.shift[a].min(31) as u32))
