@@ -257,10 +257,14 @@ impl<S: Scalar> StandardTriangle<S> {
             {
                 continue;
             }
-            let Some(m) = *motion.get_or_insert_with(|| S::direction(d)) else {
-                continue;
+            let v = match *motion.get_or_insert_with(|| S::direction(d)) {
+                Some(m) => self.vertex_contact(i, p0, d, m, r),
+                // No motion: only an overlap at the start.
+                None => {
+                    let q = p0 - self.corner(i);
+                    resting(q, r).map(|at| ((at.0, Some(q), Contact::Vertex(i as u8)), at.1))
+                }
             };
-            let v = self.vertex_contact(i, p0, d, m, r);
             if v.is_some_and(|v| best.is_none_or(|b| v.0.0 < b.0.0 - tie)) {
                 best = v;
             }
@@ -326,7 +330,12 @@ impl<S: Scalar> StandardTriangle<S> {
         // Across the edge the problem is planar: the centre moves from (w0, y0) along (dw, dy).
         let z = S::ZERO;
         let across = Vec3::new(dw, d.y, z);
-        let motion = S::direction(across)?;
+        let Some(motion) = S::direction(across) else {
+            // No motion across the edge (none at all, or along it): only an overlap at the start.
+            let at = (u0 > z && u0 < e.len).then(|| resting(Vec3::new(w0, p0.y, z), r))??;
+            let offset = Vec3::new(S::mul_unit(w0, out.x), p0.y, S::mul_unit(w0, out.z));
+            return Some(((at.0, Some(offset), Contact::Edge(i as u8)), at.1));
+        };
         let (beta, key) = first_touch(Vec3::new(w0, p0.y, z), motion, r)?;
         let (u, w, y) = (u0 + beta.mul(du), w0 + beta.mul(dw), p0.y + beta.mul(d.y));
         if !(u > z && u < e.len && y >= z) {
@@ -399,6 +408,13 @@ fn first_touch<S: Scalar>(
     // Rounded to nearest, a fraction just below one can become one: that is no contact.
     let beta = S::div(t, len);
     (beta < S::ONE).then_some((beta, (t, len)))
+}
+
+/// Alpha zero and its fraction where a ball that does not move relative to a feature (offset
+/// `q` from it, the centre in front of the plane) overlaps it: closer than `r`.
+fn resting<S: Scalar>(q: Vec3<S>, r: S) -> Option<(S, (S, S))> {
+    let overlaps = q.y >= S::ZERO && S::chord(r, q).is_some_and(|k| k > S::ZERO);
+    overlaps.then_some((S::ZERO, (S::ZERO, S::ONE)))
 }
 
 /// The earlier of two contacts, by their exact fractions `t / len` (the first on a tie).

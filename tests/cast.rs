@@ -87,6 +87,29 @@ fn hand_cases<S: Tolerance>() {
         a == 0.0 && c == Contact::Edge(2) && near(n, [0.0, 1.0, -1.0]),
         "{n:?}"
     );
+    // Resting overlapping edge 2 (no motion), or moving along it: alpha 0, normal out of the
+    // edge, as for a ball moving in; resting overlapping vertex 2 likewise.
+    for p1 in [[2.0, 0.6, -0.6], [3.0, 0.6, -0.6]] {
+        let (a, n, c) = cast::<S>(TRI, [2.0, 0.6, -0.6], p1, 1.0, all, false).unwrap();
+        assert!(
+            a == 0.0 && c == Contact::Edge(2) && near(n, [0.0, 1.0, -1.0]),
+            "{n:?}"
+        );
+    }
+    let (a, n, c) = cast::<S>(TRI, [4.5, 0.5, -0.5], [4.5, 0.5, -0.5], 1.0, all, false).unwrap();
+    assert!(
+        a == 0.0 && c == Contact::Vertex(2) && near(n, [1.0, 1.0, -1.0]),
+        "{n:?}"
+    );
+    // Resting just out of reach, or inactive: nothing.
+    let out = [2.0, 0.75, -0.75];
+    assert_eq!(cast::<S>(TRI, out, out, 1.0, all, false), None);
+    let resting = [2.0, 0.6, -0.6];
+    let f = all
+        .with_edge(2, false)
+        .with_vertex(0, false)
+        .with_vertex(2, false);
+    assert_eq!(cast::<S>(TRI, resting, resting, 1.0, f, false), None);
     // A ray touches only the face, boundary included.
     assert_eq!(
         cast::<S>(TRI, [2.0, 3.0, -0.01], [2.0, -3.0, -0.01], 0.0, all, false),
