@@ -14,6 +14,9 @@ pub(crate) struct Path {
     pub(crate) pad: f64,
     /// The pad less the radius: more than the rounding of a triangle's heights in `cast`.
     slack: f64,
+    /// A bound on the rounding of a prepared unit vector: `16 EPSILON` (floats), or `1/1024`
+    /// of that (fixed point, whose unit vectors have 30 or 62 fractional bits).
+    unit: f64,
 }
 
 impl Path {
@@ -31,12 +34,18 @@ impl Path {
         let seams = f64::from_bits(((1023 + class.min(31) as u32) as u64) << 52);
         let pad = crate::bvh::rounding_pad::<S>(r, big(d), magnitude)
             + (r / 64.0 + 4.0 * S::PRECISION.epsilon) * seams;
+        let per_unit = if S::PRECISION.relative {
+            1.0
+        } else {
+            1.0 / 1024.0
+        };
         Self {
             p0,
             d,
             inv: d.map(|x| 1.0 / x),
             pad,
             slack: pad - r,
+            unit: 16.0 * S::PRECISION.epsilon * per_unit,
         }
     }
 
@@ -67,6 +76,13 @@ impl Path {
     /// along the path is linear, so its ends decide. A one-sided triangle (front where `v` turns
     /// counter-clockwise) is also passed by where the path starts behind its plane or moves
     /// away from its front, beyond the rounding of the heights `cast` decides both by.
+    ///
+    /// The prepared triangle's plane is tilted from the exact one by the rounding of its
+    /// normal, which a sliver magnifies: the normal comes from the cross product of two edges
+    /// scaled to a largest component of one, rounded by about a unit vector's step, so its
+    /// direction is off by up to that step over the product's length (`|n| / (l1 l2)` for the
+    /// two longest edges' largest components `l1`, `l2`: no more than the scaled edges' product).
+    /// Heights at a distance `D` from the triangle's first vertex move by the tilt times `D`.
     pub(crate) fn near_plane(
         &self,
         v: [[f64; 3]; 3],
@@ -85,9 +101,20 @@ impl Path {
         let (start, along) = (dot(n, sub(self.p0, v[0])), dot(n, self.d));
         let (d0, d1) = (start + t0 * along, start + t1 * along);
         let norm = libm::sqrt(dot(n, n));
-        let reach = self.pad * norm;
+        let big = |a: [f64; 3]| a.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+        let l = [big(e), big(f), big(sub(v[2], v[1]))];
+        let longest = l[0].max(l[1]).max(l[2]);
+        // The two largest's product, and the tilt (infinite or NaN for an exactly flat
+        // triangle: nothing is passed by).
+        let product = (l[0] * l[1]).max(l[0] * l[2]).max(l[1] * l[2]);
+        let tilt = self.unit * product / norm;
+        // Points of the path over the span lie within the pad of the triangle's box, whose
+        // extent is at most `longest` per axis from the first vertex: `2 (longest + pad)` away.
+        let reach = (self.pad + tilt * 2.0 * (longest + self.pad)) * norm;
+        let height = |far: f64| (self.slack + tilt * 2.0 * far) * norm;
         let behind = one_sided
-            && (is_less(start, -self.slack * norm) || is_less(2.0 * self.slack * norm, along));
+            && (is_less(start, -height(big(sub(self.p0, v[0]))))
+                || is_less(2.0 * height(big(self.d)), along));
         !(behind || is_less(reach, d0.min(d1)) || is_less(d0.max(d1), -reach))
     }
 }

@@ -9,7 +9,9 @@ mod meshes;
 use ballcast::penetration::penetration;
 use ballcast::plan::Memory;
 use ballcast::winding::winding;
-use ballcast::{CompactError, CompactMesh, Degenerates, Heightfield, Scalar, Sweep, Vec3};
+use ballcast::{
+    CompactError, CompactMesh, Degenerates, Geometry, Heightfield, Scalar, Sweep, Vec3,
+};
 use common::{P, Rng, v};
 use fixed::types::{I16F16, I32F32};
 use meshes::{boxes, build, heightfield, soup, tri};
@@ -192,3 +194,50 @@ meshes::per_scalar!(
     errors_not_panics,
     memory_is_what_the_builds_make
 );
+
+/// One sliver as a compact mesh against its prepared mesh and the linear scan, for one sweep.
+fn sliver_as_prepared<S: Scalar>(src: [P; 3], p0: P, p1: P, r: f64) {
+    let (vertices, indices) = indexed::<S>(&[src]);
+    let owned = build(&[tri::<S>(src)], Degenerates::Refuse).unwrap();
+    let (mesh, linear) = (owned.mesh(), owned.linear());
+    let (mut t, mut o, mut b) = ([[0u16; 3]], [0u16], [0u8]);
+    let compact = CompactMesh::compact(&mesh, &vertices, &indices, &mut t, &mut o, &mut b).unwrap();
+    let sweep = Sweep::new(v::<S>(p0), v(p1), S::from_f64(r)).unwrap();
+    let want = Geometry::cast(linear.as_slice(), &sweep);
+    assert!(want.is_some(), "the case is a hit");
+    assert_eq!(mesh.cast(&sweep), want);
+    assert_eq!(compact.cast(&sweep), want);
+}
+
+/// An `f32` sliver whose prepared normal is tilted by about 1e-3 rad (the most preparation
+/// accepts): 40 units from its first vertex, its heights differ from the exact plane's by far
+/// more than their rounding, and the culling once took this falling ball for one behind it.
+#[test]
+fn sliver_tilted_plane_f32() {
+    sliver_as_prepared::<f32>(
+        [
+            [0.45689457654953003, 2.2589194774627686, 3.231290578842163],
+            [15.634089469909668, -10.184675216674805, -2.920862913131714],
+            [20.189640045166016, -13.920273780822754, -4.767704010009766],
+        ],
+        [42.73084259033203, 24.824304580688477, 9.174185752868652],
+        [12.093356132507324, -7.281008720397949, -1.4882417917251587],
+        0.005367415511745251,
+    );
+}
+
+/// An `f64` sliver hit by a ray at its far end: the culling's plane test took the tilt of the
+/// prepared plane for a miss.
+#[test]
+fn sliver_tilted_plane_f64_ray() {
+    sliver_as_prepared::<f64>(
+        [
+            [-7.210809128199591, -12.220460684168199, 3.530667112362297],
+            [9.358364125161426, -17.563310507476963, -1.618124008754043],
+            [25.43436531178179, -22.747126282249468, -6.613659358855383],
+        ],
+        [28.444430855599272, 30.568663504892864, 29.797744859561817],
+        [9.193973436247875, -17.510299157964873, -1.567038751749043],
+        0.0,
+    );
+}
