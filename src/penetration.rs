@@ -135,7 +135,8 @@ pub(crate) fn overlap<S: Scalar>(
         return None;
     }
     let flat = Vec3::new(q.x, S::ZERO, q.z);
-    let inside = (0..3).all(|i| S::dot_unit(flat - t.corner(i), t.edges[i].out()) <= S::ZERO);
+    let inside = (t.edges.iter().enumerate())
+        .all(|(i, e)| S::dot_unit(flat - t.corner(i), e.out()) <= S::ZERO);
     // The face region: out along the normal on the centre's side.
     let face = || {
         let n = if behind { -t.normal() } else { t.normal() };

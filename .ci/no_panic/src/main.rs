@@ -1,5 +1,6 @@
-//! `#[no_mangle]` wrappers around `StandardTriangle::new`, `Sweep::new`, `face_collision`, `cast` and
-//! the scene-level casts (a slice, `Mesh`, `CompactMesh`, `Heightfield`) for
+//! `#[no_mangle]` wrappers around `StandardTriangle::new`, `Sweep::new`, `face_collision`, `cast`,
+//! the scene-level casts and the box queries (`penetration`, `winding`) of a slice, a `Mesh`, a
+//! `CompactMesh` and a `Heightfield`, for
 //! every scalar, linked for a bare-metal target in release. Without the default `triangle`
 //! feature the triangle constructor is left out: the face wrappers then take their triangle from
 //! an opaque static, so the face test is checked on its own. The panic handler calls a function
@@ -10,6 +11,8 @@
 #![no_std]
 #![no_main]
 
+use ballcast::penetration::{Penetration, penetration};
+use ballcast::winding::{Winding, winding};
 use ballcast::{
     CompactMesh, Error, Geometry, Grid, Heightfield, Hit, Mesh, SceneHit, StandardTriangle, Sweep,
     Triangle, Vec3,
@@ -37,7 +40,7 @@ fn panic(_: &core::panic::PanicInfo) -> ! {
 }
 
 macro_rules! wrappers {
-    ($t:ty, $tri:ident, $sweep:ident, $face:ident, $cast:ident, $geometry:ident, $run:ident) => {
+    ($t:ty, $tri:ident, $sweep:ident, $face:ident, $cast:ident, $geometry:ident, $around:ident, $run:ident) => {
         #[cfg(feature = "triangle")]
         #[unsafe(no_mangle)]
         #[inline(never)]
@@ -86,6 +89,25 @@ macro_rules! wrappers {
             [t.cast(s), m.cast(s), c.cast(s), h.cast(s)]
         }
 
+        /// The box queries (penetration and winding) on the same four forms.
+        #[unsafe(no_mangle)]
+        #[inline(never)]
+        pub fn $around(
+            t: &[StandardTriangle<$t>],
+            m: &Mesh<'_, $t>,
+            c: &CompactMesh<'_, $t>,
+            h: &Heightfield<'_, $t>,
+            p: Vec3<$t>,
+            r: $t,
+        ) -> [(Result<Option<Penetration<$t>>, Error>, Result<Winding, Error>); 4] {
+            [
+                (penetration(t, p, r), winding(t, p)),
+                (penetration(m, p, r), winding(m, p)),
+                (penetration(c, p, r), winding(c, p)),
+                (penetration(h, p, r), winding(h, p)),
+            ]
+        }
+
         /// Calls the wrappers on values the optimiser cannot see.
         fn $run() {
             let tri = black_box(Triangle::<$t>::default());
@@ -114,6 +136,7 @@ macro_rules! wrappers {
                 let z = black_box(<$t>::default());
                 let h = black_box(Heightfield::from_parts(v, z, z, 1, 1, &[], &[], [0, 0], 0));
                 black_box($geometry(black_box(&many[..]), &m, &c, &h, &s));
+                black_box($around(black_box(&many[..]), &m, &c, &h, v, tri.v0.x));
             }
         }
     };
@@ -126,6 +149,7 @@ wrappers!(
     ballcast_f32_face,
     ballcast_f32_cast,
     ballcast_f32_geometry,
+    ballcast_f32_around,
     run_f32
 );
 wrappers!(
@@ -135,6 +159,7 @@ wrappers!(
     ballcast_f64_face,
     ballcast_f64_cast,
     ballcast_f64_geometry,
+    ballcast_f64_around,
     run_f64
 );
 wrappers!(
@@ -144,6 +169,7 @@ wrappers!(
     ballcast_i16f16_face,
     ballcast_i16f16_cast,
     ballcast_i16f16_geometry,
+    ballcast_i16f16_around,
     run_i16f16
 );
 wrappers!(
@@ -153,6 +179,7 @@ wrappers!(
     ballcast_i32f32_face,
     ballcast_i32f32_cast,
     ballcast_i32f32_geometry,
+    ballcast_i32f32_around,
     run_i32f32
 );
 
