@@ -1,7 +1,7 @@
 //! [`Mesh`]: many triangles behind a [`bvh`], borrowed from wherever they live (a
 //! `static` in flash, a caller's buffer, `Vec`s on a PC), answering exactly as a linear scan.
 
-use crate::adjacency::{link_all, morton};
+use crate::adjacency::link_all;
 use crate::bvh::{self, BuildError, Grid, MAX_TRIANGLES, Node, Segment};
 use crate::merge::earliest;
 use crate::{Error, Features, Geometry, Parts, Scalar, SceneHit, StandardTriangle, Sweep};
@@ -213,15 +213,7 @@ impl<'a, S: Scalar> Mesh<'a, S> {
         }
         let (triangles, order) = (&mut triangles[..kept], &mut order[..kept]);
         let largest = (0..3).fold(0.0f64, |m, a| m.max(wlo[a].abs()).max(whi[a].abs()));
-        // Active edges, visited region by region: 16 regions per axis over the bounds' cube.
-        let side = (0..3).fold(0.0f64, |m, a| m.max(whi[a] - wlo[a]));
-        let per_side = 16.0 / side;
-        let region = |p: Vec3<S>| {
-            let q = p.to_array().map(S::to_f64);
-            // Saturating: below zero (and NaN, for a mesh of one point) is region 0.
-            morton([0, 1, 2].map(|a| (((q[a] - wlo[a]) * per_side) as u32).min(15) as u64))
-        };
-        link_all(sources, order, triangles, &mut scratch[..6 * kept], region);
+        link_all(sources, order, triangles, &mut scratch[..6 * kept]);
         let exponent = Grid::exponent_for(largest);
         let (lo, hi) = if kept == 0 {
             ([0; 3], [0; 3])
