@@ -20,11 +20,10 @@ pub(crate) fn hides<S: Scalar>(
     tb: &StandardTriangle<S>,
     apex: Vec3<S>,
 ) -> bool {
-    let flat = same_plane(ta.normal(), tb.normal());
     let one_sided = !ta.is_two_sided() && !tb.is_two_sided();
     // `apex` lies in range (it was validated), so `to_standard` cannot fail.
-    let valley = ta.to_standard(apex).is_ok_and(|p| p.y > S::ZERO);
-    flat || (one_sided && valley)
+    let valley = || ta.to_standard(apex).is_ok_and(|p| p.y > S::ZERO);
+    same_plane(ta.normal(), tb.normal()) || (one_sided && valley())
 }
 
 /// Switches off `edge` of `tri`; a vertex stays active while either of its edges through it is.
