@@ -127,22 +127,23 @@ fn link<S: Scalar>(
     } else {
         ((sy / 3, sy % 3), (sx / 3, sx % 3))
     };
-    let vertices = |c: usize| {
-        order
-            .get(c)
-            .and_then(|&k| sources.get(k as usize))
-            .map(Triangle::vertices)
-    };
-    let (Some(ta), Some(tb)) = (vertices(a), vertices(b)) else {
+    let source = |c: usize| order.get(c).and_then(|&k| sources.get(k as usize));
+    let (Some(ta), Some(tb)) = (source(a), source(b)) else {
         return;
     };
-    if a == b || ta[i] != tb[(j + 1) % 3] || ta[(i + 1) % 3] != tb[j] {
+    // Vertex k of a source, read in place (no copy of the three).
+    let at = |t: &Triangle<S>, k: usize| match k % 3 {
+        0 => t.v0,
+        1 => t.v1,
+        _ => t.v2,
+    };
+    if a == b || at(ta, i) != at(tb, j + 1) || at(ta, i + 1) != at(tb, j) {
         return;
     }
     let (Some(pa), Some(pb)) = (triangles.get(a), triangles.get(b)) else {
         return;
     };
-    if hides(pa, pb, tb[(j + 2) % 3]) {
+    if hides(pa, pb, at(tb, j + 2)) {
         deactivate(&mut triangles[a], i);
         deactivate(&mut triangles[b], j);
     }
