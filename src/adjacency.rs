@@ -20,11 +20,10 @@ pub(crate) fn hides<S: Scalar>(
     tb: &StandardTriangle<S>,
     apex: Vec3<S>,
 ) -> bool {
-    let flat = same_plane(ta.normal(), tb.normal());
     let one_sided = !ta.is_two_sided() && !tb.is_two_sided();
     // `apex` lies in range (it was validated), so `to_standard` cannot fail.
-    let valley = ta.to_standard(apex).is_ok_and(|p| p.y > S::ZERO);
-    flat || (one_sided && valley)
+    let valley = || ta.to_standard(apex).is_ok_and(|p| p.y > S::ZERO);
+    same_plane(ta.normal(), tb.normal()) || (one_sided && valley())
 }
 
 /// Switches off `edge` of `tri`; a vertex stays active while either of its edges through it is.
@@ -36,9 +35,8 @@ pub(crate) fn deactivate<S: Scalar>(tri: &mut StandardTriangle<S>, edge: usize) 
 
 /// Bits of a record holding `triangle * 3 + edge`: room for 2^28 triangles.
 const SLOT_BITS: u32 = 30;
-/// Bits of an edge's hash in a record: with the region's 12 and the direction, the sort's key
-/// is four bytes.
-const HASH_BITS: u32 = 19;
+/// Bits of an edge's hash in a record: with the direction, the sort's key is three bytes.
+const HASH_BITS: u32 = 23;
 
 /// Applies [`hides`] to every pair of triangles sharing an edge with opposite winding, as
 /// [`Scene`](crate::Scene) does pair by pair, in `O(N + P)`: one record per edge, radix-sorted.
@@ -46,31 +44,26 @@ const HASH_BITS: u32 = 19;
 /// `triangles[c]` is the prepared form of `sources[order[c]]`, `c` increasing with input order;
 /// `records` holds at least `6 * triangles.len()` words (records and the radix sort's other
 /// buffer), and `triangles.len() <= 2^28`.
-/// `region` gives a 12-bit cell of a vertex (the key's top bits: nearby edges sort together, which
-/// keeps the triangles they touch in the cache). A record is the region of the edge's first
-/// vertex and a 19-bit hash of its unordered vertex pair, one bit for its direction and
-/// the edge's slot; records with equal keys are adjacent once sorted, and only the pairs of
+/// A record is a 23-bit hash of the edge's unordered vertex pair, one bit for its direction and
+/// the edge's slot; records with equal hashes are adjacent once sorted, and only the pairs of
 /// opposite direction within such a run are compared, exactly. P counts those pairs: one per
 /// shared edge in a manifold mesh; `k * m` where `k` triangles run one way along an edge and `m`
-/// the other (identical copies of a triangle add none).
+/// the other (identical copies of a triangle add none). A run of two (a manifold edge) is not
+/// compared at once: its later slot notes the earlier one, and the comparisons are made in slot
+/// order, so the prepared triangles are read in order, as the cache likes.
 pub(crate) fn link_all<S: Scalar>(
     sources: &[Triangle<S>],
     order: &[u32],
     triangles: &mut [StandardTriangle<S>],
     records: &mut [u64],
-    region: impl Fn(Vec3<S>) -> u64,
 ) {
     let n = triangles.len().min(order.len());
-    let vertices = |c: usize| {
-        order
-            .get(c)
-            .and_then(|&i| sources.get(i as usize))
-            .map(Triangle::vertices)
-    };
     let (records, temp) = records.split_at_mut(records.len().min(3 * n));
     let mut used = 0;
-    for (c, slots) in records.chunks_exact_mut(3).take(n).enumerate() {
-        let Some(v) = vertices(c) else { return };
+    for (slots, i) in records.chunks_exact_mut(3).zip(order).take(n) {
+        let Some(v) = sources.get(*i as usize).map(Triangle::vertices) else {
+            return;
+        };
         let h = v.map(hash);
         for (e, slot) in slots.iter_mut().enumerate() {
             let (a, b) = (v[e], v[(e + 1) % 3]);
@@ -78,69 +71,79 @@ pub(crate) fn link_all<S: Scalar>(
             // Any order of a pair's two vertices on which both its edges agree: by hash, and
             // on equal hashes (equal or colliding points) by x, then y, then z.
             let forward = ha < hb || (ha == hb && lexical(a, b) == Ordering::Less);
-            // The region of the edge's first vertex above a hash of the pair: edges meet in
-            // sorted order region by region, so their triangles are still in the cache.
-            let first = if forward { a } else { b };
-            let hash = mix(ha.min(hb) ^ ha.max(hb).rotate_left(32)) >> (64 - HASH_BITS);
-            let key = (region(first) & 0xfff) << HASH_BITS | hash;
-            *slot = key << 31 | (forward as u64) << SLOT_BITS | (c * 3 + e) as u64;
+            let key = (ha ^ hb) >> (64 - HASH_BITS);
+            *slot = key << (SLOT_BITS + 1) | (forward as u64) << SLOT_BITS | (used + e) as u64;
         }
         used += 3;
     }
-    let records = &mut records[..used];
     // Records are made in slot order, so a stable sort on the hash and direction sorts them fully.
-    crate::radix::sort(records, temp, SLOT_BITS, SLOT_BITS + 1 + 12 + HASH_BITS);
+    let (records, earlier) = crate::radix::sort::<3>(&mut records[..used], temp, SLOT_BITS);
+    // `earlier[s]`: one more than the slot of the edge a manifold edge `s` meets, or zero.
+    earlier.fill(0);
+    let slot = |r: u64| (r & ((1 << SLOT_BITS) - 1)) as usize;
     let mut start = 0;
     while start < records.len() {
-        let key = records[start] >> 31;
+        let key = records[start] >> (SLOT_BITS + 1);
         let mut end = start + 1;
-        while end < records.len() && records[end] >> 31 == key {
+        while end < records.len() && records[end] >> (SLOT_BITS + 1) == key {
             end += 1;
         }
         let run = &records[start..end];
         // Backward records (direction bit 0) sort before forward ones within a run.
         let split = run.partition_point(|r| (r >> SLOT_BITS) & 1 == 0);
-        for &x in &run[..split] {
-            for &y in &run[split..] {
-                link(sources, order, triangles, x, y);
+        if let ([x], [y]) = run.split_at(split) {
+            let (a, b) = (slot(*x).min(slot(*y)), slot(*x).max(slot(*y)));
+            if let Some(e) = earlier.get_mut(b) {
+                *e = a as u64 + 1;
+            }
+        } else {
+            for &x in &run[..split] {
+                for &y in &run[split..] {
+                    link(sources, order, triangles, slot(x), slot(y));
+                }
             }
         }
         start = end;
     }
+    for (b, &a) in earlier.iter().enumerate() {
+        if a != 0 {
+            link(sources, order, triangles, a as usize - 1, b);
+        }
+    }
 }
 
-/// Compares the edges in records `x` and `y` exactly and deactivates them where one hides the other.
+/// Compares the edges in slots `sx` and `sy` exactly and deactivates them where one hides the
+/// other.
 fn link<S: Scalar>(
     sources: &[Triangle<S>],
     order: &[u32],
     triangles: &mut [StandardTriangle<S>],
-    x: u64,
-    y: u64,
+    sx: usize,
+    sy: usize,
 ) {
-    let slot = |r: u64| (r & ((1 << SLOT_BITS) - 1)) as usize;
-    let (sx, sy) = (slot(x), slot(y));
     // `a` is the later triangle, as in `Scene::push`.
     let ((a, i), (b, j)) = if sx > sy {
         ((sx / 3, sx % 3), (sy / 3, sy % 3))
     } else {
         ((sy / 3, sy % 3), (sx / 3, sx % 3))
     };
-    let vertices = |c: usize| {
-        order
-            .get(c)
-            .and_then(|&k| sources.get(k as usize))
-            .map(Triangle::vertices)
-    };
-    let (Some(ta), Some(tb)) = (vertices(a), vertices(b)) else {
+    let source = |c: usize| order.get(c).and_then(|&k| sources.get(k as usize));
+    let (Some(ta), Some(tb)) = (source(a), source(b)) else {
         return;
     };
-    if a == b || ta[i] != tb[(j + 1) % 3] || ta[(i + 1) % 3] != tb[j] {
+    // Vertex k of a source, read in place (no copy of the three).
+    let at = |t: &Triangle<S>, k: usize| match k % 3 {
+        0 => t.v0,
+        1 => t.v1,
+        _ => t.v2,
+    };
+    if a == b || at(ta, i) != at(tb, j + 1) || at(ta, i + 1) != at(tb, j) {
         return;
     }
     let (Some(pa), Some(pb)) = (triangles.get(a), triangles.get(b)) else {
         return;
     };
-    if hides(pa, pb, tb[(j + 2) % 3]) {
+    if hides(pa, pb, at(tb, j + 2)) {
         deactivate(&mut triangles[a], i);
         deactivate(&mut triangles[b], j);
     }
@@ -163,18 +166,4 @@ fn mix(mut z: u64) -> u64 {
     z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
     z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
     z ^ (z >> 31)
-}
-
-/// The Morton key of a point with coordinates below `2^21`: their bits interleaved, x lowest
-/// (each spread to every third bit by the usual shifts and masks).
-pub(crate) fn morton(q: [u64; 3]) -> u64 {
-    let spread = |v: u64| {
-        let mut x = v & 0x1f_ffff;
-        x = (x | x << 32) & 0x1f_0000_0000_ffff;
-        x = (x | x << 16) & 0x1f_0000_ff00_00ff;
-        x = (x | x << 8) & 0x100f_00f0_0f00_f00f;
-        x = (x | x << 4) & 0x10c3_0c30_c30c_30c3;
-        (x | x << 2) & 0x1249_2492_4924_9249
-    };
-    spread(q[0]) | spread(q[1]) << 1 | spread(q[2]) << 2
 }

@@ -111,28 +111,39 @@ pub(crate) fn seam_class(all_active: bool, [x1, z1, x2]: [f64; 3]) -> u32 {
         return 0;
     }
     let corners = [(0.0, 0.0), (x1, z1), (x2, 0.0)];
-    let mut worst = 1.0f64;
+    let len = |x: f64, z: f64| libm::sqrt(x * x + z * z);
+    // Edge k runs from corner k to corner k + 1: its vector, length and unit direction.
+    let edge = |(ox, oz): (f64, f64), (ax, az): (f64, f64)| {
+        let (x, z) = (ax - ox, az - oz);
+        let l = len(x, z);
+        (x, z, l, x / l, z / l)
+    };
+    let edges = [
+        edge(corners[0], corners[1]),
+        edge(corners[1], corners[2]),
+        edge(corners[2], corners[0]),
+    ];
+    // The smallest sine over the corners, of the angle and of its half: the worst factor is
+    // its reciprocal (NaN, from a zero angle, is left out by `min`).
+    let mut least = f64::INFINITY;
     for k in 0..3 {
-        let (o, a, b) = (corners[k], corners[(k + 1) % 3], corners[(k + 2) % 3]);
-        let (ux, uz) = (a.0 - o.0, a.1 - o.1);
-        let (vx, vz) = (b.0 - o.0, b.1 - o.1);
-        let len = |x: f64, z: f64| libm::sqrt(x * x + z * z);
-        let (lu, lv) = (len(ux, uz), len(vx, vz));
-        let sin = (ux * vz - uz * vx).abs() / (lu * lv);
-        // sin(θ/2) is half the chord between the two unit directions.
-        let half = len(ux / lu - vx / lv, uz / lu - vz / lv) / 2.0;
-        worst = worst.max(1.0 / sin).max(1.0 / half);
+        // At corner k one edge leaves (u, edge k) and one arrives (w, edge k + 2, pointing in).
+        let (ux, uz, lu, dux, duz) = edges[k];
+        let (wx, wz, lw, dwx, dwz) = edges[(k + 2) % 3];
+        let sin = (ux * wz - uz * wx).abs() / (lu * lw);
+        // sin(θ/2) is half the chord between the two unit directions away from the corner.
+        let half = len(dux + dwx, duz + dwz) / 2.0;
+        least = least.min(sin).min(half);
     }
-    let f = 2.0 * worst;
-    // NaN (a zero angle) lands here too.
-    if f.is_nan() || f >= (1u64 << MAX_CLASS) as f64 {
+    let f = 2.0 * (1.0 / least).max(1.0);
+    // NaN cannot reach here; a zero sine makes `f` infinite.
+    if f >= (1u64 << MAX_CLASS) as f64 {
         return MAX_CLASS;
     }
-    let mut c = 0;
-    while ((1u64 << c) as f64) < f {
-        c += 1;
-    }
-    c
+    // The smallest c with 2^c >= f (f >= 2): f's exponent, plus one unless f is a power of two.
+    let bits = f.to_bits();
+    let exponent = ((bits >> 52) & 0x7ff) as u32 - 1023;
+    exponent + (bits & ((1 << 52) - 1) != 0) as u32
 }
 
 /// A 4-wide node: child boxes quantized to bytes relative to this node's own box.

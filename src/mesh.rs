@@ -1,7 +1,7 @@
 //! [`Mesh`]: many triangles behind a [`bvh`], borrowed from wherever they live (a
 //! `static` in flash, a caller's buffer, `Vec`s on a PC), answering exactly as a linear scan.
 
-use crate::adjacency::{link_all, morton};
+use crate::adjacency::link_all;
 use crate::bvh::{self, BuildError, Grid, MAX_TRIANGLES, Node, Segment};
 use crate::merge::earliest;
 use crate::{Error, Features, Geometry, Parts, Scalar, SceneHit, StandardTriangle, Sweep};
@@ -184,19 +184,26 @@ impl<'a, S: Scalar> Mesh<'a, S> {
         if let Some(e) = checks.into_iter().flatten().next() {
             return Err(e);
         }
-        // Prepare, in input order, keeping the input index; the kept triangles' world bounds.
+        // Prepare, in input order, keeping the input index; the kept triangles' world bounds
+        // (in the scalar: `to_f64` is monotone, so it can come once, at the end).
         let mut kept = 0;
-        let (mut wlo, mut whi) = ([f64::MAX; 3], [f64::MIN; 3]);
+        let mut world: Option<([S; 3], [S; 3])> = None;
         for (index, t) in sources.iter().enumerate() {
             match StandardTriangle::new(t) {
                 Ok(st) => {
                     triangles[kept] = st;
                     order[kept] = index as u32;
                     kept += 1;
-                    let (lo, hi) = Grid::bounds(t);
-                    for a in 0..3 {
-                        wlo[a] = wlo[a].min(lo[a]);
-                        whi[a] = whi[a].max(hi[a]);
+                    for p in t.vertices().map(Vec3::to_array) {
+                        let (lo, hi) = world.get_or_insert((p, p));
+                        for a in 0..3 {
+                            if p[a] < lo[a] {
+                                lo[a] = p[a];
+                            }
+                            if p[a] > hi[a] {
+                                hi[a] = p[a];
+                            }
+                        }
                     }
                 }
                 Err(e) if e.is_degenerate() && degenerates == Degenerates::Skip => {}
@@ -212,16 +219,11 @@ impl<'a, S: Scalar> Mesh<'a, S> {
             return Err(e);
         }
         let (triangles, order) = (&mut triangles[..kept], &mut order[..kept]);
+        let (wlo, whi) = world.map_or(([f64::MAX; 3], [f64::MIN; 3]), |(lo, hi)| {
+            (lo.map(S::to_f64), hi.map(S::to_f64))
+        });
         let largest = (0..3).fold(0.0f64, |m, a| m.max(wlo[a].abs()).max(whi[a].abs()));
-        // Active edges, visited region by region: 16 regions per axis over the bounds' cube.
-        let side = (0..3).fold(0.0f64, |m, a| m.max(whi[a] - wlo[a]));
-        let per_side = 16.0 / side;
-        let region = |p: Vec3<S>| {
-            let q = p.to_array().map(S::to_f64);
-            // Saturating: below zero (and NaN, for a mesh of one point) is region 0.
-            morton([0, 1, 2].map(|a| (((q[a] - wlo[a]) * per_side) as u32).min(15) as u64))
-        };
-        link_all(sources, order, triangles, &mut scratch[..6 * kept], region);
+        link_all(sources, order, triangles, &mut scratch[..6 * kept]);
         let exponent = Grid::exponent_for(largest);
         let (lo, hi) = if kept == 0 {
             ([0; 3], [0; 3])
