@@ -76,9 +76,13 @@ pub(crate) fn link_all<S: Scalar>(
         }
         used += 3;
     }
+    let records = &mut records[..used];
     // Records are made in slot order, so a stable sort on the hash and direction sorts them fully.
-    let (records, earlier) = crate::radix::sort::<3>(&mut records[..used], temp, SLOT_BITS);
+    crate::radix::sort(records, temp, SLOT_BITS, SLOT_BITS + 1 + HASH_BITS);
     // `earlier[s]`: one more than the slot of the edge a manifold edge `s` meets, or zero.
+    let Some(earlier) = temp.get_mut(..used) else {
+        return;
+    };
     earlier.fill(0);
     let slot = |r: u64| (r & ((1 << SLOT_BITS) - 1)) as usize;
     let mut start = 0;
