@@ -15,6 +15,7 @@
 
 mod fixed;
 mod float;
+mod narrow;
 mod wide;
 
 use crate::vec3::Vec3;

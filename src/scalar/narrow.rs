@@ -1,0 +1,336 @@
+//! `I16F16`'s double-width arithmetic from 32-bit operations, for cores without a 32 × 32 → 64
+//! multiply or a divide instruction (Armv6-M, e.g. the Cortex-M0; `ballcast_no_long_mul`, see
+//! `build.rs`): products from 16 × 16 → 32-bit partial products, quotients from a remainder
+//! found by shift-and-subtract and an exact division by the divisor's odd part. Each function
+//! gives exactly the integer of the 64-bit arithmetic it replaces (`wide.rs` chooses per
+//! target), so results are bit-identical on every target; the tests compare them bit for bit.
+
+/// `a · b` exactly from 16 × 16 → 32-bit products: with `|b| <= 2^30` the high halves'
+/// products are at most 2^29 each, so their sum fits 32 bits; the rest are summed in 64.
+#[inline]
+pub(super) fn split_dot_i32(a: [i32; 3], b: [i32; 3]) -> i64 {
+    let (mut hh, mut mid, mut ll) = (0i32, 0i64, 0u64);
+    for i in 0..3 {
+        let (ah, al) = (a[i] >> 16, a[i] & 0xFFFF);
+        let (bh, bl) = (b[i] >> 16, b[i] & 0xFFFF);
+        hh = hh.wrapping_add(ah * bh);
+        mid += (ah * bl) as i64 + (al * bh) as i64;
+        ll += (al as u32 * bl as u32) as u64;
+    }
+    ((hh as i64) << 32) + (mid << 16) + ll as i64
+}
+
+/// `a * b` exactly, from four 16 × 16 → 32-bit products (the only multiply a Cortex-M0 has is
+/// 32 × 32 → 32).
+#[inline]
+pub(super) fn split_mul_i32(a: i32, b: i32) -> i64 {
+    // a = ah 2^16 + al with ah in [-2^15, 2^15) and al in [0, 2^16); likewise b.
+    let (ah, al) = (a >> 16, a & 0xFFFF);
+    let (bh, bl) = (b >> 16, b & 0xFFFF);
+    // |ah bh| <= 2^30; |ah bl|, |al bh| < 2^31; al bl < 2^32 (unsigned): none overflows.
+    let mid = (ah * bl) as i64 + (al * bh) as i64;
+    (((ah * bh) as i64) << 32) + (mid << 16) + (al as u32 * bl as u32) as i64
+}
+
+/// `a * b` exactly for unsigned operands, as [`split_mul_i32`].
+#[inline]
+pub(super) fn split_mul_u32(a: u32, b: u32) -> u64 {
+    let (ah, al) = (a >> 16, a & 0xFFFF);
+    let (bh, bl) = (b >> 16, b & 0xFFFF);
+    let mid = (ah * bl) as u64 + (al * bh) as u64;
+    (((ah * bh) as u64) << 32) + (mid << 16) + (al * bl) as u64
+}
+
+/// `round(a n / d)` to nearest, ties away from zero, saturating, for each `a`: exactly what
+/// `mul_div` gives. `F = floor(|n| 2^32 / |d|)` (one division, `|n| < |d|` so `F < 2^32`)
+/// gives an estimate `floor(|a| F / 2^32)` short of `floor(|a n| / |d|)` by at most one
+/// (`|a| / 2^32 <= 1/2` lost to F, one to the floor); the exact remainder `|a n| - q |d|`
+/// corrects it and decides the rounding. `None` for `|n| >= |d|`.
+pub(super) fn split_scale_fraction_i32(a: [i32; 3], n: i32, d: i32) -> Option<[i32; 3]> {
+    let (nm, dm) = (n.unsigned_abs(), d.unsigned_abs());
+    if nm >= dm {
+        return None;
+    }
+    let f = (shifted_div::<32>(nm, dm).0, dm);
+    Some(a.map(|a| scale_one(a, n, d, f)))
+}
+
+/// One component of [`split_scale_fraction_i32`], with `(F, |d|)`.
+#[inline]
+fn scale_one(a: i32, n: i32, d: i32, (f, dm): (u32, u32)) -> i32 {
+    let am = a.unsigned_abs();
+    let mut q = (split_mul_u32(am, f) >> 32) as u32;
+    // q <= floor(|a n| / dm) <= q + 1, so 0 <= rem < 2 dm <= 2^32: the remainder is its own
+    // value modulo 2^32, which 32-bit products give.
+    let mut rem = am
+        .wrapping_mul(n.unsigned_abs())
+        .wrapping_sub(q.wrapping_mul(dm));
+    if rem >= dm {
+        q += 1;
+        rem -= dm;
+    }
+    // Half or more of the divisor left: away from zero. q <= |a| < 2^31 + 1 afterwards.
+    let q = q as i64 + (rem >= dm - rem) as i64;
+    let negative = ((a < 0) != (n < 0)) != (d < 0);
+    let q = if negative { -q } else { q };
+    q.clamp(i32::MIN as i64, i32::MAX as i64) as i32
+}
+
+/// `round(n 2^16 / d)` to nearest, ties away from zero, saturating (a zero divisor gives the
+/// largest value of `n`'s sign, or zero): exactly what the generic 64-bit path of
+/// [`Scalar::div`](super::Scalar::div) gives, from 32-bit operations. The integer part is one
+/// 32-bit division (none when `|n| < |d|`, as for a fraction of a path), the 16 fractional
+/// bits are [`shifted_div`].
+pub(super) fn split_div_i32(n: i32, d: i32) -> i32 {
+    let max = if (n < 0) == (d < 0) {
+        i32::MAX
+    } else {
+        i32::MIN
+    };
+    if d == 0 {
+        return if n == 0 { 0 } else { max };
+    }
+    let (a, d) = (n.unsigned_abs(), d.unsigned_abs());
+    let (whole, r) = if a < d { (0, a) } else { (a / d, a % d) };
+    // A quotient of 2^31 or more saturates (after rounding, too).
+    if whole >= 1 << 15 {
+        return max;
+    }
+    let (frac, r) = shifted_div::<16>(r, d);
+    let mut q = (whole << 16) | frac;
+    // Half or more of the divisor left: away from zero. q <= 2^31 afterwards.
+    if r >= d - r {
+        q += 1;
+    }
+    if max > 0 {
+        q.min(i32::MAX as u32) as i32
+    } else {
+        (-(q as i64)) as i32
+    }
+}
+
+/// `(q, r)` with `n 2^K = q d + r` and `0 <= r < d`, for `n < d <= 2^31` (so `q < 2^K`),
+/// `K <= 32`. The remainder comes from `K` shift-and-subtract steps that keep only it (three
+/// or four instructions a step on a Cortex-M0; gathering the quotient's bits as well costs
+/// more than twice that). The quotient is then an exact division, `q d = n 2^K - r`: shifted
+/// right by the trailing zeros `t` of `d`, and multiplied by the inverse of the odd `d / 2^t`
+/// modulo 2^32.
+fn shifted_div<const K: u32>(n: u32, d: u32) -> (u32, u32) {
+    let mut r = n;
+    for _ in 0..K {
+        // r < d <= 2^31, so 2r fits.
+        r <<= 1;
+        if r >= d {
+            r -= d;
+        }
+    }
+    // Both terms of (n 2^K - r) / 2^t are whole: r = n 2^K - q d is a multiple of 2^t, so is
+    // n 2^K. Their difference is q (d / 2^t), taken modulo 2^32 without a 64-bit shift.
+    let t = d.trailing_zeros();
+    let high = if t < K {
+        (n << (K - 1 - t)) << 1
+    } else {
+        n >> (t - K)
+    };
+    let exact = high.wrapping_sub(r >> t);
+    (exact.wrapping_mul(odd_inverse(d >> t)), r)
+}
+
+/// The inverse of an odd `d` modulo 2^32: `3d XOR 2` is one modulo 2^5, and each Newton step
+/// `x (2 - d x)` doubles the bits that are right (Montgomery; Warren, Hacker's Delight, 10-16).
+#[inline]
+fn odd_inverse(d: u32) -> u32 {
+    let mut x = d.wrapping_mul(3) ^ 2;
+    for _ in 0..3 {
+        x = x.wrapping_mul(2u32.wrapping_sub(d.wrapping_mul(x)));
+    }
+    x
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{
+        odd_inverse, shifted_div, split_div_i32, split_dot_i32, split_mul_i32, split_mul_u32,
+        split_scale_fraction_i32,
+    };
+    use crate::Scalar;
+    use crate::scalar::sealed::Kernel;
+    use fixed::types::I16F16;
+
+    /// The split products equal the 64-bit ones: on the extremes and on 10^6 pseudo-random pairs.
+    #[test]
+    fn split_products_are_exact() {
+        let edges = [
+            i32::MIN,
+            i32::MIN + 1,
+            -65537,
+            -65536,
+            -65535,
+            -1,
+            0,
+            1,
+            65535,
+            65536,
+        ];
+        let edges = edges.iter().chain(&[65537, i32::MAX - 1, i32::MAX]);
+        for &a in edges.clone() {
+            for &b in edges.clone() {
+                assert_eq!(split_mul_i32(a, b), a as i64 * b as i64, "{a} {b}");
+                let (a, b) = (a as u32, b as u32);
+                assert_eq!(split_mul_u32(a, b), a as u64 * b as u64, "{a} {b}");
+            }
+        }
+        let mut x: u64 = 0x9E37_79B9_7F4A_7C15;
+        for _ in 0..1_000_000 {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            let (a, b) = (x as i32, (x >> 32) as i32);
+            assert_eq!(split_mul_i32(a, b), a as i64 * b as i64);
+            let (a, b) = (a as u32, b as u32);
+            assert_eq!(split_mul_u32(a, b), a as u64 * b as u64);
+            // A unit vector's bits: |b| <= 2^30.
+            let u = [b as i32 >> 1, (b as i32).rotate_left(7) >> 1, a as i32 >> 1];
+            let v = [a as i32, b as i32, (x >> 16) as i32];
+            let want: i64 = (0..3).map(|i| v[i] as i64 * u[i] as i64).sum();
+            assert_eq!(split_dot_i32(v, u), want);
+        }
+        let mut x: u64 = 0x2545_F491_4F6C_DD1D;
+        for k in 0..1_000_000u32 {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            // Mixed magnitudes: whole numerators and divisors, and small ones.
+            let (n, d) = ((x as i32) >> (k % 31), ((x >> 32) as i32) >> (k / 7 % 31));
+            let want = I16F16::from_bits(n).div(I16F16::from_bits(d)).to_bits();
+            assert_eq!(split_div_i32(n, d), want, "{n} / {d}");
+        }
+        for n in [
+            i32::MIN,
+            i32::MIN + 1,
+            -65536,
+            -1,
+            0,
+            1,
+            65535,
+            65536,
+            i32::MAX,
+        ] {
+            for d in [
+                i32::MIN,
+                -65537,
+                -65536,
+                -2,
+                -1,
+                0,
+                1,
+                2,
+                3,
+                65536,
+                65537,
+                i32::MAX,
+            ] {
+                let want = I16F16::from_bits(n).div(I16F16::from_bits(d)).to_bits();
+                assert_eq!(split_div_i32(n, d), want, "{n} / {d}");
+            }
+        }
+        let mut x: u64 = 0x6A09_E667_F3BC_C909;
+        for k in 0..1_000_000u32 {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            // Mixed magnitudes; |n| < |d| (a fraction of a path) for most, any for some.
+            let a = [
+                (x as i32) >> (k % 31),
+                (x >> 8) as i32 >> (k % 29),
+                (x >> 24) as i32,
+            ];
+            let (n, d) = (
+                ((x >> 32) as i32) >> (k / 7 % 31),
+                (x >> 16) as i32 >> (k / 3 % 29),
+            );
+            let n = if k % 8 == 0 {
+                n
+            } else {
+                n % d.saturating_abs().max(1)
+            };
+            let want = a.map(|a| {
+                let f = |b: i32| I16F16::from_bits(b);
+                <I16F16 as Kernel>::mul_div(f(a), f(n), f(d)).to_bits()
+            });
+            if let Some(got) = split_scale_fraction_i32(a, n, d) {
+                assert_eq!(got, want, "{a:?} * {n} / {d}");
+            } else {
+                assert!(n.unsigned_abs() >= d.unsigned_abs());
+            }
+        }
+        for a in [i32::MIN, i32::MIN + 1, -1, 0, 1, i32::MAX] {
+            for (n, d) in [
+                (0, 1),
+                (1, 2),
+                (-1, 2),
+                (i32::MAX - 1, i32::MAX),
+                (i32::MIN + 1, i32::MIN),
+                (1, -3),
+                (-5, -7),
+            ] {
+                let f = |b: i32| I16F16::from_bits(b);
+                let want = <I16F16 as Kernel>::mul_div(f(a), f(n), f(d)).to_bits();
+                assert_eq!(
+                    split_scale_fraction_i32([a; 3], n, d),
+                    Some([want; 3]),
+                    "{a} * {n} / {d}"
+                );
+            }
+        }
+        let (m, u) = (i32::MIN, 1 << 30);
+        for (v, w) in [
+            ([m; 3], [u; 3]),
+            ([m; 3], [-u; 3]),
+            ([i32::MAX; 3], [-u; 3]),
+        ] {
+            let want: i64 = (0..3).map(|i| v[i] as i64 * w[i] as i64).sum();
+            assert_eq!(split_dot_i32(v, w), want);
+        }
+    }
+
+    /// The inverse is right for every odd 16-bit number and for pseudo-random 32-bit ones; the
+    /// shifted division equals the 64-bit one, with divisors of every trailing-zero count.
+    #[test]
+    fn shifted_division_is_exact() {
+        for d in (1..1u32 << 16).step_by(2) {
+            assert_eq!(d.wrapping_mul(odd_inverse(d)), 1, "{d}");
+        }
+        let mut x: u64 = 0xB7E1_5162_8AED_2A6B;
+        for k in 0..1_000_000u32 {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            let odd = x as u32 | 1;
+            assert_eq!(odd.wrapping_mul(odd_inverse(odd)), 1, "{odd}");
+            // 0 < d <= 2^31, of every magnitude and every count of trailing zeros; n < d.
+            let d = ((((x >> 32) as u32 | 1) << (k % 32)).min(1 << 31) >> (k / 32 % 31)).max(1);
+            let n = (x as u32) % d;
+            let (q, r) = shifted_div::<16>(n, d);
+            let w = ((n as u64) << 16) / d as u64;
+            assert_eq!(
+                (q as u64, r as u64),
+                (w, ((n as u64) << 16) % d as u64),
+                "{n} {d}"
+            );
+            let (q, r) = shifted_div::<32>(n, d);
+            let w = ((n as u64) << 32) / d as u64;
+            assert_eq!(
+                (q as u64, r as u64),
+                (w, ((n as u64) << 32) % d as u64),
+                "{n} {d}"
+            );
+        }
+        for d in [1, 2, 3, 1 << 30, (1 << 31) - 1, 1 << 31] {
+            for n in [0, 1, d / 2, d - 1].into_iter().filter(|&n| n < d) {
+                let w = ((n as u64) << 32) / d as u64;
+                assert_eq!(shifted_div::<32>(n, d).0 as u64, w, "{n} {d}");
+            }
+        }
+    }
+}
