@@ -38,7 +38,7 @@ macro_rules! saturate {
 macro_rules! fixed_scalar {
     (
         $t:ty, $unit:ty, $bits:ty, $wide:ty, $uwide:ty, $frac:expr, $ufrac:expr, $limit_int:expr,
-        $wmul:ident, $uwmul:ident, $wdot:ident, $ndiv:ident, $nscale:ident, $isqrt:ident, $sq:ty
+        $wmul:ident, $uwmul:ident, $wdot:ident, $ndot:ident, $ndiv:ident, $nscale:ident, $isqrt:ident, $sq:ty
     ) => {
         impl Scalar for $t {
             const ZERO: Self = <$t>::ZERO;
@@ -124,11 +124,12 @@ macro_rules! fixed_scalar {
 
             #[inline]
             fn dot_unit(d: Vec3<Self>, u: Vec3<$unit>) -> Self {
-                let sum = $wdot(
-                    [d.x.to_bits(), d.y.to_bits(), d.z.to_bits()],
-                    [u.x.to_bits(), u.y.to_bits(), u.z.to_bits()],
-                );
-                <$t>::from_bits(round_shift!(sum, $ufrac) as $bits)
+                let d = [d.x.to_bits(), d.y.to_bits(), d.z.to_bits()];
+                let u = [u.x.to_bits(), u.y.to_bits(), u.z.to_bits()];
+                if let Some(r) = $ndot(d, u) {
+                    return <$t>::from_bits(r);
+                }
+                <$t>::from_bits(round_shift!($wdot(d, u), $ufrac) as $bits)
             }
             #[inline]
             fn mul_cmp(a: Self, b: Self, c: Self, d: Self) -> Ordering {
@@ -280,6 +281,7 @@ fixed_scalar!(
     wide_mul_i32,
     wide_mul_u32,
     wide_dot_i32,
+    narrow_dot_unit_i32,
     narrow_div_i32,
     narrow_scale_fraction_i32,
     isqrt_nearest_64,
@@ -297,6 +299,7 @@ fixed_scalar!(
     wide_mul_i64,
     wide_mul_u64,
     wide_dot_i64,
+    no_narrow_dot_unit,
     no_narrow_div,
     no_narrow_scale_fraction,
     isqrt_nearest_128,

@@ -5,19 +5,35 @@
 //! gives exactly the integer of the 64-bit arithmetic it replaces (`wide.rs` chooses per
 //! target), so results are bit-identical on every target; the tests compare them bit for bit.
 
-/// `a · b` exactly from 16 × 16 → 32-bit products: with `|b| <= 2^30` the high halves'
-/// products are at most 2^29 each, so their sum fits 32 bits; the rest are summed in 64.
-#[inline]
-pub(super) fn split_dot_i32(a: [i32; 3], b: [i32; 3]) -> i64 {
-    let (mut hh, mut mid, mut ll) = (0i32, 0i64, 0u64);
+/// `round(a · b / 2^30)` to nearest, ties away from zero, for `|b| <= 2^30` (a unit vector's
+/// bits) and `|a| <= 2^31 - 2^16`, where the result is representable: `I16F16`'s `dot_unit`,
+/// the same integer as from the exact 64-bit sum `S`, with no 64-bit addition.
+///
+/// The low 32 bits of `S` are the wrapping sum of the 32-bit products. Above them, an estimate
+/// in units of 2^27 from three partial products per component (`a = ah 2^16 + al`,
+/// `b = bh 2^15 + bl`, low parts signed: `al` 16 bits, `bl` 15 bits, so `al bl` is small)
+/// is short of `S / 2^27` by less than 15 units and over by less than 12 (the dropped `al bl`,
+/// below 2^29 each, and three floors); `floor(S / 2^27)` modulo 32, from the low bits, then
+/// fixes it exactly.
+pub(super) fn split_dot_unit_i32(a: [i32; 3], b: [i32; 3]) -> i32 {
+    let (mut low, mut high, mut mid) = (0u32, 0i32, 0i32);
     for i in 0..3 {
-        let (ah, al) = (a[i] >> 16, a[i] & 0xFFFF);
-        let (bh, bl) = (b[i] >> 16, b[i] & 0xFFFF);
-        hh = hh.wrapping_add(ah * bh);
-        mid += (ah * bl) as i64 + (al * bh) as i64;
-        ll += (al as u32 * bl as u32) as u64;
+        let (a, b) = (a[i], b[i]);
+        low = low.wrapping_add((a as u32).wrapping_mul(b as u32));
+        let (al, bl) = (a as i16 as i32, (b << 17) >> 17);
+        let (ah, bh) = (a.wrapping_sub(al) >> 16, b.wrapping_sub(bl) >> 15);
+        // |ah| < 2^15, |bh| <= 2^15, |al| <= 2^15, |bl| <= 2^14: |2 ah bl + al bh| < 2^31.
+        high = high.wrapping_add(ah.wrapping_mul(bh));
+        mid += (2 * ah * bl).wrapping_add(al.wrapping_mul(bh)) >> 12;
     }
-    ((hh as i64) << 32) + (mid << 16) + ll as i64
+    // S = 2^31 high + 2^15 sum(2 ah bl + al bh) + sum(al bl); in units of 2^27 the estimate is
+    // 16 high + mid, and floor(S / 2^27) - estimate lies in [-12, 14].
+    let estimate = high.wrapping_mul(16).wrapping_add(mid);
+    let fix = ((low >> 27) as i32).wrapping_sub(estimate).wrapping_add(12) & 31;
+    let whole = high.wrapping_mul(2).wrapping_add((mid + fix - 12) >> 3);
+    // `whole` is floor(S / 2^30); the low 30 bits of S decide the rounding, ties away from zero.
+    let frac = low & ((1 << 30) - 1);
+    whole.wrapping_add(((frac + (1 << 29) - (whole < 0) as u32) >> 30) as i32)
 }
 
 /// `a * b` exactly, from four 16 × 16 → 32-bit products (the only multiply a Cortex-M0 has is
@@ -59,7 +75,7 @@ pub(super) fn split_scale_fraction_i32(a: [i32; 3], n: i32, d: i32) -> Option<[i
 #[inline]
 fn scale_one(a: i32, n: i32, d: i32, (f, dm): (u32, u32)) -> i32 {
     let am = a.unsigned_abs();
-    let mut q = (split_mul_u32(am, f) >> 32) as u32;
+    let mut q = high_mul_u32(am, f);
     // q <= floor(|a n| / dm) <= q + 1, so 0 <= rem < 2 dm <= 2^32: the remainder is its own
     // value modulo 2^32, which 32-bit products give.
     let mut rem = am
@@ -69,11 +85,28 @@ fn scale_one(a: i32, n: i32, d: i32, (f, dm): (u32, u32)) -> i32 {
         q += 1;
         rem -= dm;
     }
-    // Half or more of the divisor left: away from zero. q <= |a| < 2^31 + 1 afterwards.
-    let q = q as i64 + (rem >= dm - rem) as i64;
-    let negative = ((a < 0) != (n < 0)) != (d < 0);
-    let q = if negative { -q } else { q };
-    q.clamp(i32::MIN as i64, i32::MAX as i64) as i32
+    // Half or more of the divisor left: away from zero. q <= |a| <= 2^31 afterwards, so its
+    // negation fits and only a positive 2^31 saturates.
+    let q = q + (rem >= dm - rem) as u32;
+    if (a ^ n ^ d) < 0 {
+        q.wrapping_neg() as i32
+    } else {
+        q.min(i32::MAX as u32) as i32
+    }
+}
+
+/// `floor(a f / 2^32)` for `a <= 2^31`, from four 16 × 16 → 32-bit products: the high half of
+/// `a` is at most 2^15, so `ah fl` plus the carry of the low product fits 32 bits; the two
+/// middle products are added in halves. (The textbook form, one middle sum with a carry, is
+/// recognised by LLVM as a 64-bit multiply and becomes a call to `__aeabi_lmul`.)
+#[inline]
+fn high_mul_u32(a: u32, f: u32) -> u32 {
+    let (ah, al) = (a >> 16, a & 0xFFFF);
+    let (fh, fl) = (f >> 16, f & 0xFFFF);
+    let hl = ah * fl + ((al * fl) >> 16);
+    let lh = al * fh;
+    let carry = ((hl & 0xFFFF) + (lh & 0xFFFF)) >> 16;
+    ah * fh + (hl >> 16) + (lh >> 16) + carry
 }
 
 /// `round(n 2^16 / d)` to nearest, ties away from zero, saturating (a zero divisor gives the
@@ -150,8 +183,8 @@ fn odd_inverse(d: u32) -> u32 {
 #[cfg(test)]
 mod tests {
     use super::{
-        odd_inverse, shifted_div, split_div_i32, split_dot_i32, split_mul_i32, split_mul_u32,
-        split_scale_fraction_i32,
+        high_mul_u32, odd_inverse, shifted_div, split_div_i32, split_dot_unit_i32, split_mul_i32,
+        split_mul_u32, split_scale_fraction_i32,
     };
     use crate::Scalar;
     use crate::scalar::sealed::Kernel;
@@ -189,11 +222,24 @@ mod tests {
             assert_eq!(split_mul_i32(a, b), a as i64 * b as i64);
             let (a, b) = (a as u32, b as u32);
             assert_eq!(split_mul_u32(a, b), a as u64 * b as u64);
-            // A unit vector's bits: |b| <= 2^30.
-            let u = [b as i32 >> 1, (b as i32).rotate_left(7) >> 1, a as i32 >> 1];
-            let v = [a as i32, b as i32, (x >> 16) as i32];
-            let want: i64 = (0..3).map(|i| v[i] as i64 * u[i] as i64).sum();
-            assert_eq!(split_dot_i32(v, u), want);
+            let a = a.min(1 << 31);
+            assert_eq!(
+                high_mul_u32(a, b) as u64,
+                (a as u64 * b as u64) >> 32,
+                "{a} {b}"
+            );
+        }
+        for (a, b) in [
+            (1 << 31, u32::MAX),
+            (1 << 31, 0),
+            ((1 << 31) - 1, u32::MAX),
+            (65535, u32::MAX),
+        ] {
+            assert_eq!(
+                high_mul_u32(a, b) as u64,
+                (a as u64 * b as u64) >> 32,
+                "{a} {b}"
+            );
         }
         let mut x: u64 = 0x2545_F491_4F6C_DD1D;
         for k in 0..1_000_000u32 {
@@ -283,14 +329,57 @@ mod tests {
                 );
             }
         }
-        let (m, u) = (i32::MIN, 1 << 30);
-        for (v, w) in [
-            ([m; 3], [u; 3]),
-            ([m; 3], [-u; 3]),
-            ([i32::MAX; 3], [-u; 3]),
-        ] {
-            let want: i64 = (0..3).map(|i| v[i] as i64 * w[i] as i64).sum();
-            assert_eq!(split_dot_i32(v, w), want);
+    }
+
+    /// `round(a · b / 2^30)` from the exact 64-bit sum, where it is representable.
+    fn dot_unit_64(a: [i32; 3], b: [i32; 3]) -> Option<i32> {
+        let s: i64 = (0..3).map(|i| a[i] as i64 * b[i] as i64).sum();
+        let r = if s < 0 {
+            -((-s + (1 << 29)) >> 30)
+        } else {
+            (s + (1 << 29)) >> 30
+        };
+        i32::try_from(r).ok()
+    }
+
+    /// The 32-bit dot product with a unit vector equals the 64-bit one wherever that is
+    /// representable: pseudo-random vectors of every magnitude, the extremes, and ties.
+    #[test]
+    fn split_dot_unit_is_exact() {
+        let top = i32::MAX - (1 << 16) + 1;
+        let mut x: u64 = 0x243F_6A88_85A3_08D3;
+        let mut checked = 0;
+        for k in 0..2_000_000u32 {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            let y = x.rotate_left(23);
+            let a =
+                [x as i32, (x >> 21) as i32, y as i32].map(|c| (c >> (k % 31)).clamp(-top, top));
+            let b = [(x >> 32) as i32, (y >> 32) as i32, (y >> 11) as i32]
+                .map(|c| c >> (1 + k / 31 % 30));
+            if let Some(want) = dot_unit_64(a, b) {
+                assert_eq!(split_dot_unit_i32(a, b), want, "{a:?} · {b:?}");
+                checked += 1;
+            }
+        }
+        assert!(checked > 1_000_000, "{checked}");
+        let (u, h) = (1 << 30, 1 << 29);
+        for a in [top, -top, 1, -1, 0, 3, -3, 1 << 16, -(1 << 16)] {
+            for b in [
+                [u, 0, 0],
+                [-u, 0, 0],
+                [h, 0, 0],
+                [-h, 0, 0],
+                [0, h + 1, 0],
+                [h, h, h],
+            ] {
+                for a in [[a, 0, 0], [a, a, 0], [a, -a, a]] {
+                    if let Some(want) = dot_unit_64(a, b) {
+                        assert_eq!(split_dot_unit_i32(a, b), want, "{a:?} · {b:?}");
+                    }
+                }
+            }
         }
     }
 

@@ -47,16 +47,25 @@ pub(super) fn wide_mul_u32(a: u32, b: u32) -> u64 {
     }
 }
 
-/// `a · b` exactly, for `b` a unit vector's bits (`|b| <= 2^30`), as [`wide_mul_i32`]: on cores
-/// without a long multiply the four kinds of partial product are summed over the three
-/// components before they are combined, so the 64-bit additions are paid once per kind.
+/// `a · b` exactly, for `b` a unit vector's bits.
 #[inline]
 pub(super) fn wide_dot_i32(a: [i32; 3], b: [i32; 3]) -> i64 {
-    if cfg!(ballcast_no_long_mul) {
-        split_dot_i32(a, b)
-    } else {
-        a[0] as i64 * b[0] as i64 + a[1] as i64 * b[1] as i64 + a[2] as i64 * b[2] as i64
-    }
+    a[0] as i64 * b[0] as i64 + a[1] as i64 * b[1] as i64 + a[2] as i64 * b[2] as i64
+}
+
+/// `I16F16`'s `a · b / 2^30` rounded to nearest, ties away from zero, for `b` a unit vector's
+/// bits (`|b| <= 2^30`), on cores without a long multiply: from 32-bit products
+/// ([`split_dot_unit_i32`]), the integer [`wide_dot_i32`] and the rounding give. `None`
+/// elsewhere.
+#[inline]
+pub(super) fn narrow_dot_unit_i32(a: [i32; 3], b: [i32; 3]) -> Option<i32> {
+    cfg!(ballcast_no_long_mul).then(|| split_dot_unit_i32(a, b))
+}
+
+/// No narrow dot product (`I32F32`).
+#[inline]
+pub(super) fn no_narrow_dot_unit(_: [i64; 3], _: [i64; 3]) -> Option<i64> {
+    None
 }
 
 /// `a · b` exactly in 128 bits.
