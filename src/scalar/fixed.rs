@@ -38,7 +38,7 @@ macro_rules! saturate {
 macro_rules! fixed_scalar {
     (
         $t:ty, $unit:ty, $bits:ty, $wide:ty, $uwide:ty, $frac:expr, $ufrac:expr, $limit_int:expr,
-        $wmul:ident, $uwmul:ident, $wdot:ident, $ndot:ident, $ndiv:ident, $nscale:ident, $isqrt:ident, $sq:ty
+        $wmul:ident, $nmul:ident, $uwmul:ident, $wdot:ident, $ndot:ident, $ndiv:ident, $nscale:ident, $isqrt:ident, $sq:ty
     ) => {
         impl Scalar for $t {
             const ZERO: Self = <$t>::ZERO;
@@ -85,6 +85,9 @@ macro_rules! fixed_scalar {
             }
             #[inline]
             fn mul(self, o: Self) -> Self {
+                if let Some(p) = $nmul(self.to_bits(), o.to_bits()) {
+                    return <$t>::from_bits(p);
+                }
                 let p = $wmul(self.to_bits(), o.to_bits());
                 saturate!($t, $bits, $wide, round_shift!(p, $frac))
             }
@@ -279,6 +282,7 @@ fixed_scalar!(
     30,
     4096,
     wide_mul_i32,
+    narrow_mul_i32,
     wide_mul_u32,
     wide_dot_i32,
     narrow_dot_unit_i32,
@@ -297,6 +301,7 @@ fixed_scalar!(
     62,
     268_435_456,
     wide_mul_i64,
+    no_narrow_mul,
     wide_mul_u64,
     wide_dot_i64,
     no_narrow_dot_unit,

@@ -16,7 +16,8 @@
 /// below 2^29 each, and three floors); `floor(S / 2^27)` modulo 32, from the low bits, then
 /// fixes it exactly.
 pub(super) fn split_dot_unit_i32(a: [i32; 3], b: [i32; 3]) -> i32 {
-    let (mut low, mut high, mut mid) = (0u32, 0i32, 0i32);
+    // `mid` starts 12 units low: the estimate below is then 12 under, and its fix non-negative.
+    let (mut low, mut high, mut mid) = (0u32, 0i32, -12i32);
     for i in 0..3 {
         let (a, b) = (a[i], b[i]);
         low = low.wrapping_add((a as u32).wrapping_mul(b as u32));
@@ -26,11 +27,11 @@ pub(super) fn split_dot_unit_i32(a: [i32; 3], b: [i32; 3]) -> i32 {
         high = high.wrapping_add(ah.wrapping_mul(bh));
         mid += (2 * ah * bl).wrapping_add(al.wrapping_mul(bh)) >> 12;
     }
-    // S = 2^31 high + 2^15 sum(2 ah bl + al bh) + sum(al bl); in units of 2^27 the estimate is
-    // 16 high + mid, and floor(S / 2^27) - estimate lies in [-12, 14].
+    // S = 2^31 high + 2^15 sum(2 ah bl + al bh) + sum(al bl); in units of 2^27 the estimate
+    // 16 high + mid + 12 is off floor(S / 2^27) by -12 to 14, so 16 high + mid by 0 to 26.
     let estimate = high.wrapping_mul(16).wrapping_add(mid);
-    let fix = ((low >> 27) as i32).wrapping_sub(estimate).wrapping_add(12) & 31;
-    let whole = high.wrapping_mul(2).wrapping_add((mid + fix - 12) >> 3);
+    let fix = ((low >> 27) as i32).wrapping_sub(estimate) & 31;
+    let whole = high.wrapping_mul(2).wrapping_add((mid + fix) >> 3);
     // `whole` is floor(S / 2^30); the low 30 bits of S decide the rounding, ties away from zero.
     let frac = low & ((1 << 30) - 1);
     whole.wrapping_add(((frac + (1 << 29) - (whole < 0) as u32) >> 30) as i32)
@@ -48,6 +49,20 @@ pub(super) fn split_mul_i32(a: i32, b: i32) -> i64 {
     (((ah * bh) as i64) << 32) + (mid << 16) + (al as u32 * bl as u32) as i64
 }
 
+/// `round(s b / 2^16)` to nearest, ties away from zero, for `|s| < 2^16`: `I16F16`'s `mul`
+/// with one factor below one. With `b = bh 2^16 + bl` (`bl` unsigned), `|s| b / 2^16` is
+/// `|s| bh + |s| bl / 2^16`, two products that fit 32 bits, and its magnitude stays below
+/// `2^31 - 2^15`: no saturation, and the sign of `s` applies afterwards (the rounding is odd).
+#[inline]
+pub(super) fn small_mul_i32(s: i32, b: i32) -> i32 {
+    let m = s.unsigned_abs() as i32;
+    let (bh, bl) = (b >> 16, (b & 0xFFFF) as u32);
+    let low = m as u32 * bl;
+    let whole = m * bh + (low >> 16) as i32;
+    let r = whole + (((low & 0xFFFF) + (1 << 15) - (whole < 0) as u32) >> 16) as i32;
+    if s < 0 { -r } else { r }
+}
+
 /// `a * b` exactly for unsigned operands, as [`split_mul_i32`].
 #[inline]
 pub(super) fn split_mul_u32(a: u32, b: u32) -> u64 {
@@ -58,16 +73,23 @@ pub(super) fn split_mul_u32(a: u32, b: u32) -> u64 {
 }
 
 /// `round(a n / d)` to nearest, ties away from zero, saturating, for each `a`: exactly what
-/// `mul_div` gives. `F = floor(|n| 2^32 / |d|)` (one division, `|n| < |d|` so `F < 2^32`)
-/// gives an estimate `floor(|a| F / 2^32)` short of `floor(|a n| / |d|)` by at most one
-/// (`|a| / 2^32 <= 1/2` lost to F, one to the floor); the exact remainder `|a n| - q |d|`
-/// corrects it and decides the rounding. `None` for `|n| >= |d|`.
+/// `mul_div` gives. `F = floor(|n| 2^k / |d|)` (one division, `|n| < |d|` so `F < 2^k`)
+/// gives an estimate `floor(|a| F / 2^k)` short of `floor(|a n| / |d|)` by at most one
+/// (`|a| / 2^k < 1/2` lost to F, one to the floor) once `|a| < 2^(k-1)`: `k` is 16, or more in
+/// steps of 4 up to 32 for longer vectors. The exact remainder `|a n| - q |d|` corrects the
+/// estimate and decides the rounding. `None` for `|n| >= |d|`.
 pub(super) fn split_scale_fraction_i32(a: [i32; 3], n: i32, d: i32) -> Option<[i32; 3]> {
     let (nm, dm) = (n.unsigned_abs(), d.unsigned_abs());
     if nm >= dm {
         return None;
     }
-    let f = (shifted_div::<32>(nm, dm).0, dm);
+    let top = a.iter().fold(0, |m, c| m | c.unsigned_abs());
+    let (mut r, mut k) = (remainder_steps::<16>(nm, dm), 16);
+    while k < 32 && top >> (k - 1) != 0 {
+        r = remainder_steps::<4>(r, dm);
+        k += 4;
+    }
+    let f = (exact_quotient(nm, r, dm, k) << (32 - k), dm);
     Some(a.map(|a| scale_one(a, n, d, f)))
 }
 
@@ -143,38 +165,54 @@ pub(super) fn split_div_i32(n: i32, d: i32) -> i32 {
 }
 
 /// `(q, r)` with `n 2^K = q d + r` and `0 <= r < d`, for `n < d <= 2^31` (so `q < 2^K`),
-/// `K <= 32`. The remainder comes from `K` shift-and-subtract steps that keep only it (three
-/// or four instructions a step on a Cortex-M0; gathering the quotient's bits as well costs
-/// more than twice that). The quotient is then an exact division, `q d = n 2^K - r`: shifted
-/// right by the trailing zeros `t` of `d`, and multiplied by the inverse of the odd `d / 2^t`
-/// modulo 2^32.
+/// `K <= 32`: [`remainder_steps`], then [`exact_quotient`].
 fn shifted_div<const K: u32>(n: u32, d: u32) -> (u32, u32) {
-    let mut r = n;
-    for _ in 0..K {
+    let r = remainder_steps::<K>(n, d);
+    (exact_quotient(n, r, d, K), r)
+}
+
+/// `(r 2^S) mod d` for `r < d <= 2^31`: `S` shift-and-subtract steps that keep only the
+/// remainder (three or four instructions a step on a Cortex-M0; gathering the quotient's bits
+/// as well costs more than twice that).
+#[inline]
+fn remainder_steps<const S: u32>(mut r: u32, d: u32) -> u32 {
+    for _ in 0..S {
         // r < d <= 2^31, so 2r fits.
         r <<= 1;
         if r >= d {
             r -= d;
         }
     }
-    // Both terms of (n 2^K - r) / 2^t are whole: r = n 2^K - q d is a multiple of 2^t, so is
-    // n 2^K. Their difference is q (d / 2^t), taken modulo 2^32 without a 64-bit shift.
-    let t = d.trailing_zeros();
-    let high = if t < K {
-        (n << (K - 1 - t)) << 1
-    } else {
-        n >> (t - K)
-    };
-    let exact = high.wrapping_sub(r >> t);
-    (exact.wrapping_mul(odd_inverse(d >> t)), r)
+    r
 }
 
-/// The inverse of an odd `d` modulo 2^32: `3d XOR 2` is one modulo 2^5, and each Newton step
-/// `x (2 - d x)` doubles the bits that are right (Montgomery; Warren, Hacker's Delight, 10-16).
+/// The quotient `q` of `n 2^k = q d + r` (`n < d <= 2^31`, `k <= 32`) from the remainder `r`:
+/// an exact division, `q d = n 2^k - r`, shifted right by the trailing zeros `t` of `d` and
+/// multiplied by the inverse of the odd `d / 2^t` modulo 2^32.
 #[inline]
-fn odd_inverse(d: u32) -> u32 {
+fn exact_quotient(n: u32, r: u32, d: u32, k: u32) -> u32 {
+    // Both terms of (n 2^k - r) / 2^t are whole: r = n 2^k - q d is a multiple of 2^t, so is
+    // n 2^k. Their difference is q (d / 2^t), taken modulo 2^32 without a 64-bit shift.
+    let t = d.trailing_zeros();
+    let high = if t < k {
+        (n << (k - 1 - t)) << 1
+    } else {
+        n >> (t - k)
+    };
+    let exact = high.wrapping_sub(r >> t);
+    // q < 2^k: its low k bits are all of it, and they need the inverse only modulo 2^k.
+    let q = exact.wrapping_mul(odd_inverse(d >> t, k));
+    q & (u32::MAX >> (32 - k))
+}
+
+/// The inverse of an odd `d` modulo 2^bits (`bits <= 32`; the result is right in at least its
+/// low `bits` bits): `3d XOR 2` is one modulo 2^5, and each Newton step `x (2 - d x)` doubles
+/// the bits that are right (Montgomery; Warren, Hacker's Delight, 10-16), two steps for 20
+/// bits, three for 40.
+#[inline]
+fn odd_inverse(d: u32, bits: u32) -> u32 {
     let mut x = d.wrapping_mul(3) ^ 2;
-    for _ in 0..3 {
+    for _ in 0..if bits <= 20 { 2 } else { 3 } {
         x = x.wrapping_mul(2u32.wrapping_sub(d.wrapping_mul(x)));
     }
     x
@@ -183,8 +221,8 @@ fn odd_inverse(d: u32) -> u32 {
 #[cfg(test)]
 mod tests {
     use super::{
-        high_mul_u32, odd_inverse, shifted_div, split_div_i32, split_dot_unit_i32, split_mul_i32,
-        split_mul_u32, split_scale_fraction_i32,
+        high_mul_u32, odd_inverse, shifted_div, small_mul_i32, split_div_i32, split_dot_unit_i32,
+        split_mul_i32, split_mul_u32, split_scale_fraction_i32,
     };
     use crate::Scalar;
     use crate::scalar::sealed::Kernel;
@@ -388,7 +426,8 @@ mod tests {
     #[test]
     fn shifted_division_is_exact() {
         for d in (1..1u32 << 16).step_by(2) {
-            assert_eq!(d.wrapping_mul(odd_inverse(d)), 1, "{d}");
+            assert_eq!(d.wrapping_mul(odd_inverse(d, 32)), 1, "{d}");
+            assert_eq!(d.wrapping_mul(odd_inverse(d, 20)) & 0xF_FFFF, 1, "{d}");
         }
         let mut x: u64 = 0xB7E1_5162_8AED_2A6B;
         for k in 0..1_000_000u32 {
@@ -396,7 +435,7 @@ mod tests {
             x ^= x >> 7;
             x ^= x << 17;
             let odd = x as u32 | 1;
-            assert_eq!(odd.wrapping_mul(odd_inverse(odd)), 1, "{odd}");
+            assert_eq!(odd.wrapping_mul(odd_inverse(odd, 32)), 1, "{odd}");
             // 0 < d <= 2^31, of every magnitude and every count of trailing zeros; n < d.
             let d = ((((x >> 32) as u32 | 1) << (k % 32)).min(1 << 31) >> (k / 32 % 31)).max(1);
             let n = (x as u32) % d;
@@ -419,6 +458,39 @@ mod tests {
             for n in [0, 1, d / 2, d - 1].into_iter().filter(|&n| n < d) {
                 let w = ((n as u64) << 32) / d as u64;
                 assert_eq!(shifted_div::<32>(n, d).0 as u64, w, "{n} {d}");
+            }
+        }
+    }
+
+    /// The product with a factor below one equals `I16F16`'s generic `mul` (the 64-bit path
+    /// on this host): pseudo-random
+    /// pairs of every magnitude, the extremes, and ties.
+    #[test]
+    fn small_mul_is_exact() {
+        let generic = |s: i32, b: i32| I16F16::from_bits(s).mul(I16F16::from_bits(b)).to_bits();
+        let mut x: u64 = 0x1319_8A2E_0370_7344;
+        for k in 0..1_000_000u32 {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            let s = (x as i32) >> (15 + k % 17);
+            let b = ((x >> 32) as i32) >> (k / 17 % 31);
+            assert_eq!(small_mul_i32(s, b), generic(s, b), "{s} {b}");
+        }
+        let top = (1 << 16) - 1;
+        for s in [top, -top, 1, -1, 0, 1 << 15, -(1 << 15)] {
+            for b in [
+                i32::MIN,
+                i32::MIN + 1,
+                i32::MAX,
+                -1,
+                0,
+                1,
+                1 << 15,
+                -(1 << 15),
+                3 << 15,
+            ] {
+                assert_eq!(small_mul_i32(s, b), generic(s, b), "{s} {b}");
             }
         }
     }

@@ -37,6 +37,29 @@ pub(super) fn wide_mul_i32(a: i32, b: i32) -> i64 {
     }
 }
 
+/// `I16F16`'s product `round(a b / 2^16)` on cores without a long multiply, when one factor
+/// is below one in magnitude (a fraction of a path, say): two 32-bit products
+/// ([`small_mul_i32`]) instead of four and a 64-bit rounding. `None` for other factors, and on
+/// other cores, where the generic path runs.
+#[inline]
+pub(super) fn narrow_mul_i32(a: i32, b: i32) -> Option<i32> {
+    if !cfg!(ballcast_no_long_mul) {
+        None
+    } else if a.unsigned_abs() < 1 << 16 {
+        Some(small_mul_i32(a, b))
+    } else if b.unsigned_abs() < 1 << 16 {
+        Some(small_mul_i32(b, a))
+    } else {
+        None
+    }
+}
+
+/// No narrow product (`I32F32`).
+#[inline]
+pub(super) fn no_narrow_mul(_: i64, _: i64) -> Option<i64> {
+    None
+}
+
 /// `a * b` exactly for unsigned operands, as [`wide_mul_i32`].
 #[inline]
 pub(super) fn wide_mul_u32(a: u32, b: u32) -> u64 {
