@@ -3,9 +3,9 @@
 //! cheapest on the target and the same integer on every target.
 //!
 //! On cores without a 32 × 32 → 64 multiply (`ballcast_no_long_mul`, set by `build.rs` for
-//! Armv6-M and Armv8-M Baseline, e.g. the Cortex-M0) `I16F16`'s products are formed from
-//! 16 × 16 → 32 multiplies and its quotients from one 32-bit division and shift-and-subtract
-//! steps, instead of calls to `__aeabi_lmul` and `__aeabi_ldivmod` (`narrow.rs`).
+//! Armv6-M and Armv8-M Baseline, e.g. the Cortex-M0) `I16F16`'s products, dot products with
+//! unit vectors and quotients are formed from 32-bit operations (`narrow.rs`) instead of calls
+//! to `__aeabi_lmul` and `__aeabi_ldivmod`.
 
 use super::narrow::*;
 
