@@ -38,7 +38,7 @@ macro_rules! saturate {
 macro_rules! fixed_scalar {
     (
         $t:ty, $unit:ty, $bits:ty, $wide:ty, $uwide:ty, $frac:expr, $ufrac:expr, $limit_int:expr,
-        $wmul:ident, $uwmul:ident, $wdot:ident, $ndiv:ident, $nscale:ident, $isqrt:ident, $sq:ty
+        $wmul:ident, $nmul:ident, $uwmul:ident, $wdot:ident, $ndot:ident, $ndiv:ident, $nscale:ident, $isqrt:ident, $sq:ty
     ) => {
         impl Scalar for $t {
             const ZERO: Self = <$t>::ZERO;
@@ -85,6 +85,9 @@ macro_rules! fixed_scalar {
             }
             #[inline]
             fn mul(self, o: Self) -> Self {
+                if let Some(p) = $nmul(self.to_bits(), o.to_bits()) {
+                    return <$t>::from_bits(p);
+                }
                 let p = $wmul(self.to_bits(), o.to_bits());
                 saturate!($t, $bits, $wide, round_shift!(p, $frac))
             }
@@ -124,11 +127,12 @@ macro_rules! fixed_scalar {
 
             #[inline]
             fn dot_unit(d: Vec3<Self>, u: Vec3<$unit>) -> Self {
-                let sum = $wdot(
-                    [d.x.to_bits(), d.y.to_bits(), d.z.to_bits()],
-                    [u.x.to_bits(), u.y.to_bits(), u.z.to_bits()],
-                );
-                <$t>::from_bits(round_shift!(sum, $ufrac) as $bits)
+                let d = [d.x.to_bits(), d.y.to_bits(), d.z.to_bits()];
+                let u = [u.x.to_bits(), u.y.to_bits(), u.z.to_bits()];
+                if let Some(r) = $ndot(d, u) {
+                    return <$t>::from_bits(r);
+                }
+                <$t>::from_bits(round_shift!($wdot(d, u), $ufrac) as $bits)
             }
             #[inline]
             fn mul_cmp(a: Self, b: Self, c: Self, d: Self) -> Ordering {
@@ -278,8 +282,10 @@ fixed_scalar!(
     30,
     4096,
     wide_mul_i32,
+    narrow_mul_i32,
     wide_mul_u32,
     wide_dot_i32,
+    narrow_dot_unit_i32,
     narrow_div_i32,
     narrow_scale_fraction_i32,
     isqrt_nearest_64,
@@ -295,8 +301,10 @@ fixed_scalar!(
     62,
     268_435_456,
     wide_mul_i64,
+    no_narrow_mul,
     wide_mul_u64,
     wide_dot_i64,
+    no_narrow_dot_unit,
     no_narrow_div,
     no_narrow_scale_fraction,
     isqrt_nearest_128,

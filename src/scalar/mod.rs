@@ -15,6 +15,7 @@
 
 mod fixed;
 mod float;
+mod narrow;
 mod wide;
 
 use crate::vec3::Vec3;
@@ -102,8 +103,9 @@ pub(crate) mod sealed {
         /// Zero as a unit-vector component.
         const UNIT_ZERO: Self::Unit;
 
-        /// `d · u` rounded once. Needs components of `d` within `2 * LIMIT` and `u` a unit vector
-        /// (components within ±1; `I16F16`'s 32-bit path relies on it).
+        /// `d · u` rounded once. Needs components of `d` within `7 * LIMIT` (an offset between
+        /// two points of a standard frame), `u` a unit vector (components within ±1) and a
+        /// result in range; `I16F16`'s 32-bit path relies on all three.
         fn dot_unit(d: Vec3<Self>, u: Vec3<Self::Unit>) -> Self;
         /// Orders `a * b` against `c * d`, exactly for fixed-point. Needs operands below `8 * LIMIT`.
         fn mul_cmp(a: Self, b: Self, c: Self, d: Self) -> Ordering;
