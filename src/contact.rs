@@ -141,7 +141,9 @@ impl<S: Scalar> StandardTriangle<S> {
     /// # Ok::<(), ballcast::Error>(())
     /// ```
     pub fn cast(&self, sweep: &Sweep<S>) -> Option<Hit<S>> {
-        self.cast_within(sweep, S::ONE)
+        let (y0, y1) = self.heights(sweep);
+        let (back, ..) = self.facing(sweep, (y0, y1))?;
+        self.cast_facing(sweep, (y0, y1), back)
     }
 
     /// [`cast`](Self::cast) where only contacts at alpha `reach` or earlier matter: the same
@@ -151,9 +153,16 @@ impl<S: Scalar> StandardTriangle<S> {
     pub(crate) fn cast_within(&self, sweep: &Sweep<S>, reach: S) -> Option<Hit<S>> {
         let (y0, y1) = self.heights(sweep);
         let (back, start, end) = self.facing(sweep, (y0, y1))?;
-        if reach < S::ONE && above_at(sweep, (start, end), reach) {
+        if above_at(sweep, (start, end), reach) {
             return None;
         }
+        self.cast_facing(sweep, (y0, y1), back)
+    }
+
+    /// The rest of [`cast`](Self::cast) for a sweep that may touch the triangle from the side
+    /// `back` says, its ends at heights `y0` and `y1` above the plane.
+    #[inline]
+    fn cast_facing(&self, sweep: &Sweep<S>, (y0, y1): (S, S), back: bool) -> Option<Hit<S>> {
         let mut s = self.standardize_from(sweep, (y0, y1));
         if back {
             s.p0.y = -s.p0.y;
@@ -191,7 +200,7 @@ impl<S: Scalar> StandardTriangle<S> {
 
     /// The side the sweep comes from (true: the back) and its heights as seen from that side,
     /// or `None` where no contact is possible.
-    #[inline]
+    #[inline(always)]
     fn facing(&self, sweep: &Sweep<S>, (y0, y1): (S, S)) -> Option<(bool, S, S)> {
         // Towards the back (or along the plane behind it): a one-sided triangle ignores it, a
         // two-sided one mirrors y.
@@ -262,7 +271,8 @@ impl<S: Scalar> StandardTriangle<S> {
                 // No motion: only an overlap at the start.
                 None => {
                     let q = p0 - self.corner(i);
-                    resting(q, r).map(|at| ((at.0, Some(q), Contact::Vertex(i as u8)), at.1))
+                    let at = (S::ZERO, Some(q), Contact::Vertex(i as u8));
+                    resting(q, r).then_some((at, (S::ZERO, S::ONE)))
                 }
             };
             if v.is_some_and(|v| best.is_none_or(|b| v.0.0 < b.0.0 - tie)) {
@@ -332,9 +342,11 @@ impl<S: Scalar> StandardTriangle<S> {
         let across = Vec3::new(dw, d.y, z);
         let Some(motion) = S::direction(across) else {
             // No motion across the edge (none at all, or along it): only an overlap at the start.
-            let at = (u0 > z && u0 < e.len).then(|| resting(Vec3::new(w0, p0.y, z), r))??;
+            if !(u0 > z && u0 < e.len && resting(Vec3::new(w0, p0.y, z), r)) {
+                return None;
+            }
             let offset = Vec3::new(S::mul_unit(w0, out.x), p0.y, S::mul_unit(w0, out.z));
-            return Some(((at.0, Some(offset), Contact::Edge(i as u8)), at.1));
+            return Some(((z, Some(offset), Contact::Edge(i as u8)), (z, S::ONE)));
         };
         let (beta, key) = first_touch(Vec3::new(w0, p0.y, z), motion, r)?;
         let (u, w, y) = (u0 + beta.mul(du), w0 + beta.mul(dw), p0.y + beta.mul(d.y));
@@ -410,11 +422,12 @@ fn first_touch<S: Scalar>(
     (beta < S::ONE).then_some((beta, (t, len)))
 }
 
-/// Alpha zero and its fraction where a ball that does not move relative to a feature (offset
-/// `q` from it, the centre in front of the plane) overlaps it: closer than `r`.
-fn resting<S: Scalar>(q: Vec3<S>, r: S) -> Option<(S, (S, S))> {
-    let overlaps = q.y >= S::ZERO && S::chord(r, q).is_some_and(|k| k > S::ZERO);
-    overlaps.then_some((S::ZERO, (S::ZERO, S::ONE)))
+/// Whether a ball that does not move relative to a feature (offset `q` from it, the centre in
+/// front of the plane) overlaps it: closer than `r`. Rare, so kept out of the hot path.
+#[cold]
+#[inline(never)]
+fn resting<S: Scalar>(q: Vec3<S>, r: S) -> bool {
+    q.y >= S::ZERO && S::chord(r, q).is_some_and(|k| k > S::ZERO)
 }
 
 /// The earlier of two contacts, by their exact fractions `t / len` (the first on a tie).
