@@ -159,11 +159,7 @@ fn memory_is_what_the_builds_make<S: Scalar>() {
 /// prepared) give the prepared mesh's answers.
 fn box_queries_as_mesh<S: Scalar>() {
     let mut rng = Rng(0xc0_4ac8);
-    let shapes = [
-        heightfield(&mut rng, 12, 1.0, 0.65),
-        boxes(&mut rng, 16, 5.0),
-        soup(&mut rng, 200, 4.0),
-    ];
+    let shapes = meshes::shapes(&mut rng);
     let mut overlaps = 0;
     for src in shapes {
         let (vertices, indices) = indexed::<S>(&src);

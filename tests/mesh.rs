@@ -47,11 +47,7 @@ fn matches_linear_scan_long<S: Scalar>() {
 /// length), and no such contact is culled.
 fn long_grazing_paths<S: Scalar>() {
     let mut rng = Rng(0x5eed_0005);
-    let shapes = [
-        heightfield(&mut rng, 12, 1.0, 0.65),
-        boxes(&mut rng, 16, 5.0),
-        soup(&mut rng, 200, 4.0),
-    ];
+    let shapes = meshes::shapes(&mut rng);
     for src in shapes {
         against_linear_by::<S>(&mut rng, &src, 1500, |rng, _| {
             let length = rng.range(50.0, 250.0);
@@ -63,11 +59,7 @@ fn long_grazing_paths<S: Scalar>() {
 /// Paths along a triangle's plane, starting on it, a few roundings off it or near the radius.
 fn along_a_plane<S: Scalar>() {
     let mut rng = Rng(0x5eed_0006);
-    let shapes = [
-        heightfield(&mut rng, 12, 1.0, 0.65),
-        boxes(&mut rng, 16, 5.0),
-        soup(&mut rng, 200, 4.0),
-    ];
+    let shapes = meshes::shapes(&mut rng);
     for src in shapes {
         against_linear_by::<S>(&mut rng, &src, 1500, |rng, _| {
             meshes::along_plane(rng, &src)

@@ -142,6 +142,16 @@ pub fn soup(rng: &mut Rng, count: usize, half: f64) -> Vec<[P; 3]> {
     out
 }
 
+/// The three test shapes, in this order: a 12 × 12 heightfield, 16 closed boxes and a soup of
+/// 200 triangles.
+pub fn shapes(rng: &mut Rng) -> [Vec<[P; 3]>; 3] {
+    [
+        heightfield(rng, 12, 1.0, 0.65),
+        boxes(rng, 16, 5.0),
+        soup(rng, 200, 4.0),
+    ]
+}
+
 /// Builds the mesh of `src` (skipping degenerates) and checks `sweeps` random sweeps within
 /// ±`half` against the linear scan; long paths, short moves, and paths aimed at vertices.
 pub fn against_linear<S: Scalar>(rng: &mut Rng, src: &[[P; 3]], sweeps: usize, half: f64) {
