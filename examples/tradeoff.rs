@@ -5,7 +5,8 @@
 //! timed repetitions over 4096 prepared cases), instructions per `cast` (from
 //! `target/callgrind.tsv`, written by `scripts/callgrind.sh`; "n/a" without it), the distance
 //! error along the normal at contact, `|alpha_S - alpha_f64| * |(p1 - p0) · n_f64|` (median,
-//! p99, max over the cases both report a hit), the normal's angle error, hit/miss disagreements
+//! p99, max over the cases both report a hit), the error of `Hit::position` (the centre at
+//! contact) along f64's normal against f64's (p99, max), the normal's angle error, hit/miss disagreements
 //! (all, and outside the rounding band) and the safe range used. It writes the table to
 //! `docs/tradeoff.md` and the plot (p99 distance error against ns per test, log–log) to
 //! `docs/tradeoff.svg` (drawn with `plotters`). The accuracy rows run on all cores (`rayon`),
@@ -31,7 +32,7 @@
 //! (`tradeoff --kernel <scalar> <scale> <n>` is the mode `scripts/callgrind.sh` runs under
 //! callgrind: `cast` over the first n cases of that scale, nothing else measured.)
 
-use ballcast::{Contact, Error, Features, Scalar, StandardTriangle, Sweep, Triangle};
+use ballcast::{Error, Scalar, StandardTriangle, Sweep, Triangle};
 use fixed::types::{I16F16, I32F32};
 use indicatif::{ProgressBar, ProgressStyle};
 use plotters::prelude::*;
@@ -50,7 +51,7 @@ const SCALES: [&str; 5] = ["1", "10", "100", "1000", "far"];
 #[path = "../tests/common/mod.rs"]
 mod common;
 
-use common::{Case, P, Rng, Tolerance, add, angle, dot, norm, sub, v};
+use common::{Case, P, Rng, Tolerance, add, angle, back, dot, norm, sub, v};
 
 /// The scalars measured (names and tolerances from `tests/common/mod.rs`), with the offset of
 /// their "far" scale.
@@ -105,9 +106,12 @@ fn prepare<S: Scalar>(c: &Case, r: f64) -> Result<(StandardTriangle<S>, Sweep<S>
     Ok((st, Sweep::new(v(c.p0), v(c.p1), S::from_f64(r))?))
 }
 
-/// The full `cast` of a case in `S`, every feature active.
-fn cast<S: Scalar>(c: &Case, r: f64) -> Result<Option<(f64, P, Contact)>, Error> {
-    c.cast_with::<S>(r, Features::ALL)
+/// The full `cast` of a case in `S`, every feature active: alpha, normal and `Hit::position`.
+fn cast<S: Scalar>(c: &Case, r: f64) -> Result<Option<(f64, P, P)>, Error> {
+    let (st, sw) = prepare::<S>(c, r)?;
+    Ok(st
+        .cast(&sw)
+        .map(|h| (h.alpha.to_f64(), back(h.normal), back(h.position))))
 }
 
 fn quantile(sorted: &[f64], q: f64) -> f64 {
@@ -129,6 +133,7 @@ struct Row {
     rejected: usize,
     hits: usize,
     dist: [f64; 3],
+    position: [f64; 2],
     angle: [f64; 2],
     over_tol: usize,
     disagree: usize,
@@ -210,6 +215,7 @@ fn measure<S: Measured>(label: &'static str, bar: &ProgressBar) -> Row {
         rejected: 0,
         hits: 0,
         dist: [f64::NAN; 3],
+        position: [f64::NAN; 2],
         angle: [f64::NAN; 2],
         over_tol: 0,
         disagree: 0,
@@ -238,7 +244,7 @@ fn measure<S: Measured>(label: &'static str, bar: &ProgressBar) -> Row {
     let tol = S::DISTANCE * (s / 10.0).max(1.0);
     let band = 2.0 * tol;
     let eps = S::EPSILON.to_f64();
-    let (mut dist, mut angles) = (Vec::new(), Vec::new());
+    let (mut dist, mut positions, mut angles) = (Vec::new(), Vec::new(), Vec::new());
     for c in counted(cases(label, s, off).take(CASES), bar) {
         let c = c.rounded::<S>();
         let (Ok(got), Ok(want)) = (cast::<S>(&c, c.r), cast::<f64>(&c, c.r)) else {
@@ -247,7 +253,7 @@ fn measure<S: Measured>(label: &'static str, bar: &ProgressBar) -> Row {
         };
         row.valid += 1;
         match (got, want) {
-            (Some((a, n, _)), Some((b, m, _))) => {
+            (Some((a, n, at)), Some((b, m, want_at))) => {
                 row.hits += 1;
                 let d = sub(c.p1, c.p0);
                 let approach = dot(d, m).abs();
@@ -267,6 +273,7 @@ fn measure<S: Measured>(label: &'static str, bar: &ProgressBar) -> Row {
                     }
                 }
                 dist.push(err);
+                positions.push(dot(sub(at, want_at), m).abs());
                 angles.push(tilt);
             }
             (None, None) => {}
@@ -283,7 +290,9 @@ fn measure<S: Measured>(label: &'static str, bar: &ProgressBar) -> Row {
         }
     }
     dist.sort_by(f64::total_cmp);
+    positions.sort_by(f64::total_cmp);
     angles.sort_by(f64::total_cmp);
+    row.position = [0.99, 1.0].map(|q| quantile(&positions, q));
     row.dist = [0.5, 0.99, 1.0].map(|q| quantile(&dist, q));
     row.angle = [0.99, 1.0].map(|q| quantile(&angles, q));
     row
@@ -301,22 +310,23 @@ fn e(x: f64) -> String {
 
 fn table(rows: &[Row]) -> String {
     let mut t = String::new();
-    t += "| scalar | scale | offset | ns/test | instr/test | hits / valid | dist. err. median | p99 | max | over tol | angle p99 (rad) | angle max | disagree: all / outside band | coords used / safe range |\n";
-    t += "|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|\n";
+    t += "| scalar | scale | offset | ns/test | instr/test | hits / valid | dist. err. median | p99 | max | position err. p99 | max | over tol | angle p99 (rad) | angle max | disagree: all / outside band | coords used / safe range |\n";
+    t += "|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|\n";
     for r in rows {
         if let Some(why) = &r.skipped {
             let _ = writeln!(
                 t,
-                "| {} | {} | {} | skipped: {why} |||||||||||",
+                "| {} | {} | {} | skipped: {why} |||||||||||||",
                 r.scalar, r.scale, r.offset
             );
             continue;
         }
         let reference = r.scalar == "f64";
         let instr = r.instr.map_or("n/a".into(), |i| format!("{i:.0}"));
-        let (d, a, tol, dis) = if reference {
+        let (d, pos, a, tol, dis) = if reference {
             (
                 ["reference".into(), "—".into(), "—".into()],
+                ["—".into(), "—".into()],
                 ["—".into(), "—".into()],
                 "—".into(),
                 "—".into(),
@@ -324,6 +334,7 @@ fn table(rows: &[Row]) -> String {
         } else {
             (
                 r.dist.map(e),
+                r.position.map(e),
                 r.angle.map(e),
                 r.over_tol.to_string(),
                 format!("{} / {}", r.disagree, r.outside),
@@ -336,7 +347,7 @@ fn table(rows: &[Row]) -> String {
         };
         let _ = writeln!(
             t,
-            "| {} | {} | {} | {:.1} | {instr} | {} / {}{rej} | {} | {} | {} | {tol} | {} | {} | {dis} | ±{} / ±{} |",
+            "| {} | {} | {} | {:.1} | {instr} | {} / {}{rej} | {} | {} | {} | {} | {} | {tol} | {} | {} | {dis} | ±{} / ±{} |",
             r.scalar,
             r.scale,
             r.offset,
@@ -346,6 +357,8 @@ fn table(rows: &[Row]) -> String {
             d[0],
             d[1],
             d[2],
+            pos[0],
+            pos[1],
             a[0],
             a[1],
             r.reach,
