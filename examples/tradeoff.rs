@@ -562,7 +562,7 @@ fn main() {
     let cores = std::thread::available_parallelism().map_or(0, |n| n.get());
     eprintln!("load average after the run: {load} on {cores} cores");
     let md = format!(
-        "# Accuracy against speed\n\n{} random sweeps per scale (half uniform, half falling), every scalar against f64's `cast` on the same rounded inputs. Regenerate: `scripts/callgrind.sh && cargo run --release --example tradeoff`. ns/test is wall-clock time (load average {load} on {cores} cores when this was written); instr/test comes from callgrind and does not depend on load.\n\n{t}\n![p99 distance error against ns per test](tradeoff.svg)\n",
+        "# Accuracy against speed\n\n{} random sweeps per scale (half uniform, half falling), every scalar against f64's `cast` on the same rounded inputs. Regenerate: `scripts/callgrind.sh && cargo run --release --example tradeoff`. ns/test is wall-clock time (load average {load} on {cores} cores when this was written); instr/test comes from callgrind and does not depend on load.\n\nThe position error is that of `Hit::position`, the centre at contact, along f64's normal. It is absolute, so far from the origin it is set by the spacing of the coordinates there (f32 at 10^4: 2^-10, about 1e-3, per component), while alpha's error is relative to the path. In I32F32's far row (2.4e8 from the origin) f64's own spacing, 2^-25 (3e-8), is coarser than I32F32's 2^-32: that row's position error is mostly the reference's.\n\n{t}\n![p99 distance error against ns per test](tradeoff.svg)\n",
         CASES
     );
     std::fs::write(format!("{dir}/tradeoff.md"), md).expect("write md");
