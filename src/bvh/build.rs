@@ -8,7 +8,7 @@ use super::{CLASS_SHIFT, Cells, LEAF, LEAF_FLAG, MAX_CLASS, MAX_DEPTH, Node, STA
 pub(crate) enum BuildError {
     /// The node slice holds fewer than this many nodes.
     Nodes(usize),
-    /// Deeper than [`MAX_DEPTH`] (cannot happen below [`MAX_TRIANGLES`]).
+    /// Deeper than [`MAX_DEPTH`] (cannot happen below [`MAX_TRIANGLES`](super::MAX_TRIANGLES)).
     Depth,
 }
 
@@ -51,7 +51,7 @@ pub const fn nodes_for(n: usize) -> usize {
 }
 
 /// One triangle during the build: its box in cells (three words), its index (fourth word, low
-/// half) and its [`seam_class`] (fourth word, high half).
+/// half) and its [`seam_class`](super::seam_class) (fourth word, high half).
 pub(crate) type Item = [u64; 4];
 
 /// Packs a box, an index and a seam class into an [`Item`].
