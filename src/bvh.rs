@@ -44,13 +44,16 @@
 //! # Traversal
 //! The segment from `p0` to `p1` is taken to grid units in `f64` once per query, with the
 //! reciprocal of its direction (`2^100` on an axis where the direction is below `2^-100`: the
-//! pad below covers the difference). Each node takes the segment into its own byte steps per
-//! axis, in `f64` (`t = byte · 2^shift / d + (lo − p0) / d`: a scale and an offset per axis),
-//! and clips its four child boxes, grown, against it with the slab test (Kay and Kajiya, 1986)
-//! in `f32`, four lanes side by side, bound by bound, without a branch or a division. Children
-//! are pushed farthest first, so the nearest is visited first, and a subtree is skipped when
-//! the segment enters its box after the reach of the contacts found so far (the earliest alpha
-//! plus the tie window); a leaf's triangles are cast in index order.
+//! pad below covers the difference), that reciprocal rounded to `f32`, and per axis the side
+//! by which the segment enters a slab. Each node takes the segment into its own byte steps per
+//! axis (`t = byte · 2^shift / d + (lo − p0) / d`: a scale, `2^shift` times the `f32`
+//! reciprocal, exact, and an offset, in `f64`), and clips its four child boxes, grown, against
+//! it with the slab test (Kay and Kajiya, 1986) in `f32`, four lanes side by side, bound by
+//! bound, without a branch or a division. The nearest child that the segment enters is visited
+//! next (a leaf at once), the others wait on a stack, farthest first, and a subtree is skipped
+//! when the segment enters its box after the reach of the contacts found so far (the earliest
+//! alpha plus the tie window, taken anew after each leaf); a leaf's triangles are cast in index
+//! order.
 //!
 //! Culling is conservative: a box is grown by `r`, by a bound on every rounding between the
 //! exact segment and what [`StandardTriangle::cast`](crate::StandardTriangle::cast) computes —
