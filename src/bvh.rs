@@ -44,8 +44,9 @@
 //! # Traversal
 //! The segment from `p0` to `p1` is taken to grid units in `f64` once per query, with the
 //! reciprocal of its direction (`2^100` on an axis where the direction is below `2^-100`: the
-//! pad below covers the difference), that reciprocal rounded to `f32`, and per axis the side
-//! by which the segment enters a slab. Each node takes the segment into its own byte steps per
+//! pad below covers the difference), that reciprocal rounded to `f32` (an axis along which
+//! the segment spans more than `2^100` cells, whose reciprocal `f32` cannot scale exactly,
+//! culls nothing), and per axis the side by which the segment enters a slab. Each node takes the segment into its own byte steps per
 //! axis (`t = byte · 2^shift / d + (lo − p0) / d`: a scale, `2^shift` times the `f32`
 //! reciprocal, exact, and an offset, in `f64`), and clips its four child boxes, grown, against
 //! it with the slab test (Kay and Kajiya, 1986) in `f32`, four lanes side by side, bound by

@@ -34,7 +34,9 @@ pub(crate) struct Segment {
     q0: [f64; 3],
     /// Per axis, the reciprocal of the segment's extent, `2^100` where that is below `2^-100`
     /// (parallel to the slab, as good as: the pad covers the difference), in `f64` and in `f32`
-    /// (rounded to nearest), and the latter's magnitude.
+    /// (rounded to nearest), and the latter's magnitude: infinite where the extent exceeds
+    /// `2^100` cells (a reciprocal too small for `f32` to scale exactly: that axis then culls
+    /// nothing).
     inv: [f64; 3],
     inv32: [f32; 3],
     slope: [f32; 3],
@@ -76,7 +78,13 @@ impl Segment {
             q0,
             inv,
             inv32,
-            slope: inv32.map(f32::abs),
+            slope: inv.map(|x| {
+                if x.abs() >= tiny {
+                    (x as f32).abs()
+                } else {
+                    f32::INFINITY
+                }
+            }),
             falling: inv.map(|x| x < 0.0),
             pad: up((pad * s + 2.0 + slack) * grow),
             seam: up(seam * s * grow).max(f32::MIN_POSITIVE),
