@@ -54,7 +54,9 @@
 //! next (a leaf at once), the others wait on a stack, farthest first, and a subtree is skipped
 //! when the segment enters its box after the reach of the contacts found so far (the earliest
 //! alpha plus the tie window, taken anew after each leaf); a leaf's triangles are cast in index
-//! order.
+//! order, with that reach lowered to where the segment leaves the leaf's grown box where that
+//! comes first (the box holds every contact with them, so none comes later), which lets a cast
+//! give up early when the ball is still above the triangle's plane there.
 //!
 //! Culling is conservative: a box is grown by `r`, by a bound on every rounding between the
 //! exact segment and what [`StandardTriangle::cast`](crate::StandardTriangle::cast) computes —
@@ -82,7 +84,7 @@ use crate::{Scalar, Triangle};
 pub use build::nodes_for;
 pub(crate) use build::{BuildError, build, item, key_index};
 pub(crate) use overlap::{overlapping, query_cells};
-pub(crate) use traverse::{Segment, rounding_pad, traverse};
+pub(crate) use traverse::{Segment, rounding_pad, traverse, traverse_leaves};
 
 /// Most triangles in a leaf.
 pub const LEAF: usize = 4;

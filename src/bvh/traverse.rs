@@ -5,11 +5,12 @@ use super::{CLASS_SHIFT, Cells, Grid, LEAF_FLAG, MAX_CLASS, Node, PAYLOAD, STACK
 use crate::merge::Earliest;
 use crate::{Scalar, Sweep};
 
-/// A child waiting to be visited: where the segment enters its box, its reference, and its
-/// box's minimum (all that decoding its children needs).
+/// A child waiting to be visited: where the segment enters and leaves its box, its reference,
+/// and its box's minimum (all that decoding its children needs).
 #[derive(Clone, Copy)]
 struct Entry {
     enter: f32,
+    exit: f32,
     child: u32,
     lo: [i32; 3],
 }
@@ -91,13 +92,13 @@ impl Segment {
         }
     }
 
-    /// Where the segment, over `[0, limit]`, enters each of the four child boxes of `node` (whose
-    /// own minimum is `lo`), each grown by the pad and `2^class` seam margins of its child;
-    /// infinity where it misses. The four are computed side by side, lane by lane and without
+    /// Where the segment, over `[0, limit]`, enters and leaves each of the four child boxes of
+    /// `node` (whose own minimum is `lo`), each grown by the pad and `2^class` seam margins of
+    /// its child; an entry of infinity where it misses. The four are computed side by side, lane by lane and without
     /// branches, so the compiler can use vector registers; slots beyond `count` are computed and
     /// ignored.
     #[inline]
-    fn enter4(&self, node: &Node, lo: [i32; 3], limit: f32) -> [f32; 4] {
+    fn enter4(&self, node: &Node, lo: [i32; 3], limit: f32) -> ([f32; 4], [f32; 4]) {
         let pad: [f32; 4] = core::array::from_fn(|k| {
             let class = (node.children[k] >> CLASS_SHIFT) & MAX_CLASS;
             self.pad + self.seam * pow2f(class)
@@ -124,7 +125,8 @@ impl Segment {
                 t1[k] = if tb < t1[k] { tb } else { t1[k] };
             }
         }
-        core::array::from_fn(|k| if t0[k] <= t1[k] { t0[k] } else { f32::INFINITY })
+        let enter = core::array::from_fn(|k| if t0[k] <= t1[k] { t0[k] } else { f32::INFINITY });
+        (enter, t1)
     }
 }
 
@@ -165,6 +167,12 @@ fn child_lo(node: &Node, k: usize, lo: [i32; 3]) -> [i32; 3] {
     })
 }
 
+/// `exit` if before `lim`, else infinity.
+#[inline]
+fn before(exit: f32, lim: f32) -> f32 {
+    if exit < lim { exit } else { f32::INFINITY }
+}
+
 /// The triangle slots of a leaf reference: `first .. first + count`.
 #[inline]
 pub(crate) fn leaf_slots(child: u32) -> Option<core::ops::Range<usize>> {
@@ -174,17 +182,30 @@ pub(crate) fn leaf_slots(child: u32) -> Option<core::ops::Range<usize>> {
     })
 }
 
-/// Visits the leaves the segment may reach within the current reach, nearest first, calling
-/// `leaf` with each leaf's slots; `reach` gives the current limit on alpha. The nearest child
-/// of a node is visited next without going through the stack, its siblings wait there.
-/// Returns false if the tree is malformed (a stack overflow or a cycle: only possible for parts
-/// not made by the build), in which case the caller must answer another way.
+/// [`traverse_leaves`] for a caller that needs only each leaf's slots.
 pub(crate) fn traverse<S: Scalar>(
     nodes: &[Node],
     grid: &Grid,
     seg: &Segment,
     acc: &mut Earliest<S>,
     mut leaf: impl FnMut(&mut Earliest<S>, core::ops::Range<usize>),
+) -> bool {
+    traverse_leaves(nodes, grid, seg, acc, |acc, slots, _| leaf(acc, slots))
+}
+
+/// Visits the leaves the segment may reach within the current reach, nearest first, calling
+/// `leaf` with each leaf's slots and where the segment leaves the leaf's grown box (a contact
+/// with one of its triangles comes no later), infinity if not before the current reach;
+/// `reach` gives the current limit on alpha. The
+/// nearest child of a node is visited next without going through the stack, its siblings wait
+/// there. Returns false if the tree is malformed (a stack overflow or a cycle: only possible
+/// for parts not made by the build), in which case the caller must answer another way.
+pub(crate) fn traverse_leaves<S: Scalar>(
+    nodes: &[Node],
+    grid: &Grid,
+    seg: &Segment,
+    acc: &mut Earliest<S>,
+    mut leaf: impl FnMut(&mut Earliest<S>, core::ops::Range<usize>, f32),
 ) -> bool {
     if nodes.is_empty() {
         return true;
@@ -211,7 +232,7 @@ pub(crate) fn traverse<S: Scalar>(
                     continue;
                 }
                 if let Some(slots) = leaf_slots(e.child) {
-                    leaf(acc, slots);
+                    leaf(acc, slots, before(e.exit, lim));
                     lim = limit(acc);
                     continue;
                 }
@@ -221,7 +242,7 @@ pub(crate) fn traverse<S: Scalar>(
         let Some(node) = nodes.get((child & PAYLOAD) as usize) else {
             return false;
         };
-        let enter = seg.enter4(node, lo, lim);
+        let (enter, exit) = seg.enter4(node, lo, lim);
         let mut near = [(0.0f32, 0usize); 4];
         let mut n = 0;
         for (k, &t) in enter.iter().enumerate().take((node.count as usize).min(4)) {
@@ -240,6 +261,7 @@ pub(crate) fn traverse<S: Scalar>(
             continue;
         };
         for &(enter, k) in rest.iter().rev() {
+            let exit = exit[k & 3];
             let child = node.children[k & 3];
             // A leaf needs no box.
             let lo = if child & LEAF_FLAG == 0 {
@@ -247,14 +269,22 @@ pub(crate) fn traverse<S: Scalar>(
             } else {
                 lo
             };
-            if stack.push(Entry { enter, child, lo }).is_err() {
+            if stack
+                .push(Entry {
+                    enter,
+                    exit,
+                    child,
+                    lo,
+                })
+                .is_err()
+            {
                 return false;
             }
         }
         let child = node.children[first & 3];
         match leaf_slots(child) {
             Some(slots) => {
-                leaf(acc, slots);
+                leaf(acc, slots, before(exit[first & 3], lim));
                 lim = limit(acc);
             }
             None => next = Some((child, child_lo(node, first, lo))),
