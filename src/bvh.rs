@@ -50,8 +50,10 @@
 //! axis (`t = byte · 2^shift / d + (lo − p0) / d`: a scale, `2^shift` times the `f32`
 //! reciprocal, exact, and an offset, in `f64`), and clips its four child boxes, grown, against
 //! it with the slab test (Kay and Kajiya, 1986) in `f32`, four lanes side by side, bound by
-//! bound, without a branch or a division. The nearest child that the segment enters is visited
-//! next (a leaf at once), the others wait on a stack, farthest first, and a subtree is skipped
+//! bound, without a branch or a division. Children are ordered by where the segment's line
+//! enters their boxes, even before the start (boxes that hold the start all begin at zero
+//! along the segment itself, and this orders them on a short move better than child order): the
+//! first is visited next (a leaf at once), the others wait on a stack, and a subtree is skipped
 //! when the segment enters its box after the reach of the contacts found so far (the earliest
 //! alpha plus the tie window, taken anew after each leaf); a leaf's triangles are cast in index
 //! order, with that reach lowered to where the segment leaves the leaf's grown box where that

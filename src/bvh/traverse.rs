@@ -92,18 +92,19 @@ impl Segment {
         }
     }
 
-    /// Where the segment, over `[0, limit]`, enters and leaves each of the four child boxes of
-    /// `node` (whose own minimum is `lo`), each grown by the pad and `2^class` seam margins of
-    /// its child; an entry of infinity where it misses. The four are computed side by side, lane by lane and without
-    /// branches, so the compiler can use vector registers; slots beyond `count` are computed and
-    /// ignored.
+    /// Where the segment's line enters each of the four child boxes of `node` (whose own
+    /// minimum is `lo`), each grown by the pad and `2^class` seam margins of its child (before
+    /// the start: negative, where the start lies in the box), and where the segment, over
+    /// `[0, limit]`, leaves it; an entry of infinity where the segment misses the box. The four
+    /// are computed side by side, lane by lane and without branches, so the compiler can use
+    /// vector registers; slots beyond `count` are computed and ignored.
     #[inline]
     fn enter4(&self, node: &Node, lo: [i32; 3], limit: f32) -> ([f32; 4], [f32; 4]) {
         let pad: [f32; 4] = core::array::from_fn(|k| {
             let class = (node.children[k] >> CLASS_SHIFT) & MAX_CLASS;
             self.pad + self.seam * pow2f(class)
         });
-        let (mut t0, mut t1) = ([0.0f32; 4], [limit; 4]);
+        let (mut t0, mut t1) = ([f32::NEG_INFINITY; 4], [limit; 4]);
         for (a, &base) in lo.iter().enumerate() {
             // The side the segment enters the slab by first.
             let (qa, qb) = if self.falling[a] {
@@ -125,7 +126,13 @@ impl Segment {
                 t1[k] = if tb < t1[k] { tb } else { t1[k] };
             }
         }
-        let enter = core::array::from_fn(|k| if t0[k] <= t1[k] { t0[k] } else { f32::INFINITY });
+        let enter = core::array::from_fn(|k| {
+            if t0[k] <= t1[k] && t1[k] >= 0.0 {
+                t0[k]
+            } else {
+                f32::INFINITY
+            }
+        });
         (enter, t1)
     }
 }
