@@ -44,13 +44,22 @@
 //! # Traversal
 //! The segment from `p0` to `p1` is taken to grid units in `f64` once per query, with the
 //! reciprocal of its direction (`2^100` on an axis where the direction is below `2^-100`: the
-//! pad below covers the difference). Each node takes the segment into its own byte steps per
-//! axis, in `f64` (`t = byte · 2^shift / d + (lo − p0) / d`: a scale and an offset per axis),
-//! and clips its four child boxes, grown, against it with the slab test (Kay and Kajiya, 1986)
-//! in `f32`, four lanes side by side, bound by bound, without a branch or a division. Children
-//! are pushed farthest first, so the nearest is visited first, and a subtree is skipped when
-//! the segment enters its box after the reach of the contacts found so far (the earliest alpha
-//! plus the tie window); a leaf's triangles are cast in index order.
+//! pad below covers the difference), that reciprocal rounded to `f32` (an axis along which
+//! the segment spans more than `2^100` cells, whose reciprocal `f32` cannot scale exactly,
+//! culls nothing), and per axis the side by which the segment enters a slab. Each node takes
+//! the segment into its own byte steps per axis (`t = byte · 2^shift / d + (lo − p0) / d`: a
+//! scale, `2^shift` times the `f32` reciprocal, exact, and an offset, in `f64`), and clips its
+//! four child boxes, grown, against it with the slab test (Kay and Kajiya, 1986) in `f32`,
+//! four lanes side by side, bound by bound, without a branch or a division. Children are
+//! ordered by where the segment's line enters their boxes, even before the start (boxes that
+//! hold the start all begin at zero along the segment itself, and this orders them on a short
+//! move better than child order): the first is visited next (a leaf at once), the others wait
+//! on a stack, and a subtree is skipped when the segment enters its box after the reach of the
+//! contacts found so far (the earliest alpha plus the tie window, taken anew after each leaf).
+//! A leaf's triangles are cast in index order, with that reach lowered to where the segment
+//! leaves the leaf's grown box where that comes first (the box holds every contact with them,
+//! so none comes later), which lets a cast give up early when the ball is still above the
+//! triangle's plane there.
 //!
 //! Culling is conservative: a box is grown by `r`, by a bound on every rounding between the
 //! exact segment and what [`StandardTriangle::cast`](crate::StandardTriangle::cast) computes —
@@ -78,7 +87,7 @@ use crate::{Scalar, Triangle};
 pub use build::nodes_for;
 pub(crate) use build::{BuildError, build, item, key_index};
 pub(crate) use overlap::{overlapping, query_cells};
-pub(crate) use traverse::{Segment, rounding_pad, traverse};
+pub(crate) use traverse::{Segment, rounding_pad, traverse, traverse_leaves};
 
 /// Most triangles in a leaf.
 pub const LEAF: usize = 4;

@@ -348,10 +348,20 @@ impl<'a, S: Scalar> Mesh<'a, S> {
         let seg = Segment::new(sweep, &self.grid);
         let mut sound = true;
         let hit = earliest(|acc| {
-            sound &= bvh::traverse(self.nodes, &self.grid, &seg, acc, |acc, slots| {
+            sound &= bvh::traverse_leaves(self.nodes, &self.grid, &seg, acc, |acc, slots, exit| {
+                // A contact with a triangle of the leaf comes no later than where the segment
+                // leaves the leaf's grown box (`0 <= exit`, about 1 at most): a reach for
+                // `cast_within`, the next multiple of 2^-14 above it, exact in every scalar.
+                let exit = exit
+                    .is_finite()
+                    .then(|| S::div_pow2(S::from_int((exit * 16384.0) as i32 + 1), 14));
                 for s in slots {
+                    let reach = match (exit, acc.reach()) {
+                        (Some(e), r) if e < r => e,
+                        (_, r) => r,
+                    };
                     if let (Some(t), Some(&i)) = (self.triangles.get(s), self.order.get(s))
-                        && let Some(hit) = t.cast_within(sweep, acc.reach())
+                        && let Some(hit) = t.cast_within(sweep, reach)
                     {
                         acc.offer(i as usize, hit);
                     }

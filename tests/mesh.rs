@@ -12,7 +12,7 @@ use ballcast::winding::winding;
 use ballcast::{
     Buffer, Degenerates, Geometry, Mesh, MeshError, Node, Scalar, Scene, Sweep, Triangle, Vec3,
 };
-use common::{Rng, v};
+use common::{P, Rng, v};
 use fixed::types::{I16F16, I32F32};
 use meshes::{against_linear, against_linear_by, boxes, build, heightfield, soup, tri};
 
@@ -239,6 +239,35 @@ fn range_edges<S: Scalar>() {
     against_linear::<S>(&mut rng, &src, 300, l);
 }
 
+/// A heightfield 2^-107 units across, and falls from near its vertices to 2^-19 units below
+/// and aside (floats; fixed point has no such scale): a fall spans more than 2^100 of the
+/// tree's cells, where the node test's `f32` reciprocal is too small to scale exactly and that axis
+/// culls nothing. Still the linear scan's answers.
+fn tiny_mesh_long_falls<S: Scalar>() {
+    if !S::PRECISION.relative {
+        return;
+    }
+    let mut rng = Rng(0x5eed_0008);
+    let unit = (-110f64).exp2();
+    let src: Vec<[P; 3]> = heightfield(&mut rng, 8, 1.0, 0.65)
+        .iter()
+        .map(|t| t.map(|p| p.map(|c| c * unit)))
+        .collect();
+    let targets = src.clone();
+    against_linear_by::<S>(&mut rng, &src, 300, |rng, k| {
+        let t = targets[(rng.next() * targets.len() as f64) as usize][k % 3];
+        let p0 = [0.0, 2.0, 0.0].map(|up| rng.range(-1.0, 1.0 + up) * unit);
+        let p0 = [0, 1, 2].map(|a| t[a] + p0[a]);
+        let far = (-19f64).exp2();
+        let d = [rng.range(-far, far), -far, rng.range(-far, far)];
+        (
+            p0,
+            [0, 1, 2].map(|a| p0[a] + d[a]),
+            rng.range(0.0, 1.5) * unit,
+        )
+    });
+}
+
 /// Empty, one triangle, all identical: answers as the linear scan; an empty mesh hits nothing.
 fn small_meshes<S: Scalar>() {
     let mut rng = Rng(0x5eed_0006);
@@ -395,6 +424,7 @@ meshes::per_scalar!(
     active_edges_are_scenes,
     deterministic,
     range_edges,
+    tiny_mesh_long_falls,
     small_meshes,
     errors_not_panics,
     slides_as_linear,

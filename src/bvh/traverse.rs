@@ -5,11 +5,12 @@ use super::{CLASS_SHIFT, Cells, Grid, LEAF_FLAG, MAX_CLASS, Node, PAYLOAD, STACK
 use crate::merge::Earliest;
 use crate::{Scalar, Sweep};
 
-/// A child to visit: where the segment enters its box, its reference, and its box's minimum
-/// (all that decoding its children needs).
+/// A child waiting to be visited: where the segment enters and leaves its box, its reference,
+/// and its box's minimum (all that decoding its children needs).
 #[derive(Clone, Copy)]
 struct Entry {
     enter: f32,
+    exit: f32,
     child: u32,
     lo: [i32; 3],
 }
@@ -28,17 +29,26 @@ pub(crate) fn rounding_pad<S: Scalar>(r: f64, length: f64, magnitude: f64) -> f6
         + (64.0 * eps * per_unit + 1.0 / (1u64 << 40) as f64) * 3.0 * magnitude
 }
 
-/// The swept segment in grid units, with what every box test needs.
+/// The swept segment in grid units, with what every box test needs, worked out once per query
+/// so that a node costs only its own terms.
 pub(crate) struct Segment {
     q0: [f64; 3],
     /// Per axis, the reciprocal of the segment's extent, `2^100` where that is below `2^-100`
-    /// (parallel to the slab, as good as: the pad covers the difference).
+    /// (parallel to the slab, as good as: the pad covers the difference), in `f64` and in `f32`
+    /// (rounded to nearest), and the latter's magnitude: infinite where the extent exceeds
+    /// `2^100` cells (a reciprocal too small for `f32` to scale exactly: that axis then culls
+    /// nothing).
     inv: [f64; 3],
+    inv32: [f32; 3],
+    slope: [f32; 3],
+    /// Per axis, whether the segment runs towards lower coordinates: it enters a slab by its
+    /// maximum.
+    falling: [bool; 3],
     /// How far (cells) every box is grown: the radius plus every rounding (module docs), in
     /// `f32` for the node tests, rounded up.
     pad: f32,
     /// The seam margin `r / 64 + 4 EPSILON` (cells), grown by `2^class` per child; `f32`,
-    /// rounded up.
+    /// rounded up, at least the smallest normal `f32` (so `2^class` times it is exact).
     seam: f32,
 }
 
@@ -59,43 +69,56 @@ impl Segment {
         let q0 = p0.map(|x| x * s);
         let d = d.map(|x| x * s);
         let tiny = 1.0 / pow2(100);
+        let inv = d.map(|x| if x.abs() > tiny { 1.0 / x } else { pow2(100) });
         // The node tests' `f32` arithmetic: a few roundings of 2^-24 of terms below the
         // segment's and the mesh's magnitudes in cells, a node's extent (2^26) and the pad.
         let grow = 1.0 + 1.0 / pow2(19);
         let slack = (2.0 * magnitude * s + pow2(26)) / pow2(19);
+        let inv32 = inv.map(|x| x as f32);
         Self {
             q0,
-            inv: d.map(|x| if x.abs() > tiny { 1.0 / x } else { pow2(100) }),
+            inv,
+            inv32,
+            slope: inv.map(|x| {
+                if x.abs() >= tiny {
+                    (x as f32).abs()
+                } else {
+                    f32::INFINITY
+                }
+            }),
+            falling: inv.map(|x| x < 0.0),
             pad: up((pad * s + 2.0 + slack) * grow),
-            seam: up(seam * s * grow),
+            seam: up(seam * s * grow).max(f32::MIN_POSITIVE),
         }
     }
 
-    /// Where the segment, over `[0, limit]`, enters each of the four child boxes of `node` (whose
-    /// own minimum is `lo`), each grown by the pad and `2^class` seam margins of its child;
-    /// infinity where it misses. The four are computed side by side, lane by lane and without
-    /// branches, so the compiler can use vector registers; slots beyond `count` are computed and
-    /// ignored.
+    /// Where the segment's line enters each of the four child boxes of `node` (whose own
+    /// minimum is `lo`), each grown by the pad and `2^class` seam margins of its child (before
+    /// the start: negative, where the start lies in the box), and where the segment, over
+    /// `[0, limit]`, leaves it; an entry of infinity where the segment misses the box. The four
+    /// are computed side by side, lane by lane and without branches, so the compiler can use
+    /// vector registers; slots beyond `count` are computed and ignored.
     #[inline]
-    fn enter4(&self, node: &Node, lo: [i32; 3], limit: f32) -> [f32; 4] {
+    fn enter4(&self, node: &Node, lo: [i32; 3], limit: f32) -> ([f32; 4], [f32; 4]) {
         let pad: [f32; 4] = core::array::from_fn(|k| {
-            let class = ((node.children[k] & !LEAF_FLAG) >> CLASS_SHIFT).min(MAX_CLASS);
-            self.pad + self.seam * pow2(class) as f32
+            let class = (node.children[k] >> CLASS_SHIFT) & MAX_CLASS;
+            self.pad + self.seam * pow2f(class)
         });
-        let (mut t0, mut t1) = ([0.0f32; 4], [limit; 4]);
-        for (a, (&inv, &base)) in self.inv.iter().zip(&lo).enumerate() {
-            // The side the segment enters a slab by, and the pad's sign there, as parameters.
-            let (first, second, signed) = if inv >= 0.0 {
-                (a, 3 + a, inv as f32)
+        let (mut t0, mut t1) = ([f32::NEG_INFINITY; 4], [limit; 4]);
+        for (a, &base) in lo.iter().enumerate() {
+            // The side the segment enters the slab by first.
+            let (qa, qb) = if self.falling[a] {
+                (node.boxes[3 + a], node.boxes[a])
             } else {
-                (3 + a, a, -inv as f32)
+                (node.boxes[a], node.boxes[3 + a])
             };
-            // In the node's steps: t = byte * per_step + at_zero (module docs).
-            let per_step = (pow2(node.shift[a].min(31) as u32) * inv) as f32;
-            let at_zero = ((base as f64 - self.q0[a]) * inv) as f32;
-            let (qa, qb) = (node.boxes[first], node.boxes[second]);
+            // In the node's steps: t = byte * per_step + at_zero (module docs); `2^shift`
+            // times the `f32` reciprocal is exact, as `2^shift` times the `f64` one rounded.
+            let per_step = self.inv32[a] * pow2f(node.shift[a].min(31) as u32);
+            let at_zero = ((base as f64 - self.q0[a]) * self.inv[a]) as f32;
+            let slope = self.slope[a];
             for k in 0..4 {
-                let grow = pad[k] * signed;
+                let grow = pad[k] * slope;
                 let ta = qa[k] as f32 * per_step + (at_zero - grow);
                 let tb = qb[k] as f32 * per_step + (at_zero + grow);
                 // Plain comparisons: a NaN (an overflow, never expected) only widens the interval.
@@ -103,7 +126,14 @@ impl Segment {
                 t1[k] = if tb < t1[k] { tb } else { t1[k] };
             }
         }
-        core::array::from_fn(|k| if t0[k] <= t1[k] { t0[k] } else { f32::INFINITY })
+        let enter = core::array::from_fn(|k| {
+            if t0[k] <= t1[k] && t1[k] >= 0.0 {
+                t0[k]
+            } else {
+                f32::INFINITY
+            }
+        });
+        (enter, t1)
     }
 }
 
@@ -119,6 +149,12 @@ fn pow2(e: u32) -> f64 {
     f64::from_bits(((1023 + e.min(1023)) as u64) << 52)
 }
 
+/// `2^e` for `e <= 127`, exactly, in `f32`.
+#[inline]
+fn pow2f(e: u32) -> f32 {
+    f32::from_bits((127 + e.min(127)) << 23)
+}
+
 /// Decodes child `k` of `node`, whose own box has minimum `lo`.
 #[inline]
 pub(super) fn child_cells(node: &Node, k: usize, lo: [i32; 3]) -> Cells {
@@ -127,6 +163,21 @@ pub(super) fn child_cells(node: &Node, k: usize, lo: [i32; 3]) -> Cells {
         lo[a].wrapping_add((v as i32).wrapping_shl(node.shift[a].min(31) as u32))
     };
     ([at(0), at(1), at(2)], [at(3), at(4), at(5)])
+}
+
+/// The minimum of child `k`'s box (`child_cells`' first half).
+#[inline]
+fn child_lo(node: &Node, k: usize, lo: [i32; 3]) -> [i32; 3] {
+    core::array::from_fn(|a| {
+        let v = node.boxes[a][k & 3] as i32;
+        lo[a].wrapping_add(v.wrapping_shl(node.shift[a].min(31) as u32))
+    })
+}
+
+/// `exit` if before `lim`, else infinity.
+#[inline]
+fn before(exit: f32, lim: f32) -> f32 {
+    if exit < lim { exit } else { f32::INFINITY }
 }
 
 /// The triangle slots of a leaf reference: `first .. first + count`.
@@ -138,10 +189,7 @@ pub(crate) fn leaf_slots(child: u32) -> Option<core::ops::Range<usize>> {
     })
 }
 
-/// Visits the leaves the segment may reach within the current reach, nearest first, calling
-/// `leaf` with each leaf's slots; `reach` gives the current limit on alpha. Returns false if the
-/// tree is malformed (a stack overflow or a cycle: only possible for parts not made by the
-/// build), in which case the caller must answer another way.
+/// [`traverse_leaves`] for a caller that needs only each leaf's slots.
 pub(crate) fn traverse<S: Scalar>(
     nodes: &[Node],
     grid: &Grid,
@@ -149,34 +197,59 @@ pub(crate) fn traverse<S: Scalar>(
     acc: &mut Earliest<S>,
     mut leaf: impl FnMut(&mut Earliest<S>, core::ops::Range<usize>),
 ) -> bool {
+    traverse_leaves(nodes, grid, seg, acc, |acc, slots, _| leaf(acc, slots))
+}
+
+/// Visits the leaves the segment may reach within the current reach, nearest first, calling
+/// `leaf` with each leaf's slots and where the segment leaves the leaf's grown box (a contact
+/// with one of its triangles comes no later), infinity if not before the current reach;
+/// `reach` gives the current limit on alpha. The
+/// nearest child of a node is visited next without going through the stack, its siblings wait
+/// there. Returns false if the tree is malformed (a stack overflow or a cycle: only possible
+/// for parts not made by the build), in which case the caller must answer another way.
+pub(crate) fn traverse_leaves<S: Scalar>(
+    nodes: &[Node],
+    grid: &Grid,
+    seg: &Segment,
+    acc: &mut Earliest<S>,
+    mut leaf: impl FnMut(&mut Earliest<S>, core::ops::Range<usize>, f32),
+) -> bool {
     if nodes.is_empty() {
         return true;
     }
-    let limit = |r: S| up(r.to_f64() + 1.0 / (1u64 << 50) as f64);
+    // The reach as an `f32` bound on the node tests' parameter; it only changes at a leaf.
+    let limit = |acc: &Earliest<S>| up(acc.reach().to_f64() + 1.0 / (1u64 << 50) as f64);
+    let mut lim = limit(acc);
     let mut stack: heapless::Vec<Entry, STACK> = heapless::Vec::new();
-    let _ = stack.push(Entry {
-        enter: 0.0,
-        child: 0,
-        lo: grid.lo,
-    });
     let mut budget = 5 * nodes.len() + 5;
-    while let Some(e) = stack.pop() {
+    // The node in hand, if any: (reference, box minimum).
+    let mut next = Some((0u32, grid.lo));
+    loop {
         budget = match budget.checked_sub(1) {
             Some(b) => b,
             None => return false,
         };
-        let lim = limit(acc.reach());
-        if e.enter > lim {
-            continue;
-        }
-        if let Some(slots) = leaf_slots(e.child) {
-            leaf(acc, slots);
-            continue;
-        }
-        let Some(node) = nodes.get((e.child & PAYLOAD) as usize) else {
+        let (child, lo) = match next.take() {
+            Some(c) => c,
+            None => {
+                let Some(e) = stack.pop() else {
+                    return true;
+                };
+                if e.enter > lim {
+                    continue;
+                }
+                if let Some(slots) = leaf_slots(e.child) {
+                    leaf(acc, slots, before(e.exit, lim));
+                    lim = limit(acc);
+                    continue;
+                }
+                (e.child, e.lo)
+            }
+        };
+        let Some(node) = nodes.get((child & PAYLOAD) as usize) else {
             return false;
         };
-        let enter = seg.enter4(node, e.lo, lim);
+        let (enter, exit) = seg.enter4(node, lo, lim);
         let mut near = [(0.0f32, 0usize); 4];
         let mut n = 0;
         for (k, &t) in enter.iter().enumerate().take((node.count as usize).min(4)) {
@@ -191,22 +264,37 @@ pub(crate) fn traverse<S: Scalar>(
                 n += 1;
             }
         }
-        for &(enter, k) in near[..n].iter().rev() {
+        let Some((&(_, first), rest)) = near[..n].split_first() else {
+            continue;
+        };
+        for &(enter, k) in rest.iter().rev() {
+            let exit = exit[k & 3];
             let child = node.children[k & 3];
-            let entry = Entry {
-                enter,
-                child,
-                // A leaf needs no box.
-                lo: if child & LEAF_FLAG == 0 {
-                    child_cells(node, k, e.lo).0
-                } else {
-                    e.lo
-                },
+            // A leaf needs no box.
+            let lo = if child & LEAF_FLAG == 0 {
+                child_lo(node, k, lo)
+            } else {
+                lo
             };
-            if stack.push(entry).is_err() {
+            if stack
+                .push(Entry {
+                    enter,
+                    exit,
+                    child,
+                    lo,
+                })
+                .is_err()
+            {
                 return false;
             }
         }
+        let child = node.children[first & 3];
+        match leaf_slots(child) {
+            Some(slots) => {
+                leaf(acc, slots, before(exit[first & 3], lim));
+                lim = limit(acc);
+            }
+            None => next = Some((child, child_lo(node, first, lo))),
+        }
     }
-    true
 }
