@@ -3,6 +3,7 @@
 //! from zero, so results mirror with the sign of their inputs), exact integer square roots
 //! rounded to nearest.
 
+use super::isqrt::{isqrt_nearest_64, isqrt_nearest_128};
 use super::sealed::Kernel;
 use super::wide::*;
 use super::{Scalar, largest};

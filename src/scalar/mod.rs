@@ -15,6 +15,7 @@
 
 mod fixed;
 mod float;
+mod isqrt;
 mod narrow;
 mod wide;
 
