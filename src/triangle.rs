@@ -190,17 +190,18 @@ impl<S: Scalar> StandardTriangle<S> {
             return Err(DEGENERATE);
         }
         let z = S::ZERO;
-        let corners = [
+        let (v0, v1, v2) = (
             Vec3::new(z, z, z),
             Vec3::new(x1, z, z1),
             Vec3::new(x2, z, z),
-        ];
+        );
+        // Edge 2 runs from v2 = (x2, 0, 0) back to the origin: length x2, direction −x.
         let mut edges = [Edge {
-            dir: [S::UNIT_ZERO; 2],
-            len: z,
+            dir: [S::direction_neg_x(x2), S::UNIT_ZERO],
+            len: x2,
         }; 3];
-        for (i, edge) in edges.iter_mut().enumerate() {
-            let (len, dir) = S::direction(corners[(i + 1) % 3] - corners[i]).ok_or(DEGENERATE)?;
+        for (edge, (from, to)) in edges.iter_mut().zip([(v0, v1), (v1, v2)]) {
+            let (len, dir) = S::direction(to - from).ok_or(DEGENERATE)?;
             *edge = Edge {
                 dir: [dir.x, dir.z],
                 len,
@@ -344,3 +345,6 @@ impl<S: Scalar> StandardTriangle<S> {
         (self.x1, self.z1, self.x2)
     }
 }
+
+#[cfg(test)]
+mod tests;

@@ -237,6 +237,12 @@ macro_rules! fixed_scalar {
                     Self::unit_normalize(Self::scaled(v)?),
                 ))
             }
+            #[inline]
+            fn direction_neg_x(_: Self) -> $unit {
+                // `direction` takes the exact root of len², len itself, and normalises a vector
+                // with one nonzero component c to exactly −1: round(c 2^UFRAC / |c|).
+                -<$unit>::ONE
+            }
             fn chord(r: Self, c: Vec3<Self>) -> Option<Self> {
                 if c.x.abs() > r || c.y.abs() > r || c.z.abs() > r {
                     return None;

@@ -139,6 +139,10 @@ pub(crate) mod sealed {
         /// components within `8 * LIMIT` (fixed-point: the length is the exact integer square root
         /// of the exact sum of squares, rounded to nearest).
         fn direction(v: Vec3<Self>) -> Option<(Self, Vec3<Self::Unit>)>;
+        /// The x component of [`direction`](Self::direction)'s unit vector for `(−len, 0, 0)`,
+        /// whose other components are zero and whose length is `len`: the same numbers with no
+        /// square root. Needs `0 < len <= 4 * LIMIT`.
+        fn direction_neg_x(len: Self) -> Self::Unit;
         /// `sqrt(r² - |c|²)`, the half chord at distance `|c|` from a sphere's centre, or `None`
         /// when `|c| > r`. Needs `r` within `LIMIT` and `c` within `8 * LIMIT`; fixed-point
         /// forms the squares exactly in the wide type.
