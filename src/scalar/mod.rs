@@ -165,6 +165,15 @@ pub(crate) mod sealed {
     }
 }
 
+/// Whether `f64` arithmetic is done by hardware on this target (x86 with SSE2, AArch64, wasm32)
+/// rather than by library calls, as on the Cortex-M: where to prefer a float path that gives the
+/// same result as an integer one.
+const HARDWARE_F64: bool = cfg!(any(
+    target_feature = "sse2",
+    all(target_arch = "aarch64", target_feature = "neon"),
+    target_arch = "wasm32"
+));
+
 /// Four steps of the scalar's resolution: contacts whose alphas differ by no more are taken to
 /// arrive together (their order is rounding).
 pub(crate) fn tie<S: Scalar>() -> S {
@@ -176,3 +185,6 @@ pub(crate) fn largest<T: PartialOrd + Copy>(a: T, b: T, c: T) -> T {
     let ab = if b > a { b } else { a };
     if c > ab { c } else { ab }
 }
+
+#[cfg(test)]
+mod tests;
