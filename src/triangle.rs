@@ -157,8 +157,15 @@ impl<S: Scalar> StandardTriangle<S> {
     /// are collinear at the scalar's precision (the normal's direction would be uncertain by more
     /// than about 1e-3 rad), or when the standardized base `x2` or height `z1` rounds to zero.
     pub fn new(t: &Triangle<S>) -> Result<Self, Error> {
-        for v in [t.v0, t.v1, t.v2] {
-            check::point(v, S::LIMIT)?;
+        // Two comparisons per coordinate, which NaN and infinities fail; the checks then name
+        // the first offender.
+        let (lo, hi) = (-S::LIMIT, S::LIMIT);
+        let within = |c: S| lo <= c && c <= hi;
+        let inside = |p: Vec3<S>| within(p.x) && within(p.y) && within(p.z);
+        if !(inside(t.v0) && inside(t.v1) && inside(t.v2)) {
+            for v in [t.v0, t.v1, t.v2] {
+                check::point(v, S::LIMIT)?;
+            }
         }
         let edges = [t.v1 - t.v0, t.v2 - t.v1, t.v0 - t.v2];
         // (v1-v0)×(v2-v0) = e0×e1 = e1×e2 = e2×e0: use the pair that leaves out the longest edge.
