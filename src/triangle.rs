@@ -322,6 +322,12 @@ impl<S: Scalar> StandardTriangle<S> {
         }
     }
 
+    /// The height of a point within `±LIMIT` above the triangle's plane: the y of
+    /// [`standard_point`](Self::standard_point), alone.
+    pub(crate) fn height_of(&self, p: Vec3<S>) -> S {
+        S::dot_unit(p - self.origin, self.uy)
+    }
+
     /// [`to_standard`](Self::to_standard) for a point already known to lie within `±LIMIT`.
     pub(crate) fn standard_point(&self, p: Vec3<S>) -> Vec3<S> {
         let d = p - self.origin;
