@@ -71,10 +71,10 @@ impl<S: Scalar> Heightfield<'_, S> {
         let cells = |v: f64, a: usize, n: i64| {
             let q = (v - o[a]) / sp;
             let e = (v.abs() + o[a].abs()) / sp / (1u64 << 40) as f64 + 1.0 / (1u64 << 40) as f64;
-            let at = |q: f64| {
-                let c = libm::floor(q);
-                if c < 0.0 { 0 } else { (c as i64).min(n - 1) }
-            };
+            // The floor of `q` clamped to `0..n`: below zero the clamp decides, and at or above
+            // it the truncation of `as` is the floor (no call to `floor`); NaN gives 0, as
+            // `floor` and `as` would.
+            let at = |q: f64| if q < 0.0 { 0 } else { (q as i64).min(n - 1) };
             (at(q - e), at(q + e))
         };
         let span = |a: usize, t0: f64, t1: f64| {
