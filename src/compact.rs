@@ -304,14 +304,14 @@ impl<'a, S: Scalar, I: MeshIndex> CompactMesh<'a, S, I> {
 
 /// The corners of `vertices` at `corners` in `f64`, if they exist.
 fn world<S: Scalar>(vertices: &[Vec3<S>], corners: [usize; 3]) -> Option<[[f64; 3]; 3]> {
-    let [a, b, c] = corners.map(|i| vertices.get(i).map(|p| p.to_array().map(S::to_f64)));
-    Some([a?, b?, c?])
+    let v = |k: usize| vertices.get(corners[k]);
+    Some([v(0)?, v(1)?, v(2)?].map(|p| p.to_array().map(S::to_f64)))
 }
 
 /// The triangle of `vertices` at `corners`, if they exist.
 fn triangle<S: Scalar>(vertices: &[Vec3<S>], corners: [usize; 3]) -> Option<Triangle<S>> {
-    let [a, b, c] = corners.map(|i| vertices.get(i).copied());
-    Some(Triangle::new(a?, b?, c?))
+    let v = |k: usize| vertices.get(corners[k]).copied();
+    Some(Triangle::new(v(0)?, v(1)?, v(2)?))
 }
 
 /// `t` prepared with the features and sidedness of `byte`.
