@@ -18,6 +18,7 @@
 use crate::bvh::{self, Grid, Node, Segment};
 use crate::cull::Path;
 use crate::merge::{Earliest, earliest};
+use crate::scalar::{largest, smallest};
 use crate::{Features, Geometry, Mesh, Scalar, SceneHit, StandardTriangle, Sweep, Triangle, Vec3};
 use core::fmt;
 
@@ -273,8 +274,9 @@ impl<'a, S: Scalar, I: MeshIndex> CompactMesh<'a, S, I> {
                     let Some(v) = corners(s).and_then(|c| world(self.vertices, c)) else {
                         continue;
                     };
-                    let lo = [0, 1, 2].map(|a| v[0][a].min(v[1][a]).min(v[2][a]));
-                    let hi = [0, 1, 2].map(|a| v[0][a].max(v[1][a]).max(v[2][a]));
+                    // Coordinates of validated vertices: never NaN.
+                    let lo = [0, 1, 2].map(|a| smallest(v[0][a], v[1][a], v[2][a]));
+                    let hi = [0, 1, 2].map(|a| largest(v[0][a], v[1][a], v[2][a]));
                     let two_sided = self.bytes.get(s).is_some_and(|b| b & TWO_SIDED != 0);
                     if let Some(span) = path.clip(lo, hi, limit)
                         && path.near_plane(v, span, !two_sided)

@@ -131,9 +131,12 @@ impl<S: Scalar> Heightfield<'_, S> {
                 };
                 let (p00, p01) = ([x[0], at(0, 0), z[0]], [x[0], at(0, 1), z[1]]);
                 let (p11, p10) = ([x[1], at(1, 1), z[1]], [x[1], at(1, 0), z[0]]);
+                // Heights are finite: plain comparisons, cheaper than `f64::min` and `max`.
                 let (lo, hi) = [p01[1], p11[1], p10[1]]
                     .iter()
-                    .fold((p00[1], p00[1]), |(l, u), &v| (l.min(v), u.max(v)));
+                    .fold((p00[1], p00[1]), |(l, u), &v| {
+                        (if v < l { v } else { l }, if v > u { v } else { u })
+                    });
                 let Some(span) = path.clip([x[0], lo, z[0]], [x[1], hi, z[1]], lim) else {
                     continue;
                 };
