@@ -127,7 +127,9 @@ impl Path {
         let behind = one_sided
             && (is_less(start, -height(big(sub(self.p0, v[0]))))
                 || is_less(2.0 * height(big(self.d)), along));
-        !(behind || is_less(reach, d0.min(d1)) || is_less(d0.max(d1), -reach))
+        // d0 and d1 are finite (the path and the triangle are): ordered by one comparison.
+        let (near, far) = if d1 < d0 { (d1, d0) } else { (d0, d1) };
+        !(behind || is_less(reach, near) || is_less(far, -reach))
     }
 }
 

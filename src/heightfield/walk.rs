@@ -14,13 +14,15 @@ fn beside_diagonal(path: &Path, c: [f64; 2], above: bool, (t0, t1): (f64, f64)) 
         let (x, z) = (path.p0[0] + t * path.d[0], path.p0[2] + t * path.d[2]);
         (z - c[1]) - (x - c[0])
     };
+    // Finite both (the path is): ordered by one comparison.
     let (a, b) = (side(t0), side(t1));
+    let (low, high) = if b < a { (b, a) } else { (a, b) };
     // `pad √2` bounds the distance across the diagonal, with room for rounding.
     let reach = 1.5 * path.pad;
     if above {
-        !is_less(a.max(b), -reach)
+        !is_less(high, -reach)
     } else {
-        !is_less(reach, a.min(b))
+        !is_less(reach, low)
     }
 }
 
@@ -79,7 +81,8 @@ impl<S: Scalar> Heightfield<'_, S> {
         };
         let span = |a: usize, t0: f64, t1: f64| {
             let (u, v) = (path.p0[a] + path.d[a] * t0, path.p0[a] + path.d[a] * t1);
-            (u.min(v) - path.pad, u.max(v) + path.pad)
+            let (low, high) = if v < u { (v, u) } else { (u, v) };
+            (low - path.pad, high + path.pad)
         };
         let (zlo, zhi) = span(2, ta, tb);
         let (k0, k1) = (cells(zlo, 2, h).0, cells(zhi, 2, h).1);
