@@ -14,15 +14,16 @@ use core::cmp::Ordering;
 
 /// Whether, across an edge shared by triangles `a` and `b` (whose vertex off the edge is `apex`),
 /// the surface continues flat or folds towards the front of both. `a` is the later of the two in
-/// input order: the valley test runs in its frame.
+/// input order: the valley test runs in its frame. `apex` is a vertex of a validated triangle,
+/// within `±LIMIT`.
 pub(crate) fn hides<S: Scalar>(
     ta: &StandardTriangle<S>,
     tb: &StandardTriangle<S>,
     apex: Vec3<S>,
 ) -> bool {
     let one_sided = !ta.is_two_sided() && !tb.is_two_sided();
-    // `apex` lies in range (it was validated), so `to_standard` cannot fail.
-    let valley = || ta.to_standard(apex).is_ok_and(|p| p.y > S::ZERO);
+    // `apex` lies in range (it was validated): its height needs no check.
+    let valley = || ta.height_of(apex) > S::ZERO;
     same_plane(ta.normal(), tb.normal()) || (one_sided && valley())
 }
 

@@ -18,6 +18,7 @@
 use crate::bvh::{self, Grid, Node, Segment};
 use crate::cull::Path;
 use crate::merge::{Earliest, earliest};
+use crate::scalar::{largest, smallest};
 use crate::{Features, Geometry, Mesh, Scalar, SceneHit, StandardTriangle, Sweep, Triangle, Vec3};
 use core::fmt;
 
@@ -273,8 +274,9 @@ impl<'a, S: Scalar, I: MeshIndex> CompactMesh<'a, S, I> {
                     let Some(v) = corners(s).and_then(|c| world(self.vertices, c)) else {
                         continue;
                     };
-                    let lo = [0, 1, 2].map(|a| v[0][a].min(v[1][a]).min(v[2][a]));
-                    let hi = [0, 1, 2].map(|a| v[0][a].max(v[1][a]).max(v[2][a]));
+                    // Coordinates of validated vertices: never NaN.
+                    let lo = [0, 1, 2].map(|a| smallest(v[0][a], v[1][a], v[2][a]));
+                    let hi = [0, 1, 2].map(|a| largest(v[0][a], v[1][a], v[2][a]));
                     let two_sided = self.bytes.get(s).is_some_and(|b| b & TWO_SIDED != 0);
                     if let Some(span) = path.clip(lo, hi, limit)
                         && path.near_plane(v, span, !two_sided)
@@ -304,14 +306,14 @@ impl<'a, S: Scalar, I: MeshIndex> CompactMesh<'a, S, I> {
 
 /// The corners of `vertices` at `corners` in `f64`, if they exist.
 fn world<S: Scalar>(vertices: &[Vec3<S>], corners: [usize; 3]) -> Option<[[f64; 3]; 3]> {
-    let [a, b, c] = corners.map(|i| vertices.get(i).map(|p| p.to_array().map(S::to_f64)));
-    Some([a?, b?, c?])
+    let v = |k: usize| vertices.get(corners[k]);
+    Some([v(0)?, v(1)?, v(2)?].map(|p| p.to_array().map(S::to_f64)))
 }
 
 /// The triangle of `vertices` at `corners`, if they exist.
 fn triangle<S: Scalar>(vertices: &[Vec3<S>], corners: [usize; 3]) -> Option<Triangle<S>> {
-    let [a, b, c] = corners.map(|i| vertices.get(i).copied());
-    Some(Triangle::new(a?, b?, c?))
+    let v = |k: usize| vertices.get(corners[k]).copied();
+    Some(Triangle::new(v(0)?, v(1)?, v(2)?))
 }
 
 /// `t` prepared with the features and sidedness of `byte`.

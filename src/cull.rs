@@ -3,6 +3,7 @@
 //! forms that prepare triangles on the fly ([`Heightfield`](crate::Heightfield),
 //! [`CompactMesh`](crate::CompactMesh)).
 
+use crate::scalar::largest;
 use crate::{Scalar, Sweep};
 
 /// The sweep in world units (`f64`), with what every box test needs.
@@ -62,9 +63,16 @@ impl Path {
                 }
                 continue;
             }
+            // Never NaN (finite bounds, a finite inverse): plain comparisons, cheaper than
+            // `f64::min` and `max`.
             let (ta, tb) = (near * self.inv[a], far * self.inv[a]);
-            t0 = t0.max(ta.min(tb));
-            t1 = t1.min(ta.max(tb));
+            let (enter, leave) = if tb < ta { (tb, ta) } else { (ta, tb) };
+            if enter > t0 {
+                t0 = enter;
+            }
+            if leave < t1 {
+                t1 = leave;
+            }
         }
         (t0 <= t1).then_some((t0, t1))
     }
@@ -101,12 +109,16 @@ impl Path {
         let (start, along) = (dot(n, sub(self.p0, v[0])), dot(n, self.d));
         let (d0, d1) = (start + t0 * along, start + t1 * along);
         let norm = libm::sqrt(dot(n, n));
-        let big = |a: [f64; 3]| a.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+        // Largest magnitudes by plain comparisons (a NaN is passed over, as by `f64::max`).
+        let big = |a: [f64; 3]| {
+            a.iter()
+                .fold(0.0f64, |m, x| if x.abs() > m { x.abs() } else { m })
+        };
         let l = [big(e), big(f), big(sub(v[2], v[1]))];
-        let longest = l[0].max(l[1]).max(l[2]);
+        let longest = largest(l[0], l[1], l[2]);
         // The two largest's product, and the tilt (infinite or NaN for an exactly flat
         // triangle: nothing is passed by).
-        let product = (l[0] * l[1]).max(l[0] * l[2]).max(l[1] * l[2]);
+        let product = largest(l[0] * l[1], l[0] * l[2], l[1] * l[2]);
         let tilt = self.unit * product / norm;
         // Points of the path over the span lie within the pad of the triangle's box, whose
         // extent is at most `longest` per axis from the first vertex: `2 (longest + pad)` away.
@@ -115,7 +127,9 @@ impl Path {
         let behind = one_sided
             && (is_less(start, -height(big(sub(self.p0, v[0]))))
                 || is_less(2.0 * height(big(self.d)), along));
-        !(behind || is_less(reach, d0.min(d1)) || is_less(d0.max(d1), -reach))
+        // d0 and d1 are finite (the path and the triangle are): ordered by one comparison.
+        let (near, far) = if d1 < d0 { (d1, d0) } else { (d0, d1) };
+        !(behind || is_less(reach, near) || is_less(far, -reach))
     }
 }
 

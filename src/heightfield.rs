@@ -278,6 +278,13 @@ impl<'a, S: Scalar> Heightfield<'a, S> {
 
     /// Vertex `(column, row)`, if on the grid.
     pub fn vertex(&self, column: u32, row: u32) -> Option<Vec3<S>> {
+        let y = self.height(column, row)?;
+        let (o, a) = (self.origin, |o: S, n: u32| self.along(o, n));
+        Some(Vec3::new(a(o.x, column), y, a(o.z, row)))
+    }
+
+    /// The world height of vertex `(column, row)`, if on the grid.
+    fn height(&self, column: u32, row: u32) -> Option<S> {
         if column > self.columns || row > self.rows {
             return None;
         }
@@ -285,13 +292,13 @@ impl<'a, S: Scalar> Heightfield<'a, S> {
             .checked_mul(self.columns as usize + 1)?
             .checked_add(column as usize)?;
         let h = *self.heights.get(at)?;
+        Some(self.origin.y + self.unit.mul(S::from_int(h as i32)))
+    }
+
+    /// The world coordinate of grid line `n` along x (or z), from the origin's `o`.
+    fn along(&self, o: S, n: u32) -> S {
         // Indices beyond i32 saturate; `build` refuses grids whose indices are not exact.
-        let n = |i: u32| S::from_int(i.min(i32::MAX as u32) as i32);
-        Some(Vec3::new(
-            self.origin.x + self.spacing.mul(n(column)),
-            self.origin.y + self.unit.mul(S::from_int(h as i32)),
-            self.origin.z + self.spacing.mul(n(row)),
-        ))
+        o + self.spacing.mul(S::from_int(n.min(i32::MAX as u32) as i32))
     }
 
     /// Triangle `index` (cell `index / 2`; see the [module docs](self)), holes included.
@@ -302,7 +309,13 @@ impl<'a, S: Scalar> Heightfield<'a, S> {
             return None;
         }
         let (i, k) = ((c % w) as u32, (c / w) as u32);
-        let v = |di: u32, dk: u32| self.vertex(i + di, k + dk);
+        // The cell's two grid lines each way, shared by its corners.
+        let (o, a) = (self.origin, |o: S, n: u32| self.along(o, n));
+        let (x, z) = ([a(o.x, i), a(o.x, i + 1)], [a(o.z, k), a(o.z, k + 1)]);
+        let v = |di: usize, dk: usize| {
+            let y = self.height(i + di as u32, k + dk as u32)?;
+            Some(Vec3::new(x[di], y, z[dk]))
+        };
         let (a, d) = (v(0, 0)?, v(1, 1)?);
         Some(match index % 2 {
             0 => Triangle::new(a, v(0, 1)?, d),

@@ -157,8 +157,15 @@ impl<S: Scalar> StandardTriangle<S> {
     /// are collinear at the scalar's precision (the normal's direction would be uncertain by more
     /// than about 1e-3 rad), or when the standardized base `x2` or height `z1` rounds to zero.
     pub fn new(t: &Triangle<S>) -> Result<Self, Error> {
-        for v in [t.v0, t.v1, t.v2] {
-            check::point(v, S::LIMIT)?;
+        // Two comparisons per coordinate, which NaN and infinities fail; the checks then name
+        // the first offender.
+        let (lo, hi) = (-S::LIMIT, S::LIMIT);
+        let within = |c: S| lo <= c && c <= hi;
+        let inside = |p: Vec3<S>| within(p.x) && within(p.y) && within(p.z);
+        if !(inside(t.v0) && inside(t.v1) && inside(t.v2)) {
+            for v in [t.v0, t.v1, t.v2] {
+                check::point(v, S::LIMIT)?;
+            }
         }
         let edges = [t.v1 - t.v0, t.v2 - t.v1, t.v0 - t.v2];
         // (v1-v0)×(v2-v0) = e0×e1 = e1×e2 = e2×e0: use the pair that leaves out the longest edge.
@@ -190,17 +197,18 @@ impl<S: Scalar> StandardTriangle<S> {
             return Err(DEGENERATE);
         }
         let z = S::ZERO;
-        let corners = [
+        let (v0, v1, v2) = (
             Vec3::new(z, z, z),
             Vec3::new(x1, z, z1),
             Vec3::new(x2, z, z),
-        ];
+        );
+        // Edge 2 runs from v2 = (x2, 0, 0) back to the origin: length x2, direction −x.
         let mut edges = [Edge {
-            dir: [S::UNIT_ZERO; 2],
-            len: z,
+            dir: [S::direction_neg_x(x2), S::UNIT_ZERO],
+            len: x2,
         }; 3];
-        for (i, edge) in edges.iter_mut().enumerate() {
-            let (len, dir) = S::direction(corners[(i + 1) % 3] - corners[i]).ok_or(DEGENERATE)?;
+        for (edge, (from, to)) in edges.iter_mut().zip([(v0, v1), (v1, v2)]) {
+            let (len, dir) = S::direction(to - from).ok_or(DEGENERATE)?;
             *edge = Edge {
                 dir: [dir.x, dir.z],
                 len,
@@ -314,6 +322,12 @@ impl<S: Scalar> StandardTriangle<S> {
         }
     }
 
+    /// The height of a point within `±LIMIT` above the triangle's plane: the y of
+    /// [`standard_point`](Self::standard_point), alone.
+    pub(crate) fn height_of(&self, p: Vec3<S>) -> S {
+        S::dot_unit(p - self.origin, self.uy)
+    }
+
     /// [`to_standard`](Self::to_standard) for a point already known to lie within `±LIMIT`.
     pub(crate) fn standard_point(&self, p: Vec3<S>) -> Vec3<S> {
         let d = p - self.origin;
@@ -344,3 +358,6 @@ impl<S: Scalar> StandardTriangle<S> {
         (self.x1, self.z1, self.x2)
     }
 }
+
+#[cfg(test)]
+mod tests;

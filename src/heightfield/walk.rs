@@ -14,13 +14,15 @@ fn beside_diagonal(path: &Path, c: [f64; 2], above: bool, (t0, t1): (f64, f64)) 
         let (x, z) = (path.p0[0] + t * path.d[0], path.p0[2] + t * path.d[2]);
         (z - c[1]) - (x - c[0])
     };
+    // Finite both (the path is): ordered by one comparison.
     let (a, b) = (side(t0), side(t1));
+    let (low, high) = if b < a { (b, a) } else { (a, b) };
     // `pad √2` bounds the distance across the diagonal, with room for rounding.
     let reach = 1.5 * path.pad;
     if above {
-        !is_less(a.max(b), -reach)
+        !is_less(high, -reach)
     } else {
-        !is_less(reach, a.min(b))
+        !is_less(reach, low)
     }
 }
 
@@ -71,15 +73,16 @@ impl<S: Scalar> Heightfield<'_, S> {
         let cells = |v: f64, a: usize, n: i64| {
             let q = (v - o[a]) / sp;
             let e = (v.abs() + o[a].abs()) / sp / (1u64 << 40) as f64 + 1.0 / (1u64 << 40) as f64;
-            let at = |q: f64| {
-                let c = libm::floor(q);
-                if c < 0.0 { 0 } else { (c as i64).min(n - 1) }
-            };
+            // The floor of `q` clamped to `0..n`: below zero the clamp decides, and at or above
+            // it the truncation of `as` is the floor (no call to `floor`); NaN gives 0, as
+            // `floor` and `as` would.
+            let at = |q: f64| if q < 0.0 { 0 } else { (q as i64).min(n - 1) };
             (at(q - e), at(q + e))
         };
         let span = |a: usize, t0: f64, t1: f64| {
             let (u, v) = (path.p0[a] + path.d[a] * t0, path.p0[a] + path.d[a] * t1);
-            (u.min(v) - path.pad, u.max(v) + path.pad)
+            let (low, high) = if v < u { (v, u) } else { (u, v) };
+            (low - path.pad, high + path.pad)
         };
         let (zlo, zhi) = span(2, ta, tb);
         let (k0, k1) = (cells(zlo, 2, h).0, cells(zhi, 2, h).1);
@@ -131,9 +134,12 @@ impl<S: Scalar> Heightfield<'_, S> {
                 };
                 let (p00, p01) = ([x[0], at(0, 0), z[0]], [x[0], at(0, 1), z[1]]);
                 let (p11, p10) = ([x[1], at(1, 1), z[1]], [x[1], at(1, 0), z[0]]);
+                // Heights are finite: plain comparisons, cheaper than `f64::min` and `max`.
                 let (lo, hi) = [p01[1], p11[1], p10[1]]
                     .iter()
-                    .fold((p00[1], p00[1]), |(l, u), &v| (l.min(v), u.max(v)));
+                    .fold((p00[1], p00[1]), |(l, u), &v| {
+                        (if v < l { v } else { l }, if v > u { v } else { u })
+                    });
                 let Some(span) = path.clip([x[0], lo, z[0]], [x[1], hi, z[1]], lim) else {
                     continue;
                 };

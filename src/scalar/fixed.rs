@@ -3,9 +3,10 @@
 //! from zero, so results mirror with the sign of their inputs), exact integer square roots
 //! rounded to nearest.
 
+use super::isqrt::{isqrt_nearest_64, isqrt_nearest_128};
 use super::sealed::Kernel;
 use super::wide::*;
-use super::{Scalar, largest};
+use super::{HARDWARE_F64, Scalar, largest};
 use crate::vec3::Vec3;
 use core::cmp::Ordering;
 use fixed::types::{I2F30, I2F62, I16F16, I32F32};
@@ -62,7 +63,14 @@ macro_rules! fixed_scalar {
             }
             #[inline]
             fn to_f64(self) -> f64 {
-                self.to_num::<f64>()
+                // The bits' conversion rounds to nearest, ties to even, as `to_num` does, and
+                // the power-of-two scale is exact: two instructions where `f64` is hardware.
+                // Elsewhere `to_num`'s integer code beats two soft-float calls.
+                if HARDWARE_F64 {
+                    self.to_bits() as f64 * (1.0 / (1u64 << $frac) as f64)
+                } else {
+                    self.to_num::<f64>()
+                }
             }
             #[inline]
             fn is_finite(self) -> bool {
@@ -235,6 +243,12 @@ macro_rules! fixed_scalar {
                     <$t>::from_bits(len as $bits),
                     Self::unit_normalize(Self::scaled(v)?),
                 ))
+            }
+            #[inline]
+            fn direction_neg_x(_: Self) -> $unit {
+                // `direction` takes the exact root of len², len itself, and normalises a vector
+                // with one nonzero component c to exactly −1: round(c 2^UFRAC / |c|).
+                -<$unit>::ONE
             }
             fn chord(r: Self, c: Vec3<Self>) -> Option<Self> {
                 if c.x.abs() > r || c.y.abs() > r || c.z.abs() > r {

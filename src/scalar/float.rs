@@ -135,6 +135,19 @@ macro_rules! float_scalar {
                 $tiny(v)
             }
             #[inline]
+            fn direction_neg_x(len: Self) -> Self {
+                // `direction`'s two paths. On the first, sqrt(len²) is len: the square root of a
+                // float's square rounded to nearest is the float itself in radix 2 short of
+                // underflow (Boldo, "Stupid is as stupid does: taking the square root of the
+                // square of a floating-point number", 2015). The second scales by len first.
+                let n2 = len * len;
+                if n2 >= <$t>::MIN_POSITIVE / <$t>::EPSILON && n2.is_finite() {
+                    -(len * (1.0 / len))
+                } else {
+                    -1.0
+                }
+            }
+            #[inline]
             fn chord(r: Self, c: Vec3<Self>) -> Option<Self> {
                 let k2 = r * r - crate::vec3::dot3(c, c);
                 (k2 >= 0.0).then(|| $sqrt(k2))

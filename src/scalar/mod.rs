@@ -15,6 +15,7 @@
 
 mod fixed;
 mod float;
+mod isqrt;
 mod narrow;
 mod wide;
 
@@ -138,6 +139,10 @@ pub(crate) mod sealed {
         /// components within `8 * LIMIT` (fixed-point: the length is the exact integer square root
         /// of the exact sum of squares, rounded to nearest).
         fn direction(v: Vec3<Self>) -> Option<(Self, Vec3<Self::Unit>)>;
+        /// The x component of [`direction`](Self::direction)'s unit vector for `(−len, 0, 0)`,
+        /// whose other components are zero and whose length is `len`: the same numbers with no
+        /// square root. Needs `0 < len <= 4 * LIMIT`.
+        fn direction_neg_x(len: Self) -> Self::Unit;
         /// `sqrt(r² - |c|²)`, the half chord at distance `|c|` from a sphere's centre, or `None`
         /// when `|c| > r`. Needs `r` within `LIMIT` and `c` within `8 * LIMIT`; fixed-point
         /// forms the squares exactly in the wide type.
@@ -160,6 +165,15 @@ pub(crate) mod sealed {
     }
 }
 
+/// Whether `f64` arithmetic is done by hardware on this target (x86 with SSE2, AArch64, wasm32)
+/// rather than by library calls, as on the Cortex-M: where to prefer a float path that gives the
+/// same result as an integer one.
+const HARDWARE_F64: bool = cfg!(any(
+    target_feature = "sse2",
+    all(target_arch = "aarch64", target_feature = "neon"),
+    target_arch = "wasm32"
+));
+
 /// Four steps of the scalar's resolution: contacts whose alphas differ by no more are taken to
 /// arrive together (their order is rounding).
 pub(crate) fn tie<S: Scalar>() -> S {
@@ -167,7 +181,18 @@ pub(crate) fn tie<S: Scalar>() -> S {
 }
 
 /// The largest of three values: with magnitudes, a vector length that needs no squaring.
+/// Plain comparisons (for floats, a NaN after the first value is passed over).
 pub(crate) fn largest<T: PartialOrd + Copy>(a: T, b: T, c: T) -> T {
     let ab = if b > a { b } else { a };
     if c > ab { c } else { ab }
 }
+
+/// The smallest of three values, as [`largest`]: cheaper than `f64::min`, which handles NaN in
+/// either place, where the values are known not to be NaN.
+pub(crate) fn smallest<T: PartialOrd + Copy>(a: T, b: T, c: T) -> T {
+    let ab = if b < a { b } else { a };
+    if c < ab { c } else { ab }
+}
+
+#[cfg(test)]
+mod tests;

@@ -1,6 +1,6 @@
 //! Exact double-width integer arithmetic for the fixed-point kernels (`fixed.rs`): products,
-//! dot products with unit vectors, quotients and rounded square roots, each in the form that is
-//! cheapest on the target and the same integer on every target.
+//! dot products with unit vectors and quotients, each in the form that is cheapest on the target
+//! and the same integer on every target (the square roots are in `isqrt.rs`).
 //!
 //! On cores without a 32 × 32 → 64 multiply (`ballcast_no_long_mul`, set by `build.rs` for
 //! Armv6-M and Armv8-M Baseline, e.g. the Cortex-M0) `I16F16`'s products, dot products with
@@ -8,20 +8,6 @@
 //! to `__aeabi_lmul` and `__aeabi_ldivmod`.
 
 use super::narrow::*;
-
-/// The integer square root rounded to nearest: `r + 1` when `x > r² + r`, i.e. when
-/// `sqrt(x) >= r + 1/2` (the two cannot be equal for integers). One per width: `I16F16`'s
-/// radicands fit 64 bits, and a 128-bit root costs a Cortex-M0 several times a 64-bit one.
-macro_rules! isqrt_nearest {
-    ($name:ident, $u:ty) => {
-        pub(super) fn $name(x: $u) -> $u {
-            let r = x.isqrt();
-            if x - r * r > r { r + 1 } else { r }
-        }
-    };
-}
-isqrt_nearest!(isqrt_nearest_64, u64);
-isqrt_nearest!(isqrt_nearest_128, u128);
 
 /// `a * b` exactly in 64 bits. Where the core has a 32 × 32 → 64 multiply this is one
 /// instruction; on cores without one (Cortex-M0, `ballcast_no_long_mul`, see `build.rs`) an

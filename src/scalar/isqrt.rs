@@ -1,0 +1,95 @@
+//! Integer square roots rounded to nearest, for the fixed-point kernels (`fixed.rs`): the same
+//! integer on every target, found the way that is cheapest there.
+//!
+//! `round(√x)` follows from any estimate `r` with `round(√x) − 1 <= r <= round(√x)`: it is
+//! `r + 1` exactly when `x − r² > r`, i.e. when `√x > r + 1/2` (`√x` is never a half-integer).
+//! With `r = ⌊√x⌋` this is the usual rounding of an integer square root; the integer square root
+//! itself and its Newton iteration are in Warren, *Hacker's Delight* (2nd ed., §11–1).
+//!
+//! Where `libm::sqrt` is a hardware instruction (x86 with SSE2, AArch64: libm's own condition),
+//! the estimate comes from the `f64` square root: IEEE 754 rounds the conversion to `f64` and
+//! the square root once each, so the estimate is off `√x` by a relative `1.5 · 2^-53` at most.
+//! For a 64-bit `x` that is under 2^-20 (`√x < 2^32`), so its integer part is a valid `r`, with
+//! room to spare for a cheaper conversion. For a 128-bit `x` it is up to 2^12, and one Newton
+//! step `r + (x − r²) / 2r`, its residual exact in integers and its quotient in `f64`, brings it
+//! within 1/2 of `√x`. Elsewhere (Cortex-M, whose FPUs have no `f64` square root, and wasm32,
+//! where libm's square root is software on stable Rust) `r = ⌊√x⌋` comes from core's `isqrt`.
+//! Either way the result is the same integer; the tests compare the two bit for bit.
+
+/// Whether `libm::sqrt` is one instruction on this target: libm's own condition for it.
+const HARDWARE_SQRT: bool = cfg!(any(
+    target_feature = "sse2",
+    all(target_arch = "aarch64", target_feature = "neon")
+));
+
+/// `round(√x)` from core's exact `⌊√x⌋`.
+macro_rules! exact_isqrt_nearest {
+    ($name:ident, $u:ty) => {
+        pub(super) fn $name(x: $u) -> $u {
+            let r = x.isqrt();
+            if x - r * r > r { r + 1 } else { r }
+        }
+    };
+}
+exact_isqrt_nearest!(exact_isqrt_nearest_64, u64);
+exact_isqrt_nearest!(exact_isqrt_nearest_128, u128);
+
+/// `round(√x)` for a 64-bit `x`. `I16F16`'s radicands fit 64 bits, and a 128-bit root costs a
+/// Cortex-M0 several times a 64-bit one.
+#[inline]
+pub(super) fn isqrt_nearest_64(x: u64) -> u64 {
+    if HARDWARE_SQRT {
+        float_isqrt_nearest_64(x)
+    } else {
+        exact_isqrt_nearest_64(x)
+    }
+}
+
+/// `round(√x)` for a 128-bit `x`.
+#[inline]
+pub(super) fn isqrt_nearest_128(x: u128) -> u128 {
+    if HARDWARE_SQRT {
+        float_isqrt_nearest_128(x)
+    } else {
+        exact_isqrt_nearest_128(x)
+    }
+}
+
+/// `round(√x)` from a float estimate of `√x`, made cheap to convert: `x` rounded down to even
+/// fits an `i64` (one instruction to `f64`, where `u64` takes six), and the estimate is capped
+/// at `u32::MAX` (four instructions back, where a `u64` takes fourteen).
+pub(super) fn float_isqrt_nearest_64(x: u64) -> u64 {
+    // Dropping the last bit moves √x down by under 0.42 for x >= 2 (and makes 0 of 1, whose
+    // root rounds to 1); the conversion and the square root add under 2^-20. The floor is then
+    // within [round(√x) − 1, round(√x)], and so is the cap: it applies only when
+    // round(√x) = 2^32.
+    let r = libm::sqrt((x >> 1) as i64 as f64 * 2.0) as u32 as u64;
+    // |x − r²| <= 2r + 1 < 2^34: the wrapped difference is the exact one.
+    let d = x.wrapping_sub(r * r) as i64;
+    if d > r as i64 { r + 1 } else { r }
+}
+
+/// `round(√x)` from a float estimate within 2^13 of `√x` and one Newton step (module docs).
+pub(super) fn float_isqrt_nearest_128(x: u128) -> u128 {
+    const P32: f64 = (1u64 << 32) as f64;
+    const P64: f64 = P32 * P32;
+    // `x` to `f64` in two halves, three roundings (core's conversion is a library call): the
+    // estimate is off √x by at most 2.5 · 2^-53 · 2^64 + 1 < 2^13; the cast saturates.
+    let r0 = libm::sqrt((x >> 64) as u64 as f64 * P64 + x as u64 as f64) as u64;
+    // x − r0² = (√x − r0)(√x + r0), below 2^13 · 2^65 in magnitude: exact as a wrapped `i128`,
+    // and its halves exact in `f64`, so their sum rounds once.
+    let d0 = x.wrapping_sub(r0 as u128 * r0 as u128) as i128;
+    let d0 = (d0 >> 32) as i64 as f64 * P32 + d0 as u32 as f64;
+    // The step lands at √x + (√x − r0)² / 2r0, above √x by less than 1/2 for every x (by under
+    // 2^-26 where the estimate is off by more than one), give or take 2^-37 of rounding: its
+    // floor is a valid estimate. Offset by 2^14 the step is positive and below 2^15, so `as`
+    // takes the floor (`u32`: a shorter conversion than `u64`).
+    let step = (d0 / (2.0 * r0.max(1) as f64) + 16384.0) as u32;
+    let r = (r0 as u128 + step as u128).wrapping_sub(16384);
+    // |x − r²| <= 2r + 1: exact as a wrapped `i128`.
+    let d = x.wrapping_sub(r.wrapping_mul(r)) as i128;
+    if d > r as i128 { r + 1 } else { r }
+}
+
+#[cfg(test)]
+mod tests;
