@@ -61,6 +61,15 @@
 //! so none comes later), which lets a cast give up early when the ball is still above the
 //! triangle's plane there.
 //!
+//! A short segment, no longer on any axis than the pad, is hardly thinner than its own box, so
+//! for it the slab test is replaced by a box walk: the segment's box up to the current reach,
+//! grown by the pad and rounded outward to cells, is compared with each child's box, grown by
+//! its seam margins, in integers — six comparisons per child and no floating point, which on a
+//! core without a floating-point unit (Cortex-M0) saves the software `f32` arithmetic of every
+//! node. Children are visited in the order of their centres along the motion's signs, nearest
+//! first; the box shrinks as contacts are found. Every box the padded segment enters meets its
+//! box, so the walk reaches every leaf the slab test does, and the answer is the same.
+//!
 //! Culling is conservative: a box is grown by `r`, by a bound on every rounding between the
 //! exact segment and what [`StandardTriangle::cast`](crate::StandardTriangle::cast) computes —
 //! `8 EPSILON` per unit of the path's largest component (a contact's alpha is rounded by up to
@@ -87,7 +96,7 @@ use crate::{Scalar, Triangle};
 pub use build::nodes_for;
 pub(crate) use build::{BuildError, build, item, key_index};
 pub(crate) use overlap::{overlapping, query_cells};
-pub(crate) use traverse::{Segment, rounding_pad, traverse, traverse_leaves};
+pub(crate) use traverse::{Segment, reach_limit, rounding_pad, traverse, traverse_leaves};
 
 /// Most triangles in a leaf.
 pub const LEAF: usize = 4;

@@ -3,7 +3,7 @@
 
 use crate::adjacency::link_all;
 use crate::bvh::{self, BuildError, Grid, MAX_TRIANGLES, Node, Segment};
-use crate::merge::earliest;
+use crate::merge::{Earliest, earliest};
 use crate::{Error, Features, Geometry, Parts, Scalar, SceneHit, StandardTriangle, Sweep};
 use crate::{Triangle, Vec3};
 use core::fmt;
@@ -346,27 +346,47 @@ impl<'a, S: Scalar> Mesh<'a, S> {
     /// short sweep.
     pub fn cast(&self, sweep: &Sweep<S>) -> Option<SceneHit<S>> {
         let seg = Segment::new(sweep, &self.grid);
+        let leaf = |acc: &mut Earliest<S>, slots: core::ops::Range<usize>, exit: f32| {
+            // A contact with a triangle of the leaf comes no later than where the segment
+            // leaves the leaf's grown box (`0 <= exit`, about 1 at most): a reach for
+            // `cast_within`, the next multiple of 2^-14 above it, exact in every scalar.
+            let exit = exit
+                .is_finite()
+                .then(|| S::div_pow2(S::from_int((exit * 16384.0) as i32 + 1), 14));
+            for s in slots {
+                let reach = match (exit, acc.reach()) {
+                    (Some(e), r) if e < r => e,
+                    (_, r) => r,
+                };
+                if let (Some(t), Some(&i)) = (self.triangles.get(s), self.order.get(s))
+                    && let Some(hit) = t.cast_within(sweep, reach)
+                {
+                    acc.offer(i as usize, hit);
+                }
+            }
+        };
         let mut sound = true;
         let hit = earliest(|acc| {
-            sound &= bvh::traverse_leaves(self.nodes, &self.grid, &seg, acc, |acc, slots, exit| {
-                // A contact with a triangle of the leaf comes no later than where the segment
-                // leaves the leaf's grown box (`0 <= exit`, about 1 at most): a reach for
-                // `cast_within`, the next multiple of 2^-14 above it, exact in every scalar.
-                let exit = exit
-                    .is_finite()
-                    .then(|| S::div_pow2(S::from_int((exit * 16384.0) as i32 + 1), 14));
-                for s in slots {
-                    let reach = match (exit, acc.reach()) {
-                        (Some(e), r) if e < r => e,
-                        (_, r) => r,
+            sound &= match seg.short_walk() {
+                Some(walk) => {
+                    // The box of the segment up to the reach, recomputed when the reach shrinks.
+                    let mut last = None;
+                    let query = |acc: &Earliest<S>| {
+                        let reach = acc.reach();
+                        match last {
+                            Some((r, cells)) if r == reach => cells,
+                            _ => {
+                                let cells = seg.cells(bvh::reach_limit(reach));
+                                last = Some((reach, cells));
+                                cells
+                            }
+                        }
                     };
-                    if let (Some(t), Some(&i)) = (self.triangles.get(s), self.order.get(s))
-                        && let Some(hit) = t.cast_within(sweep, reach)
-                    {
-                        acc.offer(i as usize, hit);
-                    }
+                    let leaf = |acc: &mut Earliest<S>, slots| leaf(acc, slots, f32::INFINITY);
+                    walk.run(self.nodes, &self.grid, acc, query, leaf)
                 }
-            });
+                None => bvh::traverse_leaves(self.nodes, &self.grid, &seg, acc, leaf),
+            };
         });
         if sound {
             return hit;

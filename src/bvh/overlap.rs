@@ -1,8 +1,11 @@
-//! The box query: the leaves whose boxes meet an axis-aligned box, for the queries that look at
-//! what lies around a point rather than along a path (penetration, winding).
+//! The box walk: the leaves whose boxes meet an axis-aligned box, in integer cells. It serves
+//! the queries that look at what lies around a point (penetration, winding), and short sweeps,
+//! whose padded segment is hardly smaller than its box: there it replaces the slab test's
+//! floating point by a few integer comparisons per child, which matters most on cores without
+//! a floating-point unit.
 
 use super::traverse::{child_cells, leaf_slots};
-use super::{Cells, Grid, Node, PAYLOAD, STACK};
+use super::{CLASS_SHIFT, Cells, Grid, LEAF_FLAG, MAX_CLASS, Node, PAYLOAD, STACK};
 use core::ops::Range;
 
 /// The cells that cover the box from `min` to `max` (world units, `min <= max`) on `grid`:
@@ -27,27 +30,85 @@ pub(crate) fn overlapping(
     if nodes.is_empty() || !meets((grid.lo, grid.hi)) {
         return true;
     }
-    let mut stack: heapless::Vec<(u32, [i32; 3]), STACK> = heapless::Vec::new();
-    let _ = stack.push((0, grid.lo));
-    let mut budget = 5 * nodes.len() + 5;
-    while let Some((child, lo)) = stack.pop() {
-        budget = match budget.checked_sub(1) {
-            Some(b) => b,
-            None => return false,
-        };
-        if let Some(slots) = leaf_slots(child) {
-            leaf(slots);
-            continue;
+    let walk = Walk {
+        toward: [0; 3],
+        seam: 0,
+    };
+    walk.run(nodes, grid, &mut (), |_| query, |_, slots| leaf(slots))
+}
+
+/// How a walk orders and grows the children it meets.
+pub(crate) struct Walk {
+    /// Per axis, the sign of the motion: children are visited by `toward · (lo + hi)` of their
+    /// boxes, smallest first, so along a path the nearest come first (all zero: tree order).
+    pub(crate) toward: [i32; 3],
+    /// The seam margin in whole cells, rounded up: a child's box is grown by `seam << class`
+    /// for the seam class of its subtree (see the [module docs](super)).
+    pub(crate) seam: i64,
+}
+
+impl Walk {
+    /// Calls `leaf` with the slots of every leaf whose box, grown by its seam margins, meets
+    /// the box `query` gives for `acc` when the leaf's parent is visited; `query` may shrink as
+    /// `leaf` changes `acc` (a sweep's reach), never grow. Returns false, having stopped, if
+    /// the tree is malformed.
+    pub(crate) fn run<A>(
+        &self,
+        nodes: &[Node],
+        grid: &Grid,
+        acc: &mut A,
+        mut query: impl FnMut(&A) -> Cells,
+        mut leaf: impl FnMut(&mut A, Range<usize>),
+    ) -> bool {
+        if nodes.is_empty() {
+            return true;
         }
-        let Some(node) = nodes.get((child & PAYLOAD) as usize) else {
-            return false;
-        };
-        for k in 0..(node.count as usize).min(4) {
-            let cells = child_cells(node, k, lo);
-            if meets(cells) && stack.push((node.children[k], cells.0)).is_err() {
+        let mut stack: heapless::Vec<(u32, [i32; 3]), STACK> = heapless::Vec::new();
+        let _ = stack.push((0, grid.lo));
+        let mut budget = 5 * nodes.len() + 5;
+        while let Some((child, lo)) = stack.pop() {
+            budget = match budget.checked_sub(1) {
+                Some(b) => b,
+                None => return false,
+            };
+            if let Some(slots) = leaf_slots(child) {
+                leaf(acc, slots);
+                continue;
+            }
+            let Some(node) = nodes.get((child & PAYLOAD) as usize) else {
                 return false;
+            };
+            let (qlo, qhi) = query(acc);
+            // Children that meet, by key, largest first: the stack pops the smallest first.
+            let mut met = [(0i64, 0usize); 4];
+            let mut n = 0;
+            for k in 0..(node.count as usize).min(4) {
+                let (clo, chi) = child_cells(node, k, lo);
+                let class = ((node.children[k] & !LEAF_FLAG) >> CLASS_SHIFT).min(MAX_CLASS);
+                let g = (self.seam << class).min(1 << 40);
+                let meets = (0..3).all(|a| {
+                    clo[a] as i64 - g <= qhi[a] as i64 && qlo[a] as i64 <= chi[a] as i64 + g
+                });
+                if meets {
+                    let key = (0..3)
+                        .map(|a| self.toward[a] as i64 * (clo[a] as i64 + chi[a] as i64))
+                        .sum::<i64>();
+                    let mut at = n;
+                    while at > 0 && met[at - 1].0 < key {
+                        met[at] = met[at - 1];
+                        at -= 1;
+                    }
+                    met[at] = (key, k);
+                    n += 1;
+                }
+            }
+            for &(_, k) in &met[..n] {
+                let cells = child_cells(node, k, lo);
+                if stack.push((node.children[k & 3], cells.0)).is_err() {
+                    return false;
+                }
             }
         }
+        true
     }
-    true
 }

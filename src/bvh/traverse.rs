@@ -1,6 +1,7 @@
 //! The swept-ball traversal: the segment against inflated child boxes, nearest child first
 //! (see the module docs of [`bvh`](super)).
 
+use super::overlap::Walk;
 use super::{CLASS_SHIFT, Cells, Grid, LEAF_FLAG, MAX_CLASS, Node, PAYLOAD, STACK};
 use crate::merge::Earliest;
 use crate::{Scalar, Sweep};
@@ -33,6 +34,8 @@ pub(crate) fn rounding_pad<S: Scalar>(r: f64, length: f64, magnitude: f64) -> f6
 /// so that a node costs only its own terms.
 pub(crate) struct Segment {
     q0: [f64; 3],
+    /// The segment's extent per axis, `p1 - p0` in cells.
+    d: [f64; 3],
     /// Per axis, the reciprocal of the segment's extent, `2^100` where that is below `2^-100`
     /// (parallel to the slab, as good as: the pad covers the difference), in `f64` and in `f32`
     /// (rounded to nearest), and the latter's magnitude: infinite where the extent exceeds
@@ -77,6 +80,7 @@ impl Segment {
         let inv32 = inv.map(|x| x as f32);
         Self {
             q0,
+            d,
             inv,
             inv32,
             slope: inv.map(|x| {
@@ -90,6 +94,29 @@ impl Segment {
             pad: up((pad * s + 2.0 + slack) * grow),
             seam: up(seam * s * grow).max(f32::MIN_POSITIVE),
         }
+    }
+
+    /// The box walk for this segment if it is short: no longer on any axis than the pad, so
+    /// that its box is hardly larger than the padded segment itself and integer box tests
+    /// (a few comparisons per child, no floating point) lose little to the slab test.
+    pub(crate) fn short_walk(&self) -> Option<Walk> {
+        let pad = self.pad as f64;
+        self.d.iter().all(|x| x.abs() <= pad).then(|| Walk {
+            toward: self.d.map(|x| (x > 0.0) as i32 - (x < 0.0) as i32),
+            seam: libm::ceil(self.seam as f64) as i64,
+        })
+    }
+
+    /// The cells of the segment's box over `[0, limit]`, grown by the pad, rounded outward and
+    /// grown by a cell (for this `f64` arithmetic), clamped to `±2^30`.
+    pub(crate) fn cells(&self, limit: f32) -> Cells {
+        let t = (limit as f64).clamp(0.0, 1.0);
+        let pad = self.pad as f64;
+        let bound = (1u64 << 30) as f64;
+        let end = |a: usize| self.q0[a] + self.d[a] * t;
+        let lo = [0, 1, 2].map(|a| (self.q0[a].min(end(a)) - pad).clamp(-bound, bound));
+        let hi = [0, 1, 2].map(|a| (self.q0[a].max(end(a)) + pad).clamp(-bound, bound));
+        Grid::cells(0, lo, hi)
     }
 
     /// Where the segment's line enters each of the four child boxes of `node` (whose own
@@ -135,6 +162,12 @@ impl Segment {
         });
         (enter, t1)
     }
+}
+
+/// The reach of the contacts found so far as a bound on the segment's parameter, rounded up
+/// (with room for the conversion).
+pub(crate) fn reach_limit<S: Scalar>(reach: S) -> f32 {
+    up(reach.to_f64() + 1.0 / (1u64 << 50) as f64)
 }
 
 /// The smallest `f32` not below `x` (`x` finite or infinite, not NaN).
@@ -218,7 +251,7 @@ pub(crate) fn traverse_leaves<S: Scalar>(
         return true;
     }
     // The reach as an `f32` bound on the node tests' parameter; it only changes at a leaf.
-    let limit = |acc: &Earliest<S>| up(acc.reach().to_f64() + 1.0 / (1u64 << 50) as f64);
+    let limit = |acc: &Earliest<S>| reach_limit(acc.reach());
     let mut lim = limit(acc);
     let mut stack: heapless::Vec<Entry, STACK> = heapless::Vec::new();
     let mut budget = 5 * nodes.len() + 5;
