@@ -85,7 +85,8 @@ impl Walk {
             for k in 0..(node.count as usize).min(4) {
                 let (clo, chi) = child_cells(node, k, lo);
                 let class = ((node.children[k] & !LEAF_FLAG) >> CLASS_SHIFT).min(MAX_CLASS);
-                let g = (self.seam << class).min(1 << 40);
+                // At most 2^31 << 31: no overflow, and more than any box's reach.
+                let g = self.seam.clamp(0, 1 << 31) << class;
                 let meets = (0..3).all(|a| {
                     clo[a] as i64 - g <= qhi[a] as i64 && qlo[a] as i64 <= chi[a] as i64 + g
                 });
