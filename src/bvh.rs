@@ -96,7 +96,7 @@ use crate::{Scalar, Triangle};
 pub use build::nodes_for;
 pub(crate) use build::{BuildError, build, item, key_index};
 pub(crate) use overlap::{overlapping, query_cells};
-pub(crate) use traverse::{Segment, reach_limit, rounding_pad, traverse, traverse_leaves};
+pub(crate) use traverse::{Segment, leaves_along, rounding_pad};
 
 /// Most triangles in a leaf.
 pub const LEAF: usize = 4;

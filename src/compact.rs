@@ -267,7 +267,7 @@ impl<'a, S: Scalar, I: MeshIndex> CompactMesh<'a, S, I> {
         };
         let mut sound = true;
         let hit = earliest(|acc: &mut Earliest<S>| {
-            sound &= bvh::traverse(self.nodes, &self.grid, &seg, acc, |acc, slots| {
+            sound &= bvh::leaves_along(self.nodes, &self.grid, &seg, acc, |acc, slots, _| {
                 for s in slots {
                     // The triangle's box and plane first: preparing costs far more.
                     let limit = S::to_f64(acc.reach()) + 1.0 / (1u64 << 50) as f64;

@@ -367,26 +367,7 @@ impl<'a, S: Scalar> Mesh<'a, S> {
         };
         let mut sound = true;
         let hit = earliest(|acc| {
-            sound &= match seg.short_walk() {
-                Some(walk) => {
-                    // The box of the segment up to the reach, recomputed when the reach shrinks.
-                    let mut last = None;
-                    let query = |acc: &Earliest<S>| {
-                        let reach = acc.reach();
-                        match last {
-                            Some((r, cells)) if r == reach => cells,
-                            _ => {
-                                let cells = seg.cells(bvh::reach_limit(reach));
-                                last = Some((reach, cells));
-                                cells
-                            }
-                        }
-                    };
-                    let leaf = |acc: &mut Earliest<S>, slots| leaf(acc, slots, f32::INFINITY);
-                    walk.run(self.nodes, &self.grid, acc, query, leaf)
-                }
-                None => bvh::traverse_leaves(self.nodes, &self.grid, &seg, acc, leaf),
-            };
+            sound &= bvh::leaves_along(self.nodes, &self.grid, &seg, acc, leaf);
         });
         if sound {
             return hit;

@@ -222,15 +222,35 @@ pub(crate) fn leaf_slots(child: u32) -> Option<core::ops::Range<usize>> {
     })
 }
 
-/// [`traverse_leaves`] for a caller that needs only each leaf's slots.
-pub(crate) fn traverse<S: Scalar>(
+/// The leaves a sweep may reach, nearest first: by the box walk where the segment is short
+/// ([`Segment::short_walk`]), else by [`traverse_leaves`], whose `leaf` arguments it takes (the
+/// walk gives no exit: infinity). Returns false if the tree is malformed.
+pub(crate) fn leaves_along<S: Scalar>(
     nodes: &[Node],
     grid: &Grid,
     seg: &Segment,
     acc: &mut Earliest<S>,
-    mut leaf: impl FnMut(&mut Earliest<S>, core::ops::Range<usize>),
+    mut leaf: impl FnMut(&mut Earliest<S>, core::ops::Range<usize>, f32),
 ) -> bool {
-    traverse_leaves(nodes, grid, seg, acc, |acc, slots, _| leaf(acc, slots))
+    let Some(walk) = seg.short_walk() else {
+        return traverse_leaves(nodes, grid, seg, acc, leaf);
+    };
+    // The box of the segment up to the reach, taken anew when the reach shrinks.
+    let mut last = None;
+    let query = |acc: &Earliest<S>| {
+        let reach = acc.reach();
+        match last {
+            Some((r, cells)) if r == reach => cells,
+            _ => {
+                let cells = seg.cells(reach_limit(reach));
+                last = Some((reach, cells));
+                cells
+            }
+        }
+    };
+    walk.run(nodes, grid, acc, query, |acc, slots| {
+        leaf(acc, slots, f32::INFINITY)
+    })
 }
 
 /// Visits the leaves the segment may reach within the current reach, nearest first, calling
