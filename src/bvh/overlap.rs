@@ -90,7 +90,9 @@ impl Walk {
                 let meets = (0..3).all(|a| {
                     clo[a] as i64 - g <= qhi[a] as i64 && qlo[a] as i64 <= chi[a] as i64 + g
                 });
-                if meets {
+                // `n < 4` always holds (one entry per child at most); said here so that no
+                // bounds check, and no panic path, is left in the insertion below.
+                if meets && n < met.len() {
                     let key = (0..3)
                         .map(|a| self.toward[a] as i64 * (clo[a] as i64 + chi[a] as i64))
                         .sum::<i64>();
@@ -103,7 +105,7 @@ impl Walk {
                     n += 1;
                 }
             }
-            for &(_, k) in &met[..n] {
+            for &(_, k) in met.iter().take(n) {
                 let cells = child_cells(node, k, lo);
                 if stack.push((node.children[k & 3], cells.0)).is_err() {
                     return false;
