@@ -68,7 +68,10 @@
 //! core without a floating-point unit (Cortex-M0) saves the software `f32` arithmetic of every
 //! node. Children are visited in the order of their centres along the motion's signs, nearest
 //! first; the box shrinks as contacts are found. Every box the padded segment enters meets its
-//! box, so the walk reaches every leaf the slab test does, and the answer is the same.
+//! box, so the walk reaches every leaf the slab test does, and the answer is the same. For a
+//! fixed-point scalar the walk's box is made from the coordinates' bits by integer shifts
+//! (a cell is a power of two of the scalar's steps), with the pad's terms rounded up, so a
+//! short sweep there needs no floating point at all.
 //!
 //! Culling is conservative: a box is grown by `r`, by a bound on every rounding between the
 //! exact segment and what [`StandardTriangle::cast`](crate::StandardTriangle::cast) computes —
@@ -89,6 +92,7 @@
 
 mod build;
 mod overlap;
+mod short;
 mod traverse;
 
 use crate::{Scalar, Triangle};
@@ -96,7 +100,7 @@ use crate::{Scalar, Triangle};
 pub use build::nodes_for;
 pub(crate) use build::{BuildError, build, item, key_index};
 pub(crate) use overlap::{overlapping, query_cells};
-pub(crate) use traverse::{Segment, leaves_along, rounding_pad};
+pub(crate) use traverse::{leaves_along, rounding_pad};
 
 /// Most triangles in a leaf.
 pub const LEAF: usize = 4;

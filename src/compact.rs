@@ -15,7 +15,7 @@
 //! Preparing costs a few hundred instructions per triangle reached: a query costs more than on
 //! the prepared mesh, in exchange for a sixth of the memory.
 
-use crate::bvh::{self, Grid, Node, Segment};
+use crate::bvh::{self, Grid, Node};
 use crate::cull::Path;
 use crate::merge::{Earliest, earliest};
 use crate::scalar::{largest, smallest};
@@ -255,7 +255,6 @@ impl<'a, S: Scalar, I: MeshIndex> CompactMesh<'a, S, I> {
 
     /// The earliest contact along the sweep: the prepared mesh's answer, bit for bit.
     pub fn cast(&self, sweep: &Sweep<S>) -> Option<SceneHit<S>> {
-        let seg = Segment::new(sweep, &self.grid);
         let cells = self.grid.lo.iter().chain(&self.grid.hi);
         let extent =
             cells.fold(0.0f64, |m, &c| m.max((c as f64).abs())) / Grid::scale(self.grid.exponent);
@@ -267,7 +266,7 @@ impl<'a, S: Scalar, I: MeshIndex> CompactMesh<'a, S, I> {
         };
         let mut sound = true;
         let hit = earliest(|acc: &mut Earliest<S>| {
-            sound &= bvh::leaves_along(self.nodes, &self.grid, &seg, acc, |acc, slots, _| {
+            sound &= bvh::leaves_along(self.nodes, &self.grid, sweep, acc, |acc, slots, _| {
                 for s in slots {
                     // The triangle's box and plane first: preparing costs far more.
                     let limit = S::to_f64(acc.reach()) + 1.0 / (1u64 << 50) as f64;

@@ -2,7 +2,7 @@
 //! `static` in flash, a caller's buffer, `Vec`s on a PC), answering exactly as a linear scan.
 
 use crate::adjacency::link_all;
-use crate::bvh::{self, BuildError, Grid, MAX_TRIANGLES, Node, Segment};
+use crate::bvh::{self, BuildError, Grid, MAX_TRIANGLES, Node};
 use crate::merge::{Earliest, earliest};
 use crate::{Error, Features, Geometry, Parts, Scalar, SceneHit, StandardTriangle, Sweep};
 use crate::{Triangle, Vec3};
@@ -345,7 +345,6 @@ impl<'a, S: Scalar> Mesh<'a, S> {
     /// prepared triangles in input order, bit for bit, found in `O(log N)` node visits for a
     /// short sweep.
     pub fn cast(&self, sweep: &Sweep<S>) -> Option<SceneHit<S>> {
-        let seg = Segment::new(sweep, &self.grid);
         let leaf = |acc: &mut Earliest<S>, slots: core::ops::Range<usize>, exit: f32| {
             // A contact with a triangle of the leaf comes no later than where the segment
             // leaves the leaf's grown box (`0 <= exit`, about 1 at most): a reach for
@@ -367,7 +366,7 @@ impl<'a, S: Scalar> Mesh<'a, S> {
         };
         let mut sound = true;
         let hit = earliest(|acc| {
-            sound &= bvh::leaves_along(self.nodes, &self.grid, &seg, acc, leaf);
+            sound &= bvh::leaves_along(self.nodes, &self.grid, sweep, acc, leaf);
         });
         if sound {
             return hit;

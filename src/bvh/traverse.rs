@@ -2,6 +2,7 @@
 //! (see the module docs of [`bvh`](super)).
 
 use super::overlap::Walk;
+use super::short::ShortBox;
 use super::{CLASS_SHIFT, Cells, Grid, LEAF_FLAG, MAX_CLASS, Node, PAYLOAD, STACK};
 use crate::merge::Earliest;
 use crate::{Scalar, Sweep};
@@ -223,34 +224,47 @@ pub(crate) fn leaf_slots(child: u32) -> Option<core::ops::Range<usize>> {
 }
 
 /// The leaves a sweep may reach, nearest first: by the box walk where the segment is short
-/// ([`Segment::short_walk`]), else by [`traverse_leaves`], whose `leaf` arguments it takes (the
-/// walk gives no exit: infinity). Returns false if the tree is malformed.
+/// ([`ShortBox`] for fixed point, [`Segment::short_walk`] for floats), else by
+/// [`traverse_leaves`], whose `leaf` arguments it takes (the walk gives no exit: infinity).
+/// Returns false if the tree is malformed.
 pub(crate) fn leaves_along<S: Scalar>(
     nodes: &[Node],
     grid: &Grid,
-    seg: &Segment,
+    sweep: &Sweep<S>,
     acc: &mut Earliest<S>,
     mut leaf: impl FnMut(&mut Earliest<S>, core::ops::Range<usize>, f32),
 ) -> bool {
-    let Some(walk) = seg.short_walk() else {
-        return traverse_leaves(nodes, grid, seg, acc, leaf);
-    };
-    // The box of the segment up to the reach, taken anew when the reach shrinks.
-    let mut last = None;
-    let query = |acc: &Earliest<S>| {
+    let leaf_of_walk = |acc: &mut Earliest<S>, slots| leaf(acc, slots, f32::INFINITY);
+    if let Some((short, walk)) = ShortBox::new(sweep, grid) {
+        return walk.run(nodes, grid, acc, cached(|r| short.cells(r)), leaf_of_walk);
+    }
+    let seg = Segment::new(sweep, grid);
+    match seg.short_walk() {
+        Some(walk) => walk.run(
+            nodes,
+            grid,
+            acc,
+            cached(|r| seg.cells(reach_limit(r))),
+            leaf_of_walk,
+        ),
+        None => traverse_leaves(nodes, grid, &seg, acc, leaf),
+    }
+}
+
+/// The query box of a walk: `cells` of the reach, taken anew only when the reach changes.
+fn cached<S: Scalar>(cells: impl Fn(S) -> Cells) -> impl FnMut(&Earliest<S>) -> Cells {
+    let mut last: Option<(S, Cells)> = None;
+    move |acc: &Earliest<S>| {
         let reach = acc.reach();
         match last {
-            Some((r, cells)) if r == reach => cells,
+            Some((r, c)) if r == reach => c,
             _ => {
-                let cells = seg.cells(reach_limit(reach));
-                last = Some((reach, cells));
-                cells
+                let c = cells(reach);
+                last = Some((reach, c));
+                c
             }
         }
-    };
-    walk.run(nodes, grid, acc, query, |acc, slots| {
-        leaf(acc, slots, f32::INFINITY)
-    })
+    }
 }
 
 /// Visits the leaves the segment may reach within the current reach, nearest first, calling

@@ -282,6 +282,10 @@ macro_rules! fixed_scalar {
             fn from_int(n: i32) -> Self {
                 <$t>::saturating_from_num(n)
             }
+            #[inline]
+            fn fixed_bits(self) -> Option<(i64, u32)> {
+                Some((self.to_bits() as i64, $frac))
+            }
         }
     };
 }

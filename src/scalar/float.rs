@@ -177,6 +177,10 @@ macro_rules! float_scalar {
             fn from_int(n: i32) -> Self {
                 n as Self
             }
+            #[inline]
+            fn fixed_bits(self) -> Option<(i64, u32)> {
+                None
+            }
         }
     };
 }

@@ -162,6 +162,9 @@ pub(crate) mod sealed {
         /// The integer `n`, saturated at the range (exact for fixed-point within it, and for
         /// floats up to their mantissa): a grid index, with no float conversion and no panic.
         fn from_int(n: i32) -> Self;
+        /// For fixed point, the value's bits and its fractional bits (the value is
+        /// `bits / 2^frac`); `None` for floats.
+        fn fixed_bits(self) -> Option<(i64, u32)>;
     }
 }
 
