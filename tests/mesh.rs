@@ -371,7 +371,8 @@ fn slides_as_linear<S: Scalar>() {
 
 /// Found by the 10^5-sweep run: a sliver whose long edge is inactive (here flat with its
 /// neighbour) stretches its face test's seam margin far along its active edge, so `cast` reports
-/// a face contact two units beyond the sliver's corner; the tree's boxes must reach it too.
+/// a face contact two units beyond the sliver's corner; the tree's boxes must reach it too, on
+/// the slab traversal (a long fall) and on the box walk (a short step down).
 fn sliver_seam_beyond_its_corner<S: Scalar>() {
     let floor = [[0.0, 0.0, 0.0], [0.0, 0.0, 1.0], [10.0, 0.0, 0.0]];
     let sliver = [[0.0, 0.0, 0.0], [10.0, 0.0, 0.0], [5.0, 0.0, -0.01]];
@@ -379,19 +380,21 @@ fn sliver_seam_beyond_its_corner<S: Scalar>() {
     let input: Vec<Triangle<S>> = src.iter().map(|&t| tri(t)).collect();
     let owned = build(&input, Degenerates::Refuse).unwrap();
     let linear = owned.linear();
-    let sweep = Sweep::new(
-        v::<S>([-2.0, 1.0, 0.006]),
-        v([-2.0, -1.0, 0.006]),
-        S::from_f64(0.5),
-    );
-    let sweep = sweep.unwrap();
-    let want = Geometry::cast(linear.as_slice(), &sweep);
-    assert_eq!(
-        want.map(|h| h.index),
-        Some(1),
-        "the linear scan's far contact"
-    );
-    assert_eq!(owned.mesh().cast(&sweep), want);
+    for (from, to) in [(1.0, -1.0), (0.6, 0.4)] {
+        let sweep = Sweep::new(
+            v::<S>([-2.0, from, 0.006]),
+            v([-2.0, to, 0.006]),
+            S::from_f64(0.5),
+        );
+        let sweep = sweep.unwrap();
+        let want = Geometry::cast(linear.as_slice(), &sweep);
+        assert_eq!(
+            want.map(|h| h.index),
+            Some(1),
+            "the linear scan's far contact"
+        );
+        assert_eq!(owned.mesh().cast(&sweep), want, "from y = {from}");
+    }
 }
 
 /// `Mesh::verify`, the check for baked parts: a mesh from `from_parts` passes against its
