@@ -397,6 +397,35 @@ fn sliver_seam_beyond_its_corner<S: Scalar>() {
     }
 }
 
+/// A short step (shorter than the radius, so the box walk takes it) that touches a wall only at
+/// its very end: the walk's box must hold the whole step while nothing is found, and a box cut
+/// short of the end (a quarter off) loses the contact.
+fn short_step_touching_at_its_end<S: Scalar>() {
+    let mut rng = Rng(0x5eed_0011);
+    let mut src = heightfield(&mut rng, 4, 1.0, 0.2);
+    let wall = [
+        [0.0, -1.0, -1.0],
+        [0.0, 1.0, -1.0],
+        [0.0, 1.0, 1.0],
+        [0.0, -1.0, 1.0],
+    ];
+    // Facing −x, towards the ball.
+    src.push([wall[0], wall[2], wall[1]]);
+    src.push([wall[0], wall[3], wall[2]]);
+    let input: Vec<Triangle<S>> = src.iter().map(|&t| tri(t)).collect();
+    let owned = build(&input, Degenerates::Refuse).unwrap();
+    let linear = owned.linear();
+    let sweep = Sweep::new(
+        v::<S>([-0.45, 0.5, 0.1]),
+        v([-0.2499, 0.5, 0.1]),
+        S::from_f64(0.25),
+    );
+    let sweep = sweep.unwrap();
+    let want = Geometry::cast(linear.as_slice(), &sweep);
+    assert!(want.is_some_and(|h| h.alpha.to_f64() > 0.99), "{want:?}");
+    assert_eq!(owned.mesh().cast(&sweep), want);
+}
+
 /// `Mesh::verify`, the check for baked parts: a mesh from `from_parts` passes against its
 /// triangles, and fails once a triangle of the input differs.
 fn verify_baked_parts<S: Scalar>() {
@@ -432,6 +461,7 @@ meshes::per_scalar!(
     errors_not_panics,
     slides_as_linear,
     sliver_seam_beyond_its_corner,
+    short_step_touching_at_its_end,
     verify_baked_parts,
     matches_linear_scan_long #[ignore = "10^5 sweeps per scalar: run with --release -- --ignored"],
 );
