@@ -135,6 +135,8 @@ pub mod sweep;
 pub mod triangle;
 pub mod vec3;
 pub mod winding;
+#[cfg(test)]
+mod xorshift;
 
 pub use bvh::{Grid, Node};
 pub use compact::{CompactError, CompactMesh, MeshIndex};

@@ -3,7 +3,6 @@
 //! that are not the mesh's are errors. Every property in every scalar.
 
 mod common;
-#[allow(dead_code)] // the mesh tests use the rest
 mod meshes;
 
 use ballcast::penetration::penetration;
@@ -14,25 +13,7 @@ use ballcast::{
 };
 use common::{P, Rng, v};
 use fixed::types::{I16F16, I32F32};
-use meshes::{boxes, build, heightfield, soup, tri};
-use std::collections::HashMap;
-
-/// Shared vertices (exact coordinates merged) and index triples of a triangle list.
-fn indexed<S: Scalar>(src: &[[P; 3]]) -> (Vec<Vec3<S>>, Vec<[u32; 3]>) {
-    let (mut vertices, mut seen) = (Vec::new(), HashMap::new());
-    let indices = src
-        .iter()
-        .map(|t| {
-            t.map(|p| {
-                *seen.entry(p.map(f64::to_bits)).or_insert_with(|| {
-                    vertices.push(v::<S>(p));
-                    vertices.len() as u32 - 1
-                })
-            })
-        })
-        .collect();
-    (vertices, indices)
-}
+use meshes::{boxes, build, heightfield, indexed, soup, tri};
 
 fn matches_prepared_mesh<S: Scalar>() {
     let mut rng = Rng(0xc0_4ac7);

@@ -4,7 +4,6 @@
 //! scalar.
 
 mod common;
-#[allow(dead_code)] // the mesh tests use the rest
 mod meshes;
 
 use ballcast::{

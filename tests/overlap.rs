@@ -3,7 +3,6 @@
 //! expected values worked by hand.
 
 mod common;
-#[allow(dead_code)] // the mesh builder only
 mod meshes;
 
 use ballcast::{Contact, Geometry, Scalar, Scene, Triangle, move_and_slide, penetration, winding};

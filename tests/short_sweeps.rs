@@ -6,31 +6,12 @@
 //! every scalar.
 
 mod common;
-#[allow(dead_code)] // the mesh tests use the rest
 mod meshes;
 
-use ballcast::{CompactMesh, Degenerates, Geometry, Scalar, SceneHit, Sweep, Triangle, Vec3};
+use ballcast::{CompactMesh, Degenerates, Scalar, Sweep, Triangle};
 use common::{P, Rng, add, cross, norm, scale, sub, v};
 use fixed::types::{I16F16, I32F32};
-use meshes::{boxes, build, heightfield, soup, tri};
-use std::collections::HashMap;
-
-/// Shared vertices (exact coordinates merged) and index triples of a triangle list.
-fn indexed<S: Scalar>(src: &[[P; 3]]) -> (Vec<Vec3<S>>, Vec<[u32; 3]>) {
-    let (mut vertices, mut seen) = (Vec::new(), HashMap::new());
-    let indices = src
-        .iter()
-        .map(|t| {
-            t.map(|p| {
-                *seen.entry(p.map(f64::to_bits)).or_insert_with(|| {
-                    vertices.push(v::<S>(p));
-                    vertices.len() as u32 - 1
-                })
-            })
-        })
-        .collect();
-    (vertices, indices)
-}
+use meshes::{boxes, build, heightfield, indexed, soup, tri};
 
 /// A unit vector square to `u`.
 fn square_to(rng: &mut Rng, u: P) -> P {
@@ -133,10 +114,7 @@ fn short_sweep(rng: &mut Rng, src: &[[P; 3]], unit: f64, k: usize) -> (P, P, f64
 fn check<S: Scalar>(rng: &mut Rng, src: &[[P; 3]], unit: f64, sweeps: usize) -> usize {
     let input: Vec<Triangle<S>> = src.iter().map(|&t| tri(t)).collect();
     let owned = build(&input, Degenerates::Skip).unwrap();
-    let mesh = owned.mesh();
-    let linear = owned.linear();
-    let mut kept: Vec<u32> = owned.order.clone();
-    kept.sort();
+    let (mesh, reference) = (owned.mesh(), owned.reference());
     let (vertices, indices) = indexed::<S>(src);
     let n = mesh.len();
     let (mut t, mut o, mut b) = (vec![[0u32; 3]; n], vec![0u32; n], vec![0u8; n]);
@@ -149,11 +127,7 @@ fn check<S: Scalar>(rng: &mut Rng, src: &[[P; 3]], unit: f64, sweeps: usize) -> 
         let Ok(sweep) = Sweep::new(v::<S>(p0), v(p1), S::from_f64(r)) else {
             continue;
         };
-        let got = mesh.cast(&sweep);
-        let want = Geometry::cast(linear.as_slice(), &sweep).map(|h| SceneHit {
-            index: kept[h.index] as usize,
-            ..h
-        });
+        let (got, want) = (mesh.cast(&sweep), reference(&sweep));
         let what = format!("sweep {k}: {p0:?} -> {p1:?}, r {r:e}");
         assert_eq!(got, want, "mesh, {what}");
         if let Some(c) = &compact {

@@ -4,7 +4,6 @@
 //! scene). A property test per entry point, in every scalar.
 
 mod common;
-#[allow(dead_code)] // the mesh builder only
 mod meshes;
 
 use ballcast::{

@@ -2,17 +2,7 @@
 
 use fixed::types::{I16F16, I32F32};
 
-/// A xorshift stream.
-struct Rng(u64);
-
-impl Rng {
-    fn next(&mut self) -> u64 {
-        self.0 ^= self.0 << 13;
-        self.0 ^= self.0 >> 7;
-        self.0 ^= self.0 << 17;
-        self.0
-    }
-}
+use crate::xorshift::Rng;
 
 /// `to_f64` is `to_num::<f64>()`: every `I16F16` is exact either way; `I32F32` values with more
 /// than 53 significant bits round, ties to even, the same way in both.

@@ -4,22 +4,7 @@
 use super::{Edge, StandardTriangle, Triangle};
 use crate::{Scalar, Vec3};
 
-/// A xorshift stream.
-struct Rng(u64);
-
-impl Rng {
-    fn next(&mut self) -> u64 {
-        self.0 ^= self.0 << 13;
-        self.0 ^= self.0 >> 7;
-        self.0 ^= self.0 << 17;
-        self.0
-    }
-
-    /// Uniform in `[-1, 1)`.
-    fn signed(&mut self) -> f64 {
-        (self.next() >> 11) as f64 / (1u64 << 52) as f64 - 1.0
-    }
-}
+use crate::xorshift::Rng;
 
 /// `direction` of `(−len, 0, 0)` is `len` and `(direction_neg_x(len), 0, 0)` for every `len`
 /// the frame can hold, from `4 * LIMIT` down to the smallest positive value (floats: down

@@ -1,12 +1,16 @@
-//! Shared by `tests/mesh.rs`: a mesh's parts in `Vec`s, the generators of heightfields, closed
-//! boxes and soups, and the check of a mesh against the linear scan.
+//! Shared by the tests of meshes and their forms: a mesh's parts in `Vec`s, the generators of
+//! heightfields, closed boxes and soups, indexed vertices, and the check of a mesh against the
+//! linear scan.
+
+#![allow(dead_code)] // each test binary uses a different part
 
 use crate::common::{P, Rng, v};
 use ballcast::bvh::nodes_for;
 use ballcast::{
     Degenerates, Geometry, Grid, Mesh, MeshError, Node, Scalar, SceneHit, StandardTriangle, Sweep,
-    Triangle,
+    Triangle, Vec3,
 };
+use std::collections::HashMap;
 
 /// A mesh's parts in `Vec`s.
 pub struct Owned<S: Scalar> {
@@ -32,6 +36,19 @@ impl<S: Scalar> Owned<S> {
         by_input.sort_by_key(|p| p.0);
         by_input.into_iter().map(|p| p.1).collect()
     }
+
+    /// The linear scan's answer to `sweep`, with the input index (of the kept triangles).
+    pub fn reference(&self) -> impl Fn(&Sweep<S>) -> Option<SceneHit<S>> {
+        let linear = self.linear();
+        let mut kept = self.order.clone();
+        kept.sort();
+        move |sweep: &Sweep<S>| {
+            Geometry::cast(linear.as_slice(), sweep).map(|h| SceneHit {
+                index: kept[h.index] as usize,
+                ..h
+            })
+        }
+    }
 }
 
 pub fn build<S: Scalar>(src: &[Triangle<S>], deg: Degenerates) -> Result<Owned<S>, MeshError> {
@@ -51,6 +68,23 @@ pub fn build<S: Scalar>(src: &[Triangle<S>], deg: Degenerates) -> Result<Owned<S
         order,
         grid,
     })
+}
+
+/// Shared vertices (exact coordinates merged) and index triples of a triangle list.
+pub fn indexed<S: Scalar>(src: &[[P; 3]]) -> (Vec<Vec3<S>>, Vec<[u32; 3]>) {
+    let (mut vertices, mut seen) = (Vec::new(), HashMap::new());
+    let indices = src
+        .iter()
+        .map(|t| {
+            t.map(|p| {
+                *seen.entry(p.map(f64::to_bits)).or_insert_with(|| {
+                    vertices.push(v::<S>(p));
+                    vertices.len() as u32 - 1
+                })
+            })
+        })
+        .collect();
+    (vertices, indices)
 }
 
 pub fn tri<S: Scalar>(t: [P; 3]) -> Triangle<S> {
@@ -189,21 +223,14 @@ pub fn against_linear_by<S: Scalar>(
 ) {
     let input: Vec<Triangle<S>> = src.iter().map(|&t| tri(t)).collect();
     let owned = build(&input, Degenerates::Skip).unwrap();
-    let mesh = owned.mesh();
-    let linear = owned.linear();
-    let mut kept: Vec<u32> = owned.order.clone();
-    kept.sort();
+    let (mesh, reference) = (owned.mesh(), owned.reference());
     let mut hits = 0;
     for k in 0..sweeps {
         let (p0, p1, r) = sweep(rng, k);
         let Ok(sweep) = Sweep::new(v::<S>(p0), v(p1), S::from_f64(r)) else {
             continue;
         };
-        let got = mesh.cast(&sweep);
-        let want = Geometry::cast(linear.as_slice(), &sweep).map(|h| SceneHit {
-            index: kept[h.index] as usize,
-            ..h
-        });
+        let (got, want) = (mesh.cast(&sweep), reference(&sweep));
         assert_eq!(got, want, "sweep {k}: {p0:?} -> {p1:?}, r {r}");
         hits += got.is_some() as usize;
     }

@@ -6,17 +6,7 @@ use super::{
     float_isqrt_nearest_128,
 };
 
-/// A xorshift stream, for operands spread over every magnitude.
-struct Rng(u64);
-
-impl Rng {
-    fn next(&mut self) -> u64 {
-        self.0 ^= self.0 << 13;
-        self.0 ^= self.0 >> 7;
-        self.0 ^= self.0 << 17;
-        self.0
-    }
-}
+use crate::xorshift::Rng;
 
 /// `k² + j` for `j` in `-2..=2`, and the rounding boundaries `k² + k` and `k² + k + 1`, kept
 /// to those that fit: the operands where an estimate off by one would show.
