@@ -45,6 +45,9 @@ fn shift_up(v: i64, s: i32) -> Option<i64> {
     shift_down(v.checked_neg()?, s)?.checked_neg()
 }
 
+/// Where the cells are clamped: beyond every grid (built grids lie within about `±2^25`).
+const BOUND: i64 = 1 << 30;
+
 impl ShortBox {
     /// The sweep in units of its fixed-point scalar, with the walk that goes with it, if the
     /// scalar is fixed point and the sweep short: no longer on any axis than the pad. `None`
@@ -120,7 +123,6 @@ impl ShortBox {
 
     /// The cells of the box over `[0, t / 2^frac]`, `0 <= t <= 2^frac`; `None` on overflow.
     fn box_at(&self, t: i64) -> Option<Cells> {
-        let bound = 1i64 << 30;
         let f = self.frac as i32;
         let side = |a: usize, up: bool| -> Option<i32> {
             let moved = small_product(self.d[a], t)?;
@@ -131,7 +133,8 @@ impl ShortBox {
                 let end = self.p0[a].checked_add(shift_down(moved, f)?)?;
                 shift_down(self.p0[a].min(end).checked_sub(self.pad)?, self.shift)? - 2
             };
-            Some(cell.clamp(-bound, bound) as i32)
+            // Constant bounds: `clamp`'s check that they are ordered folds away (no panic path).
+            Some(cell.clamp(-BOUND, BOUND) as i32)
         };
         Some((
             [side(0, false)?, side(1, false)?, side(2, false)?],
