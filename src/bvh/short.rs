@@ -111,13 +111,13 @@ impl ShortBox {
     }
 
     /// The cells of the segment's box over `[0, reach]` (`reach` clamped to `[0, 1]`), grown by
-    /// the pad and by two cells, clamped to `±2^30`.
+    /// the pad and by two cells, clamped to `±BOUND`.
     pub(crate) fn cells<S: Scalar>(&self, reach: S) -> Cells {
         let one = 1i64 << self.frac;
         let t = reach.fixed_bits().map_or(one, |(b, _)| b.max(0).min(one));
         // `new` made sure the whole segment's box converts, and a shorter one's terms are
         // smaller; were it not so, the whole grid.
-        let all = ([-(1 << 30); 3], [1 << 30; 3]);
+        let all = ([-BOUND as i32; 3], [BOUND as i32; 3]);
         self.box_at(t).or_else(|| self.box_at(one)).unwrap_or(all)
     }
 
