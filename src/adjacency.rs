@@ -52,16 +52,20 @@ const HASH_BITS: u32 = 23;
 /// the other (identical copies of a triangle add none). A run of two (a manifold edge) is not
 /// compared at once: its later slot notes the earlier one, and the comparisons are made in slot
 /// order, so the prepared triangles are read in order, as the cache likes.
+///
+/// Then marks each triangle's open edges in the top bits of its `order` entry (see
+/// [`open_edges`]): those still active that share their vertex pair with no opposite edge, such
+/// as an edge along a T-junction or the mesh's border.
 pub(crate) fn link_all<S: Scalar>(
     sources: &[Triangle<S>],
-    order: &[u32],
+    order: &mut [u32],
     triangles: &mut [StandardTriangle<S>],
     records: &mut [u64],
 ) {
     let n = triangles.len().min(order.len());
     let (records, temp) = records.split_at_mut(records.len().min(3 * n));
     let mut used = 0;
-    for (slots, i) in records.chunks_exact_mut(3).zip(order).take(n) {
+    for (slots, i) in records.chunks_exact_mut(3).zip(order.iter()).take(n) {
         let Some(v) = sources.get(*i as usize).map(Triangle::vertices) else {
             return;
         };
@@ -80,7 +84,8 @@ pub(crate) fn link_all<S: Scalar>(
     let records = &mut records[..used];
     // Records are made in slot order, so a stable sort on the hash and direction sorts them fully.
     crate::radix::sort(records, temp, SLOT_BITS, SLOT_BITS + 1 + HASH_BITS);
-    // `earlier[s]`: one more than the slot of the edge a manifold edge `s` meets, or zero.
+    // `earlier[s]`: one more than the slot of the edge a manifold edge `s` meets, or zero;
+    // and the flag `PAIRED` once the edge is found to share its vertex pair with another.
     let Some(earlier) = temp.get_mut(..used) else {
         return;
     };
@@ -104,28 +109,60 @@ pub(crate) fn link_all<S: Scalar>(
         } else {
             for &x in &run[..split] {
                 for &y in &run[split..] {
-                    link(sources, order, triangles, slot(x), slot(y));
+                    if link(sources, order, triangles, slot(x), slot(y)) {
+                        paired(earlier, slot(x));
+                        paired(earlier, slot(y));
+                    }
                 }
             }
         }
         start = end;
     }
-    for (b, &a) in earlier.iter().enumerate() {
-        if a != 0 {
-            link(sources, order, triangles, a as usize - 1, b);
+    for b in 0..used {
+        let a = earlier.get(b).map_or(0, |&a| (a & !PAIRED) as usize);
+        if a != 0 && link(sources, order, triangles, a - 1, b) {
+            paired(earlier, a - 1);
+            paired(earlier, b);
         }
+    }
+    let marks = earlier.chunks_exact(3).zip(triangles.iter());
+    for (o, (flags, t)) in order.iter_mut().zip(marks) {
+        let mask = (0..3).fold(0, |m, e| {
+            let lone = flags[e] & PAIRED == 0 && t.features().edge(e);
+            m | (lone as u32) << e
+        });
+        *o |= mask << OPEN_SHIFT;
+    }
+}
+
+/// Where [`link_all`] marks a triangle's open edges in its `order` entry: the three bits from
+/// here up (input indices are below `2^28`).
+const OPEN_SHIFT: u32 = 29;
+
+/// An `order` entry marked by [`link_all`]: the input index and the open edges' mask.
+pub(crate) fn open_edges(entry: u32) -> (u32, u8) {
+    (entry & ((1 << OPEN_SHIFT) - 1), (entry >> OPEN_SHIFT) as u8)
+}
+
+/// The flag of an edge slot in `link_all`'s `earlier` that shares its vertex pair.
+const PAIRED: u64 = 1 << 63;
+
+/// Flags edge slot `s` as sharing its vertex pair with an opposite edge.
+fn paired(earlier: &mut [u64], s: usize) {
+    if let Some(e) = earlier.get_mut(s) {
+        *e |= PAIRED;
     }
 }
 
 /// Compares the edges in slots `sx` and `sy` exactly and deactivates them where one hides the
-/// other.
+/// other; returns whether they share their vertex pair (in opposite directions).
 fn link<S: Scalar>(
     sources: &[Triangle<S>],
     order: &[u32],
     triangles: &mut [StandardTriangle<S>],
     sx: usize,
     sy: usize,
-) {
+) -> bool {
     // `a` is the later triangle, as in `Scene::push`.
     let ((a, i), (b, j)) = if sx > sy {
         ((sx / 3, sx % 3), (sy / 3, sy % 3))
@@ -134,7 +171,7 @@ fn link<S: Scalar>(
     };
     let source = |c: usize| order.get(c).and_then(|&k| sources.get(k as usize));
     let (Some(ta), Some(tb)) = (source(a), source(b)) else {
-        return;
+        return false;
     };
     // Vertex k of a source, read in place (no copy of the three).
     let at = |t: &Triangle<S>, k: usize| match k % 3 {
@@ -143,15 +180,16 @@ fn link<S: Scalar>(
         _ => t.v2,
     };
     if a == b || at(ta, i) != at(tb, j + 1) || at(ta, i + 1) != at(tb, j) {
-        return;
+        return false;
     }
     let (Some(pa), Some(pb)) = (triangles.get(a), triangles.get(b)) else {
-        return;
+        return false;
     };
     if hides(pa, pb, at(tb, j + 2)) {
         deactivate(&mut triangles[a], i);
         deactivate(&mut triangles[b], j);
     }
+    true
 }
 
 /// Orders points by x, then y, then z (validated, so never NaN).

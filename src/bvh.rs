@@ -98,9 +98,9 @@ mod traverse;
 use crate::{Scalar, Triangle};
 
 pub use build::nodes_for;
-pub(crate) use build::{BuildError, build, item, key_index};
+pub(crate) use build::{BuildError, build, item, key_index, set_classes};
 pub(crate) use overlap::{overlapping, query_cells};
-pub(crate) use traverse::{leaves_along, rounding_pad};
+pub(crate) use traverse::{leaf_slots, leaves_along, rounding_pad};
 
 /// Most triangles in a leaf.
 pub const LEAF: usize = 4;
@@ -166,6 +166,18 @@ pub(crate) fn seam_class(all_active: bool, [x1, z1, x2]: [f64; 3]) -> u32 {
     let bits = f.to_bits();
     let exponent = ((bits >> 52) & 0x7ff) as u32 - 1023;
     exponent + (bits & ((1 << 52) - 1) != 0) as u32
+}
+
+/// The seam class of the subtree a child reference (of a [`Node`]) leads to.
+pub(crate) fn class_bits(child: u32) -> u32 {
+    (child >> CLASS_SHIFT) & MAX_CLASS
+}
+
+/// The [`seam_class`] of a prepared triangle, by its active edges and its shape.
+pub(crate) fn class_of<S: crate::Scalar>(t: &crate::StandardTriangle<S>) -> u32 {
+    let all_active = (0..3).all(|e| t.features().edge(e));
+    let [_, b, c] = t.vertices();
+    seam_class(all_active, [b.x, b.z, c.x].map(S::to_f64))
 }
 
 /// A 4-wide node: child boxes quantized to bytes relative to this node's own box.

@@ -196,10 +196,7 @@ impl<'a, S: Scalar, I: MeshIndex> CompactMesh<'a, S, I> {
             if again.to_parts() != prepared.to_parts() {
                 return Err(mismatch);
             }
-            let all_active = (0..3).all(|e| prepared.features().edge(e));
-            let [_, b, c] = prepared.vertices();
-            let shape = [b.x, b.z, c.x].map(S::to_f64);
-            class = class.max(bvh::seam_class(all_active, shape) as u8);
+            class = class.max(bvh::class_of(prepared) as u8);
             triangles[s] = corners.map(|c| I::from_usize(c as usize));
             order[s] = I::from_usize(index);
             bytes[s] = byte;

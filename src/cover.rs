@@ -22,13 +22,36 @@ pub(crate) fn covered<'a, S: Scalar + 'a>(
     i: usize,
     others: impl Iterator<Item = (&'a StandardTriangle<S>, &'a Triangle<S>)> + Clone,
 ) -> bool {
-    let len = t.edges[i].len;
-    let tol = tolerance(t, i);
-    // Each usable neighbour edge as an interval [lo, hi] of the edge's own coordinate u.
-    let intervals = others.flat_map(move |(o, src)| {
-        let v = src.vertices();
-        (0..3).filter_map(move |j| interval(t, i, o, (v[j], v[(j + 1) % 3])))
-    });
+    spans(
+        t,
+        i,
+        others.flat_map(move |(o, src)| intervals(t, i, o, src)),
+    )
+}
+
+/// The stretches of edge `i` of `t` that the edges of the flat neighbour `o` (with its
+/// source `src`) run along in the opposite direction.
+fn intervals<'a, S: Scalar>(
+    t: &'a StandardTriangle<S>,
+    i: usize,
+    o: &'a StandardTriangle<S>,
+    src: &Triangle<S>,
+) -> impl Iterator<Item = (S, S)> + Clone + 'a {
+    let v = src.vertices();
+    // Only a flat neighbour has any (`interval` asks again, for its other callers).
+    let flat = o != t && same_plane(o.normal(), t.normal());
+    let edges = if flat { 0..3 } else { 0..0 };
+    edges.filter_map(move |j| interval(t, i, o, (v[j], v[(j + 1) % 3])))
+}
+
+/// Whether the stretches `[lo, hi]` (distances along edge `i` of `t`), joined, span the edge
+/// from end to end (within the tolerance).
+fn spans<S: Scalar>(
+    t: &StandardTriangle<S>,
+    i: usize,
+    intervals: impl Iterator<Item = (S, S)> + Clone,
+) -> bool {
+    let (len, tol) = (t.edges[i].len, tolerance(t, i));
     // Extend the covered stretch [0, reach] from the edge's start until no interval extends it.
     let mut reach = S::ZERO;
     loop {
@@ -45,6 +68,57 @@ pub(crate) fn covered<'a, S: Scalar + 'a>(
             None => return false,
         }
     }
+}
+
+/// How many stretches [`cover_open`] gathers for one edge: an edge along more neighbours than
+/// this stays active.
+const STRETCHES: usize = 64;
+
+/// [`covered`] for the open edges of a mesh (those `open` gives for a slot: active, and
+/// sharing no vertex pair with an opposite edge), switching each covered one off. `near(lo, hi,
+/// f)` calls `f` with the slots of every triangle whose box may meet the world box `lo..hi`
+/// (each slot `s` being `triangles[s]`, prepared from `source(s)`). Returns whether any edge was
+/// switched off.
+pub(crate) fn cover_open<'a, S: Scalar + 'a>(
+    triangles: &mut [StandardTriangle<S>],
+    source: impl Fn(usize) -> Option<&'a Triangle<S>>,
+    open: impl Fn(usize) -> u8,
+    near: impl Fn([f64; 3], [f64; 3], &mut dyn FnMut(usize)),
+) -> bool {
+    let mut changed = false;
+    for s in 0..triangles.len() {
+        let mask = open(s);
+        if mask == 0 {
+            continue;
+        }
+        let Some(src) = source(s) else {
+            continue;
+        };
+        for i in (0..3).filter(|i| mask & (1 << i) != 0) {
+            let t = &triangles[s];
+            let (a, b) = (src.vertices()[i], src.vertices()[(i + 1) % 3]);
+            // The edge's box, grown by the tolerance and then some (the query rounds outward).
+            let grow = 2.0 * tolerance(t, i).to_f64();
+            let lo =
+                [0, 1, 2].map(|k| a.to_array()[k].to_f64().min(b.to_array()[k].to_f64()) - grow);
+            let hi =
+                [0, 1, 2].map(|k| a.to_array()[k].to_f64().max(b.to_array()[k].to_f64()) + grow);
+            let mut found: heapless::Vec<(S, S), STRETCHES> = heapless::Vec::new();
+            let mut full = false;
+            near(lo, hi, &mut |o| {
+                if let (Some(ot), Some(osrc)) = (triangles.get(o), source(o)) {
+                    for stretch in intervals(t, i, ot, osrc) {
+                        full |= found.push(stretch).is_err();
+                    }
+                }
+            });
+            if !full && spans(t, i, found.iter().copied()) {
+                crate::adjacency::deactivate(&mut triangles[s], i);
+                changed = true;
+            }
+        }
+    }
+    changed
 }
 
 /// The stretch `[lo, hi]` of edge `i` of `t` (as distances from its start) that the edge

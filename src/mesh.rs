@@ -1,8 +1,9 @@
 //! [`Mesh`]: many triangles behind a [`bvh`], borrowed from wherever they live (a
 //! `static` in flash, a caller's buffer, `Vec`s on a PC), answering exactly as a linear scan.
 
-use crate::adjacency::link_all;
-use crate::bvh::{self, BuildError, Grid, MAX_TRIANGLES, Node};
+mod build;
+
+use crate::bvh::{self, Grid, Node};
 use crate::merge::{Earliest, earliest};
 use crate::{Error, Features, Geometry, Parts, Scalar, SceneHit, StandardTriangle, Sweep};
 use crate::{Triangle, Vec3};
@@ -145,143 +146,6 @@ impl<'a, S: Scalar> Mesh<'a, S> {
             features: Features::ALL.bits(),
             two_sided: false,
         })
-    }
-
-    /// Prepares `sources`, computes their active edges and builds the tree, into the given
-    /// buffers; returns the mesh borrowing them and the number of degenerate triangles skipped.
-    /// Active edges follow [`Scene`](crate::Scene)'s shared-edge rule (flat or valley: off);
-    /// unlike a `Scene`, a mesh does not yet switch off edges covered across T-junctions.
-    ///
-    /// Buffers: `nodes` at least [`nodes_for`](crate::bvh::nodes_for)`(kept)` (kept = input less
-    /// skipped; `nodes_for(sources.len())` always suffices), `triangles` and `order` one per input
-    /// triangle, `scratch` six words per input triangle. Time `O(N log N)` (active edges: plus one
-    /// comparison per pair of triangles on either side of a shared edge), no allocation, stack
-    /// use independent of `N`. The same input gives the same parts, byte for byte, on every target.
-    ///
-    /// Errors: [`MeshError::Triangle`] for a triangle [`StandardTriangle::new`] refuses (unless it
-    /// is degenerate and `degenerates` is [`Degenerates::Skip`]); [`MeshError::Capacity`] for a
-    /// buffer too small; [`MeshError::TooMany`] beyond 2^28 triangles.
-    pub fn build(
-        sources: &[Triangle<S>],
-        degenerates: Degenerates,
-        nodes: &'a mut [Node],
-        triangles: &'a mut [StandardTriangle<S>],
-        order: &'a mut [u32],
-        scratch: &mut [u64],
-    ) -> Result<(Self, usize), MeshError> {
-        let n = sources.len();
-        if n > MAX_TRIANGLES {
-            return Err(MeshError::TooMany);
-        }
-        let short = |buffer, len: usize, needed: usize| {
-            (len < needed).then_some(MeshError::Capacity { buffer, needed })
-        };
-        let checks = [
-            short(Buffer::Triangles, triangles.len(), n),
-            short(Buffer::Order, order.len(), n),
-            short(Buffer::Scratch, scratch.len(), 6 * n),
-        ];
-        if let Some(e) = checks.into_iter().flatten().next() {
-            return Err(e);
-        }
-        // Prepare, in input order, keeping the input index; the kept triangles' world bounds
-        // (in the scalar: `to_f64` is monotone, so it can come once, at the end).
-        let mut kept = 0;
-        let mut world: Option<([S; 3], [S; 3])> = None;
-        for (index, t) in sources.iter().enumerate() {
-            match StandardTriangle::new(t) {
-                Ok(st) => {
-                    triangles[kept] = st;
-                    order[kept] = index as u32;
-                    kept += 1;
-                    for p in t.vertices().map(Vec3::to_array) {
-                        let (lo, hi) = world.get_or_insert((p, p));
-                        for a in 0..3 {
-                            if p[a] < lo[a] {
-                                lo[a] = p[a];
-                            }
-                            if p[a] > hi[a] {
-                                hi[a] = p[a];
-                            }
-                        }
-                    }
-                }
-                Err(e) if e.is_degenerate() && degenerates == Degenerates::Skip => {}
-                Err(e) => {
-                    return Err(MeshError::Triangle {
-                        index,
-                        error: e.at(index),
-                    });
-                }
-            }
-        }
-        if let Some(e) = short(Buffer::Nodes, nodes.len(), bvh::nodes_for(kept)) {
-            return Err(e);
-        }
-        let (triangles, order) = (&mut triangles[..kept], &mut order[..kept]);
-        let (wlo, whi) = world.map_or(([f64::MAX; 3], [f64::MIN; 3]), |(lo, hi)| {
-            (lo.map(S::to_f64), hi.map(S::to_f64))
-        });
-        let largest = (0..3).fold(0.0f64, |m, a| m.max(wlo[a].abs()).max(whi[a].abs()));
-        link_all(sources, order, triangles, &mut scratch[..6 * kept]);
-        let exponent = Grid::exponent_for(largest);
-        let (lo, hi) = if kept == 0 {
-            ([0; 3], [0; 3])
-        } else {
-            Grid::cells(exponent, wlo, whi)
-        };
-        // Scratch: the items (four words each), the build's keys, the old order.
-        let (items, rest) = scratch.split_at_mut(4 * kept);
-        let (items, _) = items.as_chunks_mut::<4>();
-        let (keys, rest) = rest.split_at_mut(kept);
-        for (c, it) in items.iter_mut().enumerate() {
-            let (blo, bhi) = Grid::bounds(&sources[order[c] as usize]);
-            let t = &triangles[c];
-            let all_active = (0..3).all(|e| t.features().edge(e));
-            let [_, b, c2] = t.vertices();
-            let shape = [b.x, b.z, c2.x].map(S::to_f64);
-            let class = bvh::seam_class(all_active, shape);
-            *it = bvh::item(Grid::cells(exponent, blo, bhi), c, class);
-        }
-        let used = bvh::build(items, keys, (lo, hi), nodes).map_err(|e| match e {
-            BuildError::Nodes(needed) => MeshError::Capacity {
-                buffer: Buffer::Nodes,
-                needed,
-            },
-            BuildError::Depth => MeshError::TooMany,
-        })?;
-
-        // Into leaf order: slot s takes compact triangle key_index(keys[s]).
-        let old = &mut rest[..kept];
-        for (o, &i) in old.iter_mut().zip(order.iter()) {
-            *o = i as u64;
-        }
-        for (i, &k) in order.iter_mut().zip(keys.iter()) {
-            *i = old[bvh::key_index(k)] as u32;
-        }
-        // Along each cycle of the permutation, marking the slots placed.
-        const PLACED: u64 = 1 << 63;
-        for start in 0..kept {
-            if keys[start] & PLACED != 0 {
-                continue;
-            }
-            let held = triangles[start];
-            let mut s = start;
-            loop {
-                keys[s] |= PLACED;
-                let from = bvh::key_index(keys[s]);
-                if from == start {
-                    triangles[s] = held;
-                    break;
-                }
-                triangles[s] = triangles[from];
-                s = from;
-            }
-        }
-        let grid = Grid { exponent, lo, hi };
-        let (nodes, triangles, order): (&'a [Node], &'a [StandardTriangle<S>], &'a [u32]) =
-            (&nodes[..used], triangles, order);
-        Ok((Self::from_parts(nodes, triangles, order, grid), n - kept))
     }
 
     /// Number of triangles.

@@ -14,7 +14,9 @@ use ballcast::{
 };
 use common::{P, Rng, v};
 use fixed::types::{I16F16, I32F32};
-use meshes::{against_linear, against_linear_by, boxes, build, heightfield, soup, tri};
+use meshes::{
+    against_linear, against_linear_by, boxes, build, heightfield, soup, t_junctions, tri,
+};
 
 fn sweeps_on_all<S: Scalar>(per_shape: usize) {
     let mut rng = Rng(0x5eed_0001);
@@ -65,6 +67,36 @@ fn along_a_plane<S: Scalar>() {
             meshes::along_plane(rng, &src)
         });
     }
+}
+
+/// Floors with T-junctions, whose edges along the junctions the build switches off after the
+/// tree is made (so their seam margins must reach the tree's boxes too): sweeps that fall or
+/// slide onto the seams, and the mixed ones, as the linear scan.
+fn t_junction_seams_as_linear<S: Scalar>() {
+    let mut rng = Rng(0x5eed_000c);
+    let floor = t_junctions(&mut rng, 12);
+    against_linear::<S>(&mut rng, &floor, 2000, 7.0);
+    // The floor's plane y = a x + b z, from its first triangle.
+    let [p, q, w] = floor[0];
+    let det = (q[0] - p[0]) * (w[2] - p[2]) - (w[0] - p[0]) * (q[2] - p[2]);
+    let a = ((q[1] - p[1]) * (w[2] - p[2]) - (w[1] - p[1]) * (q[2] - p[2])) / det;
+    let b = ((q[0] - p[0]) * (w[1] - p[1]) - (w[0] - p[0]) * (q[1] - p[1])) / det;
+    let c = p[1] - a * p[0] - b * p[2];
+    against_linear_by::<S>(&mut rng, &floor, 3000, |rng, _| {
+        // Near the junction line x = 0, falling or gliding a little over the floor.
+        let (x, z, r) = (
+            rng.range(-0.5, 0.5),
+            rng.range(-6.0, 6.0),
+            rng.range(0.05, 1.0),
+        );
+        let p0 = [x, a * x + b * z + c + r + rng.range(-0.01, 0.3), z];
+        let d = [
+            rng.range(-1.0, 1.0),
+            rng.range(-0.4, 0.0),
+            rng.range(-1.0, 1.0),
+        ];
+        (p0, [p0[0] + d[0], p0[1] + d[1], p0[2] + d[2]], r)
+    });
 }
 
 /// `penetration` and `winding` on the mesh (its tree's box query) give the linear scan's
@@ -130,8 +162,11 @@ fn active_edges_are_scenes<S: Scalar>() {
         boxes(&mut rng, 16, 5.0),
         soup(&mut rng, 200, 4.0),
     ];
-    // Flat: every interior edge inactive; identical copies: none paired.
+    // Flat: every interior edge inactive; identical copies: none paired; T-junctions, whose
+    // edges along the junction only flat neighbours' coverage switches off.
     shapes.push(heightfield(&mut rng, 8, 1.0, 0.0));
+    shapes.push(t_junctions(&mut rng, 8));
+    shapes.push(t_junctions(&mut rng, 12));
     shapes.push(vec![
         [[0.0, 0.0, 0.0], [0.0, 0.0, 1.0], [1.0, 0.0, 0.0]];
         40
@@ -454,6 +489,7 @@ meshes::per_scalar!(
     along_a_plane,
     box_queries_as_linear,
     active_edges_are_scenes,
+    t_junction_seams_as_linear,
     deterministic,
     range_edges,
     tiny_mesh_long_falls,

@@ -1,7 +1,9 @@
 //! The build: items split at the median of their centres into complete 4-wide subtrees (see
 //! the module docs of [`bvh`](super)).
 
-use super::{CLASS_SHIFT, Cells, LEAF, LEAF_FLAG, MAX_CLASS, MAX_DEPTH, Node, STACK};
+use super::{
+    CLASS_SHIFT, Cells, LEAF, LEAF_FLAG, MAX_CLASS, MAX_DEPTH, Node, PAYLOAD, STACK, leaf_slots,
+};
 
 /// Why a tree could not be built.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -260,4 +262,31 @@ pub(crate) fn build(
         nodes[at] = node;
     }
     Ok(next)
+}
+
+/// Sets anew the seam class of every child reference in `nodes`, made by [`build`] (so every
+/// node's children come after it): a leaf's is the largest `class(slot)` of its triangles, a
+/// node's the largest of its own children's. For a mesh whose active edges changed after the
+/// build.
+pub(crate) fn set_classes(nodes: &mut [Node], class: impl Fn(usize) -> u32) {
+    let of = |node: &Node| {
+        let refs = node.children.iter().take(node.count as usize);
+        refs.map(|&c| super::class_bits(c)).max().unwrap_or(0)
+    };
+    for at in (0..nodes.len()).rev() {
+        let Some(&node) = nodes.get(at) else {
+            continue;
+        };
+        let mut children = node.children;
+        for child in children.iter_mut().take(node.count as usize) {
+            let c = match leaf_slots(*child) {
+                Some(slots) => slots.map(&class).max().unwrap_or(0),
+                None => nodes.get((*child & PAYLOAD) as usize).map_or(0, of),
+            };
+            *child = *child & !(MAX_CLASS << CLASS_SHIFT) | c.min(MAX_CLASS) << CLASS_SHIFT;
+        }
+        if let Some(node) = nodes.get_mut(at) {
+            node.children = children;
+        }
+    }
 }

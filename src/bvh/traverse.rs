@@ -3,7 +3,7 @@
 
 use super::overlap::Walk;
 use super::short::ShortBox;
-use super::{CLASS_SHIFT, Cells, Grid, LEAF_FLAG, MAX_CLASS, Node, PAYLOAD, STACK};
+use super::{Cells, Grid, LEAF_FLAG, Node, PAYLOAD, STACK};
 use crate::merge::Earliest;
 use crate::{Scalar, Sweep};
 
@@ -129,7 +129,7 @@ impl Segment {
     #[inline]
     fn enter4(&self, node: &Node, lo: [i32; 3], limit: f32) -> ([f32; 4], [f32; 4]) {
         let pad: [f32; 4] = core::array::from_fn(|k| {
-            let class = (node.children[k] >> CLASS_SHIFT) & MAX_CLASS;
+            let class = super::class_bits(node.children[k]);
             self.pad + self.seam * pow2f(class)
         });
         let (mut t0, mut t1) = ([f32::NEG_INFINITY; 4], [limit; 4]);

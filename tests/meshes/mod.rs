@@ -121,6 +121,38 @@ pub fn heightfield(rng: &mut Rng, w: usize, cell: f64, bump: f64) -> Vec<[P; 3]>
     out
 }
 
+/// A floor on one tilted plane with T-junctions: `w` × `w` unit cells (`w` even), those with
+/// `x` below the middle merged into 2 × 2 cells, so the big cells' edges along the middle and
+/// the small cells' meet in T-junctions; each cell split in two along a random diagonal.
+pub fn t_junctions(rng: &mut Rng, w: usize) -> Vec<[P; 3]> {
+    let (a, b) = (rng.range(-0.3, 0.3), rng.range(-0.3, 0.3));
+    let half = w as f64 / 2.0;
+    let p = |i: usize, j: usize| {
+        let (x, z) = (i as f64 - half, j as f64 - half);
+        [x, a * x + b * z, z]
+    };
+    let mut out = Vec::new();
+    let mut cell = |i: usize, j: usize, n: usize, rng: &mut Rng| {
+        let (c0, c1, c2, c3) = (p(i, j), p(i, j + n), p(i + n, j + n), p(i + n, j));
+        if rng.next() < 0.5 {
+            out.extend([[c0, c1, c2], [c0, c2, c3]]);
+        } else {
+            out.extend([[c0, c1, c3], [c1, c2, c3]]);
+        }
+    };
+    for i in (0..w / 2).step_by(2) {
+        for j in (0..w).step_by(2) {
+            cell(i, j, 2, rng);
+        }
+    }
+    for i in w / 2..w {
+        for j in 0..w {
+            cell(i, j, 1, rng);
+        }
+    }
+    out
+}
+
 /// `count` closed boxes (12 triangles each, facing out), possibly overlapping.
 pub fn boxes(rng: &mut Rng, count: usize, half: f64) -> Vec<[P; 3]> {
     let mut out = Vec::new();

@@ -1,0 +1,232 @@
+//! [`Mesh::build`]: preparation, active edges (shared edges by a radix sort, then the open
+//! ones along T-junctions by the tree), the tree, and the triangles into its leaf order.
+
+use super::{Buffer, Degenerates, Mesh, MeshError};
+use crate::adjacency::{link_all, open_edges};
+use crate::bvh::{self, BuildError, Grid, MAX_TRIANGLES, Node};
+use crate::cover::cover_open;
+use crate::{Scalar, StandardTriangle, Triangle, Vec3};
+
+impl<'a, S: Scalar> Mesh<'a, S> {
+    /// Prepares `sources`, computes their active edges and builds the tree, into the given
+    /// buffers; returns the mesh borrowing them and the number of degenerate triangles skipped.
+    /// Active edges follow [`Scene`](crate::Scene)'s rules: an edge shared with an opposite
+    /// edge is off where the surface is flat or a valley there; an open edge (one sharing its
+    /// vertex pair with no opposite edge) is off where flat neighbours cover it from end to end
+    /// (a T-junction). Unlike a `Scene`, a mesh applies the second rule to open edges only (an
+    /// edge both shared and covered, which takes three or more triangles along one line, stays
+    /// as the pair decides), and leaves an edge along more than 64 neighbours' edges active.
+    ///
+    /// Buffers: `nodes` at least [`nodes_for`](crate::bvh::nodes_for)`(kept)` (kept = input less
+    /// skipped; `nodes_for(sources.len())` always suffices), `triangles` and `order` one per input
+    /// triangle, `scratch` six words per input triangle. Time `O(N log N)` (active edges: plus one
+    /// comparison per pair of triangles on either side of a shared edge), no allocation, stack
+    /// use independent of `N`. The same input gives the same parts, byte for byte, on every target.
+    ///
+    /// Errors: [`MeshError::Triangle`] for a triangle [`StandardTriangle::new`] refuses (unless it
+    /// is degenerate and `degenerates` is [`Degenerates::Skip`]); [`MeshError::Capacity`] for a
+    /// buffer too small; [`MeshError::TooMany`] beyond 2^28 triangles.
+    pub fn build(
+        sources: &[Triangle<S>],
+        degenerates: Degenerates,
+        nodes: &'a mut [Node],
+        triangles: &'a mut [StandardTriangle<S>],
+        order: &'a mut [u32],
+        scratch: &mut [u64],
+    ) -> Result<(Self, usize), MeshError> {
+        let n = sources.len();
+        if n > MAX_TRIANGLES {
+            return Err(MeshError::TooMany);
+        }
+        let short = |buffer, len: usize, needed: usize| {
+            (len < needed).then_some(MeshError::Capacity { buffer, needed })
+        };
+        let checks = [
+            short(Buffer::Triangles, triangles.len(), n),
+            short(Buffer::Order, order.len(), n),
+            short(Buffer::Scratch, scratch.len(), 6 * n),
+        ];
+        if let Some(e) = checks.into_iter().flatten().next() {
+            return Err(e);
+        }
+        // Prepare, in input order, keeping the input index; the kept triangles' world bounds
+        // (in the scalar: `to_f64` is monotone, so it can come once, at the end).
+        let mut kept = 0;
+        let mut world: Option<([S; 3], [S; 3])> = None;
+        for (index, t) in sources.iter().enumerate() {
+            match StandardTriangle::new(t) {
+                Ok(st) => {
+                    triangles[kept] = st;
+                    order[kept] = index as u32;
+                    kept += 1;
+                    for p in t.vertices().map(Vec3::to_array) {
+                        let (lo, hi) = world.get_or_insert((p, p));
+                        for a in 0..3 {
+                            if p[a] < lo[a] {
+                                lo[a] = p[a];
+                            }
+                            if p[a] > hi[a] {
+                                hi[a] = p[a];
+                            }
+                        }
+                    }
+                }
+                Err(e) if e.is_degenerate() && degenerates == Degenerates::Skip => {}
+                Err(e) => {
+                    return Err(MeshError::Triangle {
+                        index,
+                        error: e.at(index),
+                    });
+                }
+            }
+        }
+        if let Some(e) = short(Buffer::Nodes, nodes.len(), bvh::nodes_for(kept)) {
+            return Err(e);
+        }
+        let (triangles, order) = (&mut triangles[..kept], &mut order[..kept]);
+        let (wlo, whi) = world.map_or(([f64::MAX; 3], [f64::MIN; 3]), |(lo, hi)| {
+            (lo.map(S::to_f64), hi.map(S::to_f64))
+        });
+        let largest = (0..3).fold(0.0f64, |m, a| m.max(wlo[a].abs()).max(whi[a].abs()));
+        link_all(sources, order, triangles, &mut scratch[..6 * kept]);
+        let input = |o: &u32| open_edges(*o).0 as usize;
+        let exponent = Grid::exponent_for(largest);
+        let (lo, hi) = if kept == 0 {
+            ([0; 3], [0; 3])
+        } else {
+            Grid::cells(exponent, wlo, whi)
+        };
+        // Scratch: the items (four words each), the build's keys, the old order.
+        let (items, rest) = scratch.split_at_mut(4 * kept);
+        let (items, _) = items.as_chunks_mut::<4>();
+        let (keys, rest) = rest.split_at_mut(kept);
+        for (c, it) in items.iter_mut().enumerate() {
+            let (blo, bhi) = Grid::bounds(&sources[input(&order[c])]);
+            let class = bvh::class_of(&triangles[c]);
+            *it = bvh::item(Grid::cells(exponent, blo, bhi), c, class);
+        }
+        let used = bvh::build(items, keys, (lo, hi), nodes).map_err(|e| match e {
+            BuildError::Nodes(needed) => MeshError::Capacity {
+                buffer: Buffer::Nodes,
+                needed,
+            },
+            BuildError::Depth => MeshError::TooMany,
+        })?;
+
+        // Into leaf order: slot s takes compact triangle key_index(keys[s]).
+        let old = &mut rest[..kept];
+        for (o, &i) in old.iter_mut().zip(order.iter()) {
+            *o = i as u64;
+        }
+        for (i, &k) in order.iter_mut().zip(keys.iter()) {
+            *i = old[bvh::key_index(k)] as u32;
+        }
+        // Along each cycle of the permutation, marking the slots placed.
+        const PLACED: u64 = 1 << 63;
+        for start in 0..kept {
+            if keys[start] & PLACED != 0 {
+                continue;
+            }
+            let held = triangles[start];
+            let mut s = start;
+            loop {
+                keys[s] |= PLACED;
+                let from = bvh::key_index(keys[s]);
+                if from == start {
+                    triangles[s] = held;
+                    break;
+                }
+                triangles[s] = triangles[from];
+                s = from;
+            }
+        }
+        let grid = Grid { exponent, lo, hi };
+        let nodes = &mut nodes[..used];
+        if cover(sources, nodes, &grid, triangles, order) {
+            bvh::set_classes(nodes, |s| triangles.get(s).map_or(0, bvh::class_of));
+        }
+        for o in order.iter_mut() {
+            *o = open_edges(*o).0;
+        }
+        let (nodes, triangles, order): (&'a [Node], &'a [StandardTriangle<S>], &'a [u32]) =
+            (nodes, triangles, order);
+        Ok((Self::from_parts(nodes, triangles, order, grid), n - kept))
+    }
+}
+
+/// Switches off the open edges (marked in `order` by `link_all`) that flat neighbours cover,
+/// finding the neighbours with the tree. Returns whether any edge was switched off.
+fn cover<S: Scalar>(
+    sources: &[Triangle<S>],
+    nodes: &[Node],
+    grid: &Grid,
+    triangles: &mut [StandardTriangle<S>],
+    order: &[u32],
+) -> bool {
+    let source = |s: usize| {
+        let (i, _) = open_edges(*order.get(s)?);
+        sources.get(i as usize)
+    };
+    let open = |s: usize| order.get(s).map_or(0, |&o| open_edges(o).1);
+    cover_open(triangles, source, open, |lo, hi, f| {
+        bvh::overlapping(nodes, grid, bvh::query_cells(grid, lo, hi), |slots| {
+            slots.for_each(&mut *f)
+        });
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::bvh::{Node, class_bits, class_of, leaf_slots, nodes_for};
+    use crate::{Degenerates, Mesh, Scene, Triangle, Vec3};
+
+    /// A lone thin floor triangle (all edges active until the build covers one) whose long
+    /// edge two fatter coplanar triangles cover, meeting in a T-junction at its middle: the
+    /// edge is switched off, as in a `Scene`, and the leaf's seam class, the thin one's (the
+    /// largest once its edge is off), follows the change.
+    #[test]
+    fn t_junction_covers_a_lone_triangles_edge() {
+        let v = |x: f32, z: f32| Vec3::new(x, 0.0, z);
+        let floor = [
+            Triangle::new(v(0.9, 0.9), v(0.0, 2.0), v(2.0, 0.0)),
+            Triangle::new(v(2.0, 0.0), v(1.0, 1.0), v(2.0, 2.0)),
+            Triangle::new(v(1.0, 1.0), v(0.0, 2.0), v(2.0, 2.0)),
+        ];
+        let mut nodes = [Node::default(); nodes_for(3)];
+        let mut tris = [Mesh::<f32>::filler(); 3];
+        let (mut order, mut scratch) = ([0u32; 3], [0u64; 18]);
+        let (mesh, _) = Mesh::build(
+            &floor,
+            Degenerates::Refuse,
+            &mut nodes,
+            &mut tris,
+            &mut order,
+            &mut scratch,
+        )
+        .unwrap();
+        let mut scene: Scene<f32, 3> = Scene::new();
+        for t in floor {
+            scene.push(t).unwrap();
+        }
+        let lone = mesh.triangle(0).unwrap();
+        assert!(!lone.features().edge(1) && lone.features().edge(0));
+        for i in 0..3 {
+            let want = scene.triangle(i).unwrap().features();
+            assert_eq!(mesh.triangle(i).unwrap().features(), want, "triangle {i}");
+        }
+        // Every leaf's class is the largest of its triangles' (the lone one's has grown).
+        assert!(class_of(lone) > 0);
+        let children = mesh
+            .nodes()
+            .iter()
+            .flat_map(|n| n.children.iter().take(n.count as usize));
+        let leaves: Vec<_> = children
+            .filter_map(|&c| Some((c, leaf_slots(c)?)))
+            .collect();
+        assert!(!leaves.is_empty());
+        for (child, slots) in leaves {
+            let most = slots.map(|s| class_of(&mesh.triangles()[s])).max();
+            assert_eq!(Some(class_bits(child)), most);
+        }
+    }
+}
