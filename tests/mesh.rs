@@ -10,7 +10,8 @@ use ballcast::bvh::nodes_for;
 use ballcast::penetration::{Penetration, penetration};
 use ballcast::winding::winding;
 use ballcast::{
-    Buffer, Degenerates, Geometry, Mesh, MeshError, Node, Scalar, Scene, Sweep, Triangle, Vec3,
+    Buffer, Contact, Degenerates, Geometry, Mesh, MeshError, Node, Scalar, Scene, Sweep, Triangle,
+    Vec3,
 };
 use common::{P, Rng, v};
 use fixed::types::{I16F16, I32F32};
@@ -76,12 +77,7 @@ fn t_junction_seams_as_linear<S: Scalar>() {
     let mut rng = Rng(0x5eed_000c);
     let floor = t_junctions(&mut rng, 12);
     against_linear::<S>(&mut rng, &floor, 2000, 7.0);
-    // The floor's plane y = a x + b z, from its first triangle.
-    let [p, q, w] = floor[0];
-    let det = (q[0] - p[0]) * (w[2] - p[2]) - (w[0] - p[0]) * (q[2] - p[2]);
-    let a = ((q[1] - p[1]) * (w[2] - p[2]) - (w[1] - p[1]) * (q[2] - p[2])) / det;
-    let b = ((q[0] - p[0]) * (w[1] - p[1]) - (w[0] - p[0]) * (q[1] - p[1])) / det;
-    let c = p[1] - a * p[0] - b * p[2];
+    let [a, b, c] = meshes::plane_of(&floor);
     against_linear_by::<S>(&mut rng, &floor, 3000, |rng, _| {
         // Near the junction line x = 0, falling or gliding a little over the floor.
         let (x, z, r) = (
@@ -97,6 +93,43 @@ fn t_junction_seams_as_linear<S: Scalar>() {
         ];
         (p0, [p0[0] + d[0], p0[1] + d[1], p0[2] + d[2]], r)
     });
+}
+
+/// Balls sliding across the T-junctions of tilted floors, at or just under their radius above
+/// the plane: every contact is with a face, none with an edge along a junction (a ghost bump).
+fn sliding_over_t_junctions_meets_no_edge<S: Scalar>() {
+    let mut rng = Rng(0x5eed_000d);
+    for _ in 0..3 {
+        let floor = t_junctions(&mut rng, 12);
+        let [a, b, c] = meshes::plane_of(&floor);
+        let input: Vec<Triangle<S>> = floor.iter().map(|&t| tri(t)).collect();
+        let owned = build(&input, Degenerates::Refuse).unwrap();
+        let mesh = owned.mesh();
+        let l = (a * a + 1.0 + b * b).sqrt();
+        let up = [-a / l, 1.0 / l, -b / l];
+        let at =
+            |x: f64, z: f64, h: f64| [x + up[0] * h, a * x + b * z + c + up[1] * h, z + up[2] * h];
+        let mut hits = 0;
+        for _ in 0..10_000 {
+            let (r, x, z) = (
+                rng.range(0.1, 0.6),
+                rng.range(-1.0, -0.2),
+                rng.range(-5.0, 5.0),
+            );
+            let p0 = at(x, z, r + rng.range(0.0, 1e-3));
+            let p1 = at(
+                x + 1.2,
+                z + rng.range(-0.15, 0.15),
+                r - rng.range(0.0, 0.05),
+            );
+            let sweep = Sweep::new(v::<S>(p0), v::<S>(p1), S::from_f64(r)).unwrap();
+            if let Some(hit) = mesh.cast(&sweep) {
+                assert_eq!(hit.contact, Contact::Face, "{p0:?} -> {p1:?} r {r}");
+                hits += 1;
+            }
+        }
+        assert!(hits > 9_000, "{hits} hits");
+    }
 }
 
 /// `penetration` and `winding` on the mesh (its tree's box query) give the linear scan's
@@ -490,6 +523,7 @@ meshes::per_scalar!(
     box_queries_as_linear,
     active_edges_are_scenes,
     t_junction_seams_as_linear,
+    sliding_over_t_junctions_meets_no_edge,
     deterministic,
     range_edges,
     tiny_mesh_long_falls,

@@ -153,6 +153,15 @@ pub fn t_junctions(rng: &mut Rng, w: usize) -> Vec<[P; 3]> {
     out
 }
 
+/// The plane `y = a x + b z + c` of a floor, from its first triangle: `[a, b, c]`.
+pub fn plane_of(floor: &[[P; 3]]) -> [f64; 3] {
+    let [p, q, w] = floor[0];
+    let det = (q[0] - p[0]) * (w[2] - p[2]) - (w[0] - p[0]) * (q[2] - p[2]);
+    let a = ((q[1] - p[1]) * (w[2] - p[2]) - (w[1] - p[1]) * (q[2] - p[2])) / det;
+    let b = ((q[0] - p[0]) * (w[1] - p[1]) - (w[0] - p[0]) * (q[1] - p[1])) / det;
+    [a, b, p[1] - a * p[0] - b * p[2]]
+}
+
 /// `count` closed boxes (12 triangles each, facing out), possibly overlapping.
 pub fn boxes(rng: &mut Rng, count: usize, half: f64) -> Vec<[P; 3]> {
     let mut out = Vec::new();
