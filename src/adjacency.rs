@@ -54,8 +54,9 @@ const HASH_BITS: u32 = 23;
 /// order, so the prepared triangles are read in order, as the cache likes.
 ///
 /// Then marks each triangle's open edges in the top bits of its `order` entry (see
-/// [`open_edges`]): those still active that share their vertex pair with no opposite edge, such
-/// as an edge along a T-junction or the mesh's border.
+/// [`open_edges`]): those still active that share their vertex pair with no opposite edge
+/// (other than that of the triangle's exact reverse), such as an edge along a T-junction or
+/// the mesh's border.
 pub(crate) fn link_all<S: Scalar>(
     sources: &[Triangle<S>],
     order: &mut [u32],
@@ -155,7 +156,9 @@ fn paired(earlier: &mut [u64], s: usize) {
 }
 
 /// Compares the edges in slots `sx` and `sy` exactly and deactivates them where one hides the
-/// other; returns whether they share their vertex pair (in opposite directions).
+/// other; returns whether they share their vertex pair (in opposite directions) as two
+/// triangles that are not each other's reverse.
+#[inline(always)]
 fn link<S: Scalar>(
     sources: &[Triangle<S>],
     order: &[u32],
@@ -189,7 +192,8 @@ fn link<S: Scalar>(
         deactivate(&mut triangles[a], i);
         deactivate(&mut triangles[b], j);
     }
-    true
+    // A triangle's exact reverse (its back, as a two-sided floor is made) is no partner.
+    at(ta, i + 2) != at(tb, j + 2)
 }
 
 /// Orders points by x, then y, then z (validated, so never NaN).

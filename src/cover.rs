@@ -39,7 +39,7 @@ fn intervals<'a, S: Scalar>(
 ) -> impl Iterator<Item = (S, S)> + Clone + 'a {
     let v = src.vertices();
     // Only a flat neighbour has any (`interval` asks again, for its other callers).
-    let flat = o != t && same_plane(o.normal(), t.normal());
+    let flat = !same_triangle(o, t) && same_plane(o.normal(), t.normal());
     let edges = if flat { 0..3 } else { 0..0 };
     edges.filter_map(move |j| interval(t, i, o, (v[j], v[(j + 1) % 3])))
 }
@@ -74,18 +74,29 @@ fn spans<S: Scalar>(
 /// this stays active.
 const STRETCHES: usize = 64;
 
+/// How many triangles near one edge [`cover_open`] looks at: an edge with more stays active.
+const NEIGHBOURS: usize = 256;
+
+/// How many triangles near edges [`cover_open`] meets in all, per triangle of the mesh: beyond
+/// that, the open edges not yet checked stay active. Only a mesh whose triangles' boxes overlap
+/// wholesale (long thin triangles side by side, say), where any query meets most of the mesh,
+/// gets there; the bound keeps its build's time in `O(N log N)` all the same.
+const MEETINGS: usize = 256;
+
 /// [`covered`] for the open edges of a mesh (those `open` gives for a slot: active, and
-/// sharing no vertex pair with an opposite edge), switching each covered one off. `near(lo, hi,
-/// f)` calls `f` with the slots of every triangle whose box may meet the world box `lo..hi`
-/// (each slot `s` being `triangles[s]`, prepared from `source(s)`). Returns whether any edge was
-/// switched off.
+/// sharing no vertex pair with an opposite edge), switching each covered one off.
+/// `near(a, b, r, f)` calls `f` with the slots of every triangle that may come within `r` of
+/// the segment from `a` to `b` (each slot `s` being `triangles[s]`, prepared from
+/// `source(s)`); a neighbour whose edge runs along one within the tolerance does. Returns
+/// whether any edge was switched off.
 pub(crate) fn cover_open<'a, S: Scalar + 'a>(
     triangles: &mut [StandardTriangle<S>],
     source: impl Fn(usize) -> Option<&'a Triangle<S>>,
     open: impl Fn(usize) -> u8,
-    near: impl Fn([f64; 3], [f64; 3], &mut dyn FnMut(usize)),
+    near: impl Fn(Vec3<S>, Vec3<S>, S, &mut dyn FnMut(usize)),
 ) -> bool {
     let mut changed = false;
+    let (budget, mut spent) = (MEETINGS * triangles.len() + 4096, 0);
     for s in 0..triangles.len() {
         let mask = open(s);
         if mask == 0 {
@@ -95,23 +106,27 @@ pub(crate) fn cover_open<'a, S: Scalar + 'a>(
             continue;
         };
         for i in (0..3).filter(|i| mask & (1 << i) != 0) {
+            if spent > budget {
+                return changed;
+            }
             let t = &triangles[s];
             let (a, b) = (src.vertices()[i], src.vertices()[(i + 1) % 3]);
-            // The edge's box, grown by the tolerance and then some (the query rounds outward).
-            let grow = 2.0 * tolerance(t, i).to_f64();
-            let lo =
-                [0, 1, 2].map(|k| a.to_array()[k].to_f64().min(b.to_array()[k].to_f64()) - grow);
-            let hi =
-                [0, 1, 2].map(|k| a.to_array()[k].to_f64().max(b.to_array()[k].to_f64()) + grow);
+            let tol = tolerance(t, i);
             let mut found: heapless::Vec<(S, S), STRETCHES> = heapless::Vec::new();
-            let mut full = false;
-            near(lo, hi, &mut |o| {
+            let (mut full, mut looked) = (false, 0);
+            near(a, b, tol + tol, &mut |o| {
+                looked += 1;
+                full |= looked > NEIGHBOURS;
+                if full {
+                    return;
+                }
                 if let (Some(ot), Some(osrc)) = (triangles.get(o), source(o)) {
                     for stretch in intervals(t, i, ot, osrc) {
                         full |= found.push(stretch).is_err();
                     }
                 }
             });
+            spent += looked;
             if !full && spans(t, i, found.iter().copied()) {
                 crate::adjacency::deactivate(&mut triangles[s], i);
                 changed = true;
@@ -129,7 +144,7 @@ pub(crate) fn interval<S: Scalar>(
     o: &StandardTriangle<S>,
     (a, b): (Vec3<S>, Vec3<S>),
 ) -> Option<(S, S)> {
-    if o == t || !same_plane(o.normal(), t.normal()) {
+    if same_triangle(o, t) || !same_plane(o.normal(), t.normal()) {
         return None;
     }
     let (corner, edge, tol) = (t.corner(i), t.edges[i], tolerance(t, i));
@@ -138,6 +153,14 @@ pub(crate) fn interval<S: Scalar>(
     let along = |p: Vec3<S>| S::dot_unit(p - corner, edge.along());
     let (ua, ub) = (along(a), along(b));
     (on_line(a) && on_line(b) && ub < ua).then_some((ub, ua))
+}
+
+/// Whether `o` is `t` or an identical copy, whatever edges either has switched off so far: a
+/// triangle never covers its own edges, nor a copy of it (which would make the result depend
+/// on which of the two is looked at first).
+fn same_triangle<S: Scalar>(o: &StandardTriangle<S>, t: &StandardTriangle<S>) -> bool {
+    let all = |x: &StandardTriangle<S>| x.with_features(crate::Features::ALL);
+    all(o) == all(t)
 }
 
 /// Four times the rounding of a height at the edge's coordinates: how far off the line a

@@ -10,8 +10,8 @@ use ballcast::bvh::nodes_for;
 use ballcast::penetration::{Penetration, penetration};
 use ballcast::winding::winding;
 use ballcast::{
-    Buffer, Contact, Degenerates, Geometry, Mesh, MeshError, Node, Scalar, Scene, Sweep, Triangle,
-    Vec3,
+    Buffer, Contact, Degenerates, Geometry, Mesh, MeshError, Node, Scalar, ScalarType, Scene,
+    Sweep, Triangle, Vec3,
 };
 use common::{P, Rng, v};
 use fixed::types::{I16F16, I32F32};
@@ -132,6 +132,84 @@ fn sliding_over_t_junctions_meets_no_edge<S: Scalar>() {
     }
 }
 
+/// A thin triangle, an identical copy of it, and a floor triangle beyond its short edge, whose
+/// apex lies within the cover tolerance of the long edge: neither copy covers the other's
+/// edges (a triangle's own edges never cover it), so both end alike, whichever comes first, in
+/// a mesh and in a `Scene`.
+fn duplicate_slivers_cover_alike<S: Scalar>() {
+    // Thin enough that the apex is within the tolerance, not so thin that it is degenerate.
+    let (l, h) = match S::PRECISION.scalar {
+        ScalarType::F32 => (0.01, 1e-6),
+        ScalarType::F64 => (0.01, 2e-15),
+        ScalarType::I16F16 => (10.0, 1.0 / 4096.0),
+        ScalarType::I32F32 => (10.0, 2e-9),
+    };
+    let (a, b, c) = ([0.0, 0.0, 0.0], [l, 0.0, 0.0], [l / 2.0, 0.0, -h]);
+    let d = [c[0] - b[0], 0.0, c[2] - b[2]];
+    let p = [c[0] + 0.25 * d[0], 0.0, c[2] + 0.25 * d[2]];
+    let q = [b[0] - 0.25 * d[0], 0.0, b[2] - 0.25 * d[2]];
+    let src = [[a, b, c], [a, b, c], [p, q, [0.8 * l, 0.0, -0.8 * l]]];
+    let input: Vec<Triangle<S>> = src.iter().map(|&t| tri(t)).collect();
+    let bits = |order: [usize; 3]| {
+        let picked: Vec<Triangle<S>> = order.iter().map(|&k| input[k]).collect();
+        let owned = build(&picked, Degenerates::Refuse).unwrap();
+        let mut scene: Scene<S, 3> = Scene::new();
+        for &t in &picked {
+            scene.push(t).unwrap();
+        }
+        let mut out = [[0u8; 2]; 3];
+        for (k, &i) in order.iter().enumerate() {
+            let mesh = owned.mesh().triangle(k).unwrap().features().bits();
+            out[i] = [mesh, scene.triangle(k).unwrap().features().bits()];
+        }
+        out
+    };
+    let first = bits([0, 1, 2]);
+    assert_eq!(first[0], first[1], "the copies differ");
+    assert_eq!(first[0][0], first[0][1], "mesh and scene differ");
+    assert_eq!(bits([2, 1, 0]), first);
+    assert_eq!(bits([2, 0, 1]), first);
+}
+
+/// A long thin triangle whose long edge two floor triangles cover, meeting in a T-junction:
+/// with that edge off, its face reaches (by the seam margin, which its sharp corners magnify)
+/// well past its tip, and the tree's boxes must be grown for it. Balls falling beside the tip
+/// as the linear scan.
+fn sliver_tip_past_a_covered_edge<S: Scalar>() {
+    let (a, b, c, m) = (
+        [0.0, 0.0, 0.0],
+        [10.0, 0.0, 0.0],
+        [10.0, 0.0, -0.1],
+        [5.0, 0.0, 0.0],
+    );
+    let src = [[a, b, c], [m, a, [0.0, 0.0, 5.0]], [b, m, [10.0, 0.0, 5.0]]];
+    let input: Vec<Triangle<S>> = src.iter().map(|&t| tri(t)).collect();
+    let owned = build(&input, Degenerates::Refuse).unwrap();
+    assert!(!owned.mesh().triangle(0).unwrap().features().edge(0));
+    let (mesh, reference) = (owned.mesh(), owned.reference());
+    let mut rng = Rng(0x5eed_000e);
+    for _ in 0..5000 {
+        let r = rng.range(0.3, 1.0);
+        let (x, z) = (rng.range(-1.6 * r, 0.0), rng.range(0.0, 0.02 * r));
+        let sweep = Sweep::new(
+            v::<S>([x, r + 0.5, z]),
+            v::<S>([x, r - 0.5, z]),
+            S::from_f64(r),
+        );
+        let sweep = sweep.unwrap();
+        assert_eq!(mesh.cast(&sweep), reference(&sweep), "x {x} z {z} r {r}");
+    }
+}
+
+/// Long thin triangles side by side, every edge open and every box overlapping nearly every
+/// other: the build bounds its search for T-junctions (edges it does not get to stay active),
+/// and the mesh still answers as the linear scan of what it built.
+fn overlapping_strips_as_linear<S: Scalar>() {
+    let mut rng = Rng(0x5eed_000f);
+    let strips = meshes::diagonal_strips(600);
+    against_linear::<S>(&mut rng, &strips, 500, 60.0);
+}
+
 /// `penetration` and `winding` on the mesh (its tree's box query) give the linear scan's
 /// answers, and a small box reaches a handful of the mesh's triangles, not all of them.
 fn box_queries_as_linear<S: Scalar>() {
@@ -200,6 +278,11 @@ fn active_edges_are_scenes<S: Scalar>() {
     shapes.push(heightfield(&mut rng, 8, 1.0, 0.0));
     shapes.push(t_junctions(&mut rng, 8));
     shapes.push(t_junctions(&mut rng, 12));
+    // A floor stopping balls from both sides, made of each triangle and its reverse: a
+    // triangle's reverse is no partner, so the junctions' edges are still found open.
+    let floor = t_junctions(&mut rng, 8);
+    let backs = floor.iter().map(|&[a, b, c]| [a, c, b]);
+    shapes.push(floor.iter().copied().chain(backs).collect());
     shapes.push(vec![
         [[0.0, 0.0, 0.0], [0.0, 0.0, 1.0], [1.0, 0.0, 0.0]];
         40
@@ -524,6 +607,9 @@ meshes::per_scalar!(
     active_edges_are_scenes,
     t_junction_seams_as_linear,
     sliding_over_t_junctions_meets_no_edge,
+    duplicate_slivers_cover_alike,
+    sliver_tip_past_a_covered_edge,
+    overlapping_strips_as_linear,
     deterministic,
     range_edges,
     tiny_mesh_long_falls,

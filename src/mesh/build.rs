@@ -5,17 +5,21 @@ use super::{Buffer, Degenerates, Mesh, MeshError};
 use crate::adjacency::{link_all, open_edges};
 use crate::bvh::{self, BuildError, Grid, MAX_TRIANGLES, Node};
 use crate::cover::cover_open;
-use crate::{Scalar, StandardTriangle, Triangle, Vec3};
+use crate::merge::earliest;
+use crate::{Scalar, StandardTriangle, Sweep, Triangle, Vec3};
 
 impl<'a, S: Scalar> Mesh<'a, S> {
     /// Prepares `sources`, computes their active edges and builds the tree, into the given
     /// buffers; returns the mesh borrowing them and the number of degenerate triangles skipped.
     /// Active edges follow [`Scene`](crate::Scene)'s rules: an edge shared with an opposite
     /// edge is off where the surface is flat or a valley there; an open edge (one sharing its
-    /// vertex pair with no opposite edge) is off where flat neighbours cover it from end to end
-    /// (a T-junction). Unlike a `Scene`, a mesh applies the second rule to open edges only (an
-    /// edge both shared and covered, which takes three or more triangles along one line, stays
-    /// as the pair decides), and leaves an edge along more than 64 neighbours' edges active.
+    /// vertex pair with no opposite edge but that of its own triangle's reverse) is off where
+    /// flat neighbours cover it from end to end (a T-junction), found by walking the tree along
+    /// it. Unlike a `Scene`, a mesh applies the second rule to open edges only (an edge both
+    /// shared and covered, which takes three or more triangles along one line, stays as the
+    /// pair decides); an edge along more than 64 neighbours' edges, or with more than 256
+    /// triangles near it, stays active, and after `256 N` triangles met near edges in all (only
+    /// where the triangles' boxes overlap wholesale) the edges not yet checked stay active.
     ///
     /// Buffers: `nodes` at least [`nodes_for`](crate::bvh::nodes_for)`(kept)` (kept = input less
     /// skipped; `nodes_for(sources.len())` always suffices), `triangles` and `order` one per input
@@ -168,9 +172,15 @@ fn cover<S: Scalar>(
         sources.get(i as usize)
     };
     let open = |s: usize| order.get(s).map_or(0, |&o| open_edges(o).1);
-    cover_open(triangles, source, open, |lo, hi, f| {
-        bvh::overlapping(nodes, grid, bvh::query_cells(grid, lo, hi), |slots| {
-            slots.for_each(&mut *f)
+    // Along each edge as a sweep of a ball: the leaves near its line only, however it runs.
+    cover_open(triangles, source, open, |a, b, r, f| {
+        let Ok(edge) = Sweep::new(a, b, r) else {
+            return;
+        };
+        earliest(|acc| {
+            bvh::leaves_along(nodes, grid, &edge, acc, |_, slots, _| {
+                slots.for_each(&mut *f)
+            });
         });
     })
 }

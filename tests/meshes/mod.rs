@@ -162,6 +162,25 @@ pub fn plane_of(floor: &[[P; 3]]) -> [f64; 3] {
     [a, b, p[1] - a * p[0] - b * p[2]]
 }
 
+/// `2 n` long thin triangles side by side along a diagonal, each strip's ends offset from its
+/// neighbours' so that no edge is shared: every triangle's box overlaps nearly every other's.
+pub fn diagonal_strips(n: usize) -> Vec<[P; 3]> {
+    let (side, w) = (100.0, 100.0 / n as f64);
+    let mut out = Vec::new();
+    for k in 0..n {
+        let off = if k % 2 == 0 { 0.0 } else { 0.5 * w };
+        let len = side - (k as f64 + 3.0) * w;
+        if len <= 0.0 {
+            break;
+        }
+        let a = [k as f64 * w + off, 0.0, off];
+        let b = [a[0] + w, 0.0, off];
+        let (c, d) = ([a[0] + len, 0.0, a[2] + len], [b[0] + len, 0.0, b[2] + len]);
+        out.extend([[a, c, b], [b, c, d]]);
+    }
+    out
+}
+
 /// `count` closed boxes (12 triangles each, facing out), possibly overlapping.
 pub fn boxes(rng: &mut Rng, count: usize, half: f64) -> Vec<[P; 3]> {
     let mut out = Vec::new();
