@@ -19,6 +19,8 @@ pub(crate) struct ShortBox {
     frac: u32,
     /// A cell is `2^shift` units (`shift` may be negative: cells finer than the units).
     shift: i32,
+    /// The cells of the whole segment's box (the reach at its start, one).
+    whole: Cells,
 }
 
 /// `v / 2^s` rounded down for `s >= 0`, `v * 2^-s` for `s < 0`; `None` on overflow.
@@ -98,15 +100,16 @@ impl ShortBox {
             toward: d.map(|x| x.signum() as i32),
             seam,
         };
-        let short = Self {
+        let mut short = Self {
             p0,
             d,
             pad,
             frac,
             shift,
+            whole: ([0; 3], [0; 3]),
         };
         // The box must come to cells without overflow; the reach only shrinks it.
-        short.box_at(1i64 << frac)?;
+        short.whole = short.box_at(1i64 << frac)?;
         Some((short, walk))
     }
 
@@ -116,9 +119,11 @@ impl ShortBox {
         let one = 1i64 << self.frac;
         let t = reach.fixed_bits().map_or(one, |(b, _)| b.max(0).min(one));
         // `new` made sure the whole segment's box converts, and a shorter one's terms are
-        // smaller; were it not so, the whole grid.
-        let all = ([-BOUND as i32; 3], [BOUND as i32; 3]);
-        self.box_at(t).or_else(|| self.box_at(one)).unwrap_or(all)
+        // smaller; were it not so, the whole segment's box.
+        if t == one {
+            return self.whole;
+        }
+        self.box_at(t).unwrap_or(self.whole)
     }
 
     /// The cells of the box over `[0, t / 2^frac]`, `0 <= t <= 2^frac`; `None` on overflow.
