@@ -84,11 +84,17 @@ pub(crate) fn link_all<S: Scalar>(
     }
     let records = &mut records[..used];
     // Records are made in slot order, so a stable sort on the hash and direction sorts them fully.
-    crate::radix::sort(records, temp, SLOT_BITS, SLOT_BITS + 1 + HASH_BITS);
-    // `earlier[s]`: one more than the slot of the edge a manifold edge `s` meets, or zero;
-    // and the flag `PAIRED` once the edge is found to share its vertex pair with another.
-    let Some(earlier) = temp.get_mut(..used) else {
+    let in_temp = crate::radix::sort(records, temp, SLOT_BITS, SLOT_BITS + 1 + HASH_BITS);
+    let Some(temp) = temp.get_mut(..used) else {
         return;
+    };
+    // `earlier[s]`: one more than the slot of the edge a manifold edge `s` meets, or zero;
+    // and the flag `PAIRED` once the edge is found to share its vertex pair with another. It
+    // takes the buffer the sorted records are not in.
+    let (records, earlier): (&[u64], &mut [u64]) = if in_temp {
+        (temp, records)
+    } else {
+        (records, temp)
     };
     earlier.fill(0);
     let slot = |r: u64| (r & ((1 << SLOT_BITS) - 1)) as usize;

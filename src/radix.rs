@@ -1,68 +1,75 @@
 //! A stable least-significant-digit radix sort of `u64` keys: `O(n)` per 8-bit digit, no
 //! comparisons, the same result on every target. The mesh build sorts its edge records with it.
 
-/// Sorts `keys` by bits `from..to` (stable: keys equal there keep their order), using `temp`
-/// (at least as long as `keys`) as the other buffer. Digits of 8 bits; a digit on which every key
-/// agrees costs one counting pass and no move.
-pub(crate) fn sort(keys: &mut [u64], temp: &mut [u64], from: u32, to: u32) {
+/// Most digits a sort takes: 32 bits of key.
+const DIGITS: usize = 4;
+
+/// Sorts `keys` by bits `from..to` (stable: keys equal there keep their order; at most 32 bits),
+/// using `temp` (at least as long as `keys`) as the other buffer, and returns whether the sorted
+/// keys ended in `temp` (its first `keys.len()` words) rather than in `keys`. Digits of 8 bits,
+/// counted together in one pass; a digit on which every key agrees costs no move.
+pub(crate) fn sort(keys: &mut [u64], temp: &mut [u64], from: u32, to: u32) -> bool {
     let n = keys.len();
     let Some(temp) = temp.get_mut(..n) else {
-        return;
+        return false;
     };
+    let digits = (to.saturating_sub(from).div_ceil(8) as usize).min(DIGITS);
+    let digit = |k: u64, d: usize| ((k >> (from + 8 * d as u32)) & 0xff) as usize;
+    // Counts as u32 (n < 2^32 for every caller): 4 KB of stack however long the keys.
+    let mut count = [[0u32; 256]; DIGITS];
+    for &k in keys.iter() {
+        for (d, c) in count.iter_mut().enumerate().take(digits) {
+            c[digit(k, d)] += 1;
+        }
+    }
     // `in_temp`: the current order lives in `temp`.
     let mut in_temp = false;
-    let mut shift = from;
-    while shift < to {
-        let width = (to - shift).min(8);
-        let mask = (1u64 << width) - 1;
+    for (d, c) in count.iter_mut().enumerate().take(digits) {
+        if c.iter().any(|&m| m as usize == n) {
+            continue;
+        }
+        let mut at = 0;
+        for m in c.iter_mut() {
+            (*m, at) = (at, at + *m);
+        }
         let (src, dst): (&[u64], &mut [u64]) = if in_temp {
             (&*temp, &mut *keys)
         } else {
             (&*keys, &mut *temp)
         };
-        let mut count = [0usize; 256];
         for &k in src {
-            count[((k >> shift) & mask) as usize] += 1;
-        }
-        if count.contains(&n) {
-            shift += width;
-            continue;
-        }
-        let mut at = 0;
-        for c in count.iter_mut() {
-            (*c, at) = (at, at + *c);
-        }
-        for &k in src {
-            let d = ((k >> shift) & mask) as usize;
-            dst[count[d]] = k;
-            count[d] += 1;
+            let slot = &mut c[digit(k, d)];
+            if let Some(out) = dst.get_mut(*slot as usize) {
+                *out = k;
+            }
+            *slot += 1;
         }
         in_temp = !in_temp;
-        shift += width;
     }
-    if in_temp {
-        keys.copy_from_slice(temp);
-    }
+    in_temp
 }
 
 #[cfg(test)]
 mod tests {
     #[test]
     fn sorts_like_the_standard_sort_on_the_chosen_bits() {
-        let mut x = 0x9E37_79B9_7F4A_7C15u64;
-        let mut keys: Vec<u64> = (0..5000)
-            .map(|i| {
-                x ^= x << 13;
-                x ^= x >> 7;
-                x ^= x << 17;
-                // Few distinct high parts, so stability matters; the index below.
-                (x % 37) << 40 | i
-            })
-            .collect();
-        let mut want = keys.clone();
-        want.sort_by_key(|k| k >> 40); // stable
-        let mut temp = vec![0; keys.len()];
-        super::sort(&mut keys, &mut temp, 40, 64);
-        assert_eq!(keys, want);
+        // Few distinct values (stability matters, one digit moves), then two and three digits.
+        for modulus in [37, 40_000, 1 << 24] {
+            let mut x = 0x9E37_79B9_7F4A_7C15u64;
+            let mut keys: Vec<u64> = (0..5000)
+                .map(|i| {
+                    x ^= x << 13;
+                    x ^= x >> 7;
+                    x ^= x << 17;
+                    // The index below the sorted bits.
+                    (x % modulus) << 40 | i
+                })
+                .collect();
+            let mut want = keys.clone();
+            want.sort_by_key(|k| k >> 40); // stable
+            let mut temp = vec![0; keys.len()];
+            let in_temp = super::sort(&mut keys, &mut temp, 40, 64);
+            assert_eq!(if in_temp { &temp } else { &keys }, &want, "{modulus}");
+        }
     }
 }
