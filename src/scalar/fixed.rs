@@ -39,7 +39,7 @@ macro_rules! saturate {
 macro_rules! fixed_scalar {
     (
         $t:ty, $unit:ty, $bits:ty, $wide:ty, $uwide:ty, $frac:expr, $ufrac:expr, $limit_int:expr,
-        $wmul:ident, $nmul:ident, $uwmul:ident, $wdot:ident, $ndot:ident, $ndiv:ident, $nscale:ident, $isqrt:ident, $sq:ty
+        $wmul:ident, $nmul:ident, $uwmul:ident, $wdot:ident, $ndot:ident, $ndiv:ident, $nscale:ident, $nnorm:ident, $isqrt:ident, $sq:ty
     ) => {
         impl Scalar for $t {
             const ZERO: Self = <$t>::ZERO;
@@ -169,6 +169,10 @@ macro_rules! fixed_scalar {
                 // Never zero for the inputs described, but a divisor the compiler cannot prove nonzero
                 // would leave a panic path in the binary.
                 let len = ($isqrt(len2 as $sq) as $wide).max(1);
+                let bits = [s.x.to_bits(), s.y.to_bits(), s.z.to_bits()];
+                if let Some(q) = $nnorm(bits, len) {
+                    return Vec3::new(q[0], q[1], q[2]).map(<$unit>::from_bits);
+                }
                 w.map(|c| {
                     let num = c << $ufrac;
                     let half = if num < 0 { -(len / 2) } else { len / 2 };
@@ -306,6 +310,7 @@ fixed_scalar!(
     narrow_dot_unit_i32,
     narrow_div_i32,
     narrow_scale_fraction_i32,
+    narrow_normalize_i32,
     isqrt_nearest_64,
     u64
 );
@@ -325,6 +330,7 @@ fixed_scalar!(
     no_narrow_dot_unit,
     no_narrow_div,
     no_narrow_scale_fraction,
+    no_narrow_normalize,
     isqrt_nearest_128,
     u128
 );

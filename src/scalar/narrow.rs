@@ -164,6 +164,40 @@ pub(super) fn split_div_i32(n: i32, d: i32) -> i32 {
     }
 }
 
+/// `round(c 2^30 / len)` to nearest, ties away from zero, for each `c`: exactly what `I16F16`'s
+/// generic unit normalisation gives (`(c 2^30 ± len/2) / len` in 64 bits) for a vector whose
+/// largest component lies in `[1/2, 1]` (`|c| <= 2^30`, so `2^29 < len < 2^31` but for an
+/// exact `±2^29` alone). One reciprocal `F = floor(2^61 / len)` is shared by the three: with it
+/// `floor(|c| F / 2^32)` is short of `Q = floor(|c| 2^29 / len)` by at most one, which the
+/// exact remainder (below `2 len`, so right modulo 2^32) fixes; `2 Q` plus one more bit of the
+/// remainder is the quotient by `2^30`, and the rest decides the rounding. `None` outside that
+/// domain, where the generic path runs.
+pub(super) fn split_normalize_i32(c: [i32; 3], len: u32) -> Option<[i32; 3]> {
+    const HALF: u32 = 1 << 29;
+    if len <= HALF || len >= 1 << 31 || c.iter().any(|c| c.unsigned_abs() > 1 << 30) {
+        return None;
+    }
+    let f = exact_quotient(HALF, remainder_steps::<32>(HALF, len), len, 32);
+    Some(c.map(|c| {
+        let a = c.unsigned_abs();
+        let mut q = high_mul_u32(a, f);
+        let mut rem = (a << 29).wrapping_sub(q.wrapping_mul(len));
+        if rem >= len {
+            q += 1;
+            rem -= len;
+        }
+        // |c| 2^30 = (2 q) len + 2 rem, with 2 rem < 2 len < 2^32.
+        let (mut q, mut rem) = (2 * q, 2 * rem);
+        if rem >= len {
+            q += 1;
+            rem -= len;
+        }
+        // At most 2^31 (|c| <= 2^30 < 2 len); the casts wrap as the generic path's do.
+        let q = (q + (rem >= len - rem) as u32) as i32;
+        if c < 0 { q.wrapping_neg() } else { q }
+    }))
+}
+
 /// `(q, r)` with `n 2^K = q d + r` and `0 <= r < d`, for `n < d <= 2^31` (so `q < 2^K`),
 /// `K <= 32`: [`remainder_steps`], then [`exact_quotient`].
 fn shifted_div<const K: u32>(n: u32, d: u32) -> (u32, u32) {

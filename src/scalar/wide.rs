@@ -116,6 +116,25 @@ pub(super) fn no_narrow_scale_fraction(_: [i64; 3], _: i64, _: i64) -> Option<[i
     None
 }
 
+/// `I16F16`'s unit normalisation `round(c 2^30 / len)` of three components on cores without a
+/// long multiply or a divide instruction: one shared reciprocal and 32-bit products
+/// ([`split_normalize_i32`]) instead of three 64-bit divisions; `None` elsewhere, and outside
+/// its domain, where the generic path runs.
+#[inline]
+pub(super) fn narrow_normalize_i32(c: [i32; 3], len: i64) -> Option<[i32; 3]> {
+    if cfg!(ballcast_no_long_mul) {
+        split_normalize_i32(c, u32::try_from(len).ok()?)
+    } else {
+        None
+    }
+}
+
+/// No narrow normalisation (`I32F32`).
+#[inline]
+pub(super) fn no_narrow_normalize(_: [i64; 3], _: i128) -> Option<[i64; 3]> {
+    None
+}
+
 /// `a * b` exactly in 128 bits (`I32F32`: no narrower path; its targets are 64-bit hosts).
 #[inline]
 pub(super) fn wide_mul_i64(a: i64, b: i64) -> i128 {

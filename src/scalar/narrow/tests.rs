@@ -2,7 +2,7 @@
 
 use super::{
     high_mul_u32, odd_inverse, shifted_div, small_mul_i32, split_div_i32, split_dot_unit_i32,
-    split_mul_i32, split_mul_u32, split_scale_fraction_i32,
+    split_mul_i32, split_mul_u32, split_normalize_i32, split_scale_fraction_i32,
 };
 use crate::Scalar;
 use crate::scalar::sealed::Kernel;
@@ -271,5 +271,95 @@ fn small_mul_is_exact() {
         ] {
             assert_eq!(small_mul_i32(s, b), generic(s, b), "{s} {b}");
         }
+    }
+}
+
+/// The generic unit normalisation of `I16F16` (`fixed.rs`): `(c 2^30 ± len/2) / len` in 64 bits.
+fn normalize_64(c: i32, len: u32) -> i32 {
+    let (num, len) = ((c as i64) << 30, len as i64);
+    let half = if num < 0 { -(len / 2) } else { len / 2 };
+    ((num + half) / len) as i32
+}
+
+/// The shared-reciprocal normalisation equals three 64-bit divisions (no exact ties arise: the
+/// power of two in `len < 2^31` is below that of `c 2^31`): on the domain's edges, on 10^6 unit-scaled vectors with their own rounded length and on 10^6
+/// components and lengths drawn anywhere in the domain; outside it, it declines.
+#[test]
+fn split_normalize_is_exact() {
+    let check = |c: [i32; 3], len: u32| {
+        let want = c.map(|c| normalize_64(c, len));
+        assert_eq!(split_normalize_i32(c, len), Some(want), "{c:?} {len}");
+    };
+    let lens = [
+        (1 << 29) + 1,
+        (1 << 29) + 2,
+        3 << 29,
+        (1 << 30) - 1,
+        1 << 30,
+        (1 << 31) - 1,
+    ];
+    let cs = [
+        -(1 << 30),
+        -(1 << 30) + 1,
+        -(1 << 29),
+        -1,
+        0,
+        1,
+        1 << 29,
+        (1 << 30) - 1,
+        1 << 30,
+    ];
+    for len in lens {
+        for c in cs {
+            check([c, -c, c / 3], len);
+        }
+    }
+    // The nearest approaches to a tie: remainders `(len ± 1) / 2` for odd lengths, from
+    // `c = rem / 2^30 (mod len)` (2^30 is invertible modulo an odd length).
+    for len in [(1 << 29) + 1, (1 << 29) + 12_345, (1 << 30) - 3] {
+        let step = (1u64 << 30) % len as u64;
+        for want in [len as u64 / 2, (len as u64).div_ceil(2)] {
+            // c 2^30 = want (mod len): c from the extended Euclidean algorithm on (step, len).
+            let (mut r0, mut r1, mut t0, mut t1) = (len as i128, step as i128, 0i128, 1i128);
+            while r1 != 0 {
+                let q = r0 / r1;
+                (r0, r1) = (r1, r0 - q * r1);
+                (t0, t1) = (t1, t0 - q * t1);
+            }
+            let c = (t0.rem_euclid(len as i128) * want as i128 % len as i128) as i32;
+            assert_eq!(((c as u64) << 30) % len as u64, want);
+            check([c, -c, 0], len);
+        }
+    }
+    let mut x: u64 = 0x2545_F491_4F6C_DD1D;
+    let mut next = || {
+        x ^= x << 13;
+        x ^= x >> 7;
+        x ^= x << 17;
+        x
+    };
+    for _ in 0..1_000_000 {
+        let r = next();
+        // A vector scaled as `unit_normalize` receives it: largest magnitude in [2^29, 2^30].
+        let big = (1 << 29) + (r as u32 >> 3) as i32 % ((1 << 29) + 1);
+        let small = |k: u32| (((r >> k) as u32 as i64 % (2 * big as i64 + 1)) - big as i64) as i32;
+        let c = [
+            big * if r >> 63 == 0 { 1 } else { -1 },
+            small(32),
+            small(40),
+        ];
+        let len2: u64 = c.iter().map(|&c| (c as i64 * c as i64) as u64).sum();
+        check(c, crate::scalar::isqrt::isqrt_nearest_64(len2) as u32);
+        let r = next();
+        let len = (1 << 29) + 1 + (r as u32) % ((3 << 29) - 1);
+        let c = |k: u32| ((r >> k) as u32 % ((1 << 31) + 1)) as i32 - (1 << 30);
+        check([c(0), c(21), c(42)], len);
+    }
+    for (c, len) in [
+        ([1 << 29, 0, 0], 1 << 29),
+        ([(1 << 30) + 1, 0, 0], 1 << 30),
+        ([0; 3], 1 << 31),
+    ] {
+        assert_eq!(split_normalize_i32(c, len), None, "{c:?} {len}");
     }
 }
