@@ -16,7 +16,7 @@
 //! the prepared mesh, in exchange for a sixth of the memory.
 
 use crate::bvh::{self, Grid, Node};
-use crate::cull::Path;
+use crate::cull::{Path, SOFT_F64, UnitBox};
 use crate::merge::{Earliest, earliest};
 use crate::scalar::{largest, smallest};
 use crate::{Features, Geometry, Mesh, Scalar, SceneHit, StandardTriangle, Sweep, Triangle, Vec3};
@@ -252,30 +252,48 @@ impl<'a, S: Scalar, I: MeshIndex> CompactMesh<'a, S, I> {
 
     /// The earliest contact along the sweep: the prepared mesh's answer, bit for bit.
     pub fn cast(&self, sweep: &Sweep<S>) -> Option<SceneHit<S>> {
+        self.cast_culled(sweep, SOFT_F64)
+    }
+
+    /// [`cast`](Self::cast), passing triangles by before preparing them with the `f64` box and
+    /// plane tests, or (`integer`, for a fixed-point sweep) with its box in integers alone: where
+    /// `f64` is software (a Cortex-M) the `f64` tests cost more than the preparations they
+    /// save. Either way the answer is the same.
+    fn cast_culled(&self, sweep: &Sweep<S>, integer: bool) -> Option<SceneHit<S>> {
         let cells = self.grid.lo.iter().chain(&self.grid.hi);
         let extent =
             cells.fold(0.0f64, |m, &c| m.max((c as f64).abs())) / Grid::scale(self.grid.exponent);
         let path = Path::new(sweep, extent, self.class);
+        let units = if integer {
+            UnitBox::new(sweep, path.pad)
+        } else {
+            None
+        };
         let corners = |s: usize| Some(self.triangles.get(s)?.map(I::get));
         let slot = |s: usize| -> Option<(usize, StandardTriangle<S>)> {
             let t = triangle(self.vertices, corners(s)?)?;
             Some((self.order.get(s)?.get(), prepare(&t, *self.bytes.get(s)?)?))
         };
+        // Whether slot `s` may hold a contact within the reach (preparing costs far more).
+        let near = |acc: &Earliest<S>, s: usize| -> Option<()> {
+            let c = corners(s)?;
+            if let Some(b) = &units {
+                return (!b.misses(triangle(self.vertices, c)?.vertices())).then_some(());
+            }
+            let limit = S::to_f64(acc.reach()) + 1.0 / (1u64 << 50) as f64;
+            let v = world(self.vertices, c)?;
+            // Coordinates of validated vertices: never NaN.
+            let lo = [0, 1, 2].map(|a| smallest(v[0][a], v[1][a], v[2][a]));
+            let hi = [0, 1, 2].map(|a| largest(v[0][a], v[1][a], v[2][a]));
+            let two_sided = self.bytes.get(s).is_some_and(|b| b & TWO_SIDED != 0);
+            let span = path.clip(lo, hi, limit)?;
+            path.near_plane(v, span, !two_sided).then_some(())
+        };
         let mut sound = true;
         let hit = earliest(|acc: &mut Earliest<S>| {
             sound &= bvh::leaves_along(self.nodes, &self.grid, sweep, acc, |acc, slots, _| {
                 for s in slots {
-                    // The triangle's box and plane first: preparing costs far more.
-                    let limit = S::to_f64(acc.reach()) + 1.0 / (1u64 << 50) as f64;
-                    let Some(v) = corners(s).and_then(|c| world(self.vertices, c)) else {
-                        continue;
-                    };
-                    // Coordinates of validated vertices: never NaN.
-                    let lo = [0, 1, 2].map(|a| smallest(v[0][a], v[1][a], v[2][a]));
-                    let hi = [0, 1, 2].map(|a| largest(v[0][a], v[1][a], v[2][a]));
-                    let two_sided = self.bytes.get(s).is_some_and(|b| b & TWO_SIDED != 0);
-                    if let Some(span) = path.clip(lo, hi, limit)
-                        && path.near_plane(v, span, !two_sided)
+                    if near(acc, s).is_some()
                         && let Some((i, t)) = slot(s)
                         && let Some(hit) = t.cast_within(sweep, acc.reach())
                     {
@@ -378,3 +396,6 @@ impl<S: Scalar, I: MeshIndex> CompactMesh<'_, S, I> {
         }
     }
 }
+
+#[cfg(test)]
+mod tests;

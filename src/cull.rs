@@ -4,7 +4,7 @@
 //! [`CompactMesh`](crate::CompactMesh)).
 
 use crate::scalar::largest;
-use crate::{Scalar, Sweep};
+use crate::{Scalar, Sweep, Vec3};
 
 /// The sweep in world units (`f64`), with what every box test needs.
 pub(crate) struct Path {
@@ -136,4 +136,43 @@ impl Path {
 /// `a < b`, false where either is NaN (never expected): a NaN keeps a triangle.
 pub(crate) fn is_less(a: f64, b: f64) -> bool {
     a.partial_cmp(&b) == Some(core::cmp::Ordering::Less)
+}
+
+/// Whether `f64` arithmetic is software on this target: bare-metal Arm, whose Cortex-M FPUs,
+/// where present, are single precision. There the forms that prepare triangles on the fly pass
+/// a fixed-point sweep's triangles by with its [`UnitBox`] alone: on a Cortex-M0 the `f64` box
+/// and plane tests cost several times the preparations they save. Culls only pass triangles
+/// by, so the answers are the same on every target.
+pub(crate) const SOFT_F64: bool = cfg!(all(target_arch = "arm", target_os = "none"));
+
+/// The box the grown path of a fixed-point sweep stays within, in its scalar's units
+/// (`2^-frac`): a triangle whose three vertices all lie beyond it on one axis is out of reach,
+/// told by integer comparisons. Floats have none.
+pub(crate) struct UnitBox {
+    lo: [i64; 3],
+    hi: [i64; 3],
+}
+
+impl UnitBox {
+    /// The box of the whole segment of `sweep`, grown by `pad` (the [`Path`]'s), rounded out.
+    pub(crate) fn new<S: Scalar>(sweep: &Sweep<S>, pad: f64) -> Option<Self> {
+        let (_, frac) = sweep.radius().fixed_bits()?;
+        let bits = |p: Vec3<S>| p.to_array().map(|v| v.fixed_bits().map_or(0, |(b, _)| b));
+        let (p0, p1) = (bits(sweep.p0()), bits(sweep.p1()));
+        // Exact scaling by a power of two, then up to whole units (saturating; never NaN).
+        let pad = libm::ceil(pad * (1u64 << frac.min(62)) as f64) as i64;
+        Some(Self {
+            lo: [0, 1, 2].map(|a| p0[a].min(p1[a]).saturating_sub(pad)),
+            hi: [0, 1, 2].map(|a| p0[a].max(p1[a]).saturating_add(pad)),
+        })
+    }
+
+    /// Whether the triangle `v` lies wholly beyond the box on some axis.
+    pub(crate) fn misses<S: Scalar>(&self, v: [Vec3<S>; 3]) -> bool {
+        (0..3).any(|a| {
+            let c = v.map(|p| p.to_array()[a].fixed_bits().map_or(0, |(b, _)| b));
+            let (low, high) = (c[0].min(c[1]).min(c[2]), c[0].max(c[1]).max(c[2]));
+            high < self.lo[a] || low > self.hi[a]
+        })
+    }
 }

@@ -1,0 +1,126 @@
+//! The integer culling of fixed-point sweeps, which only targets with software `f64` take
+//! (`cull::SOFT_F64`), against the `f64` culling every other target takes: the same answers.
+
+use super::CompactMesh;
+use crate::bvh::nodes_for;
+use crate::cull::{Path, UnitBox};
+use crate::xorshift::Rng;
+use crate::{Degenerates, Mesh, Node, Scalar, Sweep, Triangle, Vec3};
+use fixed::types::{I16F16, I32F32};
+
+/// Uniform in `[0, 1)`.
+fn unit(rng: &mut Rng) -> f64 {
+    (rng.signed() + 1.0) / 2.0
+}
+
+/// A bumpy 10 × 10 terrain (cells of side 1 around the origin, counter-clockwise from above)
+/// and 120 random triangles above it: indexed vertices and triangles.
+fn level(rng: &mut Rng) -> (Vec<[f64; 3]>, Vec<[u32; 3]>) {
+    let w = 10;
+    let mut vertices: Vec<[f64; 3]> = (0..(w + 1) * (w + 1))
+        .map(|k| {
+            let (i, j) = ((k % (w + 1)) as f64 - 5.0, (k / (w + 1)) as f64 - 5.0);
+            [i, 0.6 * unit(rng) - 0.3, j]
+        })
+        .collect();
+    let mut indices = Vec::new();
+    let at = |i: usize, j: usize| (j * (w + 1) + i) as u32;
+    for j in 0..w {
+        for i in 0..w {
+            indices.push([at(i, j), at(i, j + 1), at(i + 1, j + 1)]);
+            indices.push([at(i, j), at(i + 1, j + 1), at(i + 1, j)]);
+        }
+    }
+    for _ in 0..120 {
+        let c = [
+            10.0 * unit(rng) - 5.0,
+            3.0 * unit(rng),
+            10.0 * unit(rng) - 5.0,
+        ];
+        let first = vertices.len() as u32;
+        for _ in 0..3 {
+            vertices.push(c.map(|x| x + 1.6 * unit(rng) - 0.8));
+        }
+        indices.push([first, first + 1, first + 2]);
+    }
+    (vertices, indices)
+}
+
+fn integer_culling_answers_alike<S: Scalar>() {
+    let mut rng = Rng(0x1e7_b0c5);
+    let (points, indices) = level(&mut rng);
+    let vertices: Vec<Vec3<S>> = points
+        .iter()
+        .map(|p| Vec3::new(S::from_f64(p[0]), S::from_f64(p[1]), S::from_f64(p[2])))
+        .collect();
+    let src: Vec<Triangle<S>> = indices
+        .iter()
+        .map(|t| {
+            Triangle::new(
+                vertices[t[0] as usize],
+                vertices[t[1] as usize],
+                vertices[t[2] as usize],
+            )
+        })
+        .collect();
+    let n = src.len();
+    let mut nodes = vec![Node::default(); nodes_for(n)];
+    let (mut tris, mut order) = (vec![Mesh::<S>::filler(); n], vec![0u32; n]);
+    let mut scratch = vec![0u64; 6 * n];
+    let (mesh, _) = Mesh::build(
+        &src,
+        Degenerates::Skip,
+        &mut nodes,
+        &mut tris,
+        &mut order,
+        &mut scratch,
+    )
+    .unwrap();
+    let m = mesh.len();
+    let (mut t, mut o, mut b) = (vec![[0u16; 3]; m], vec![0u16; m], vec![0u8; m]);
+    let compact = CompactMesh::compact(&mesh, &vertices, &indices, &mut t, &mut o, &mut b).unwrap();
+    let (mut hits, mut passed) = (0, 0);
+    for k in 0..3000 {
+        let p0 = [
+            10.0 * unit(&mut rng) - 5.0,
+            4.0 * unit(&mut rng) - 0.5,
+            10.0 * unit(&mut rng) - 5.0,
+        ];
+        // Short moves (as a slide makes) and long casts.
+        let reach = if k % 2 == 0 { 0.6 } else { 12.0 };
+        let p1 = p0.map(|x| x + reach * (2.0 * unit(&mut rng) - 1.0));
+        let point =
+            |p: [f64; 3]| Vec3::new(S::from_f64(p[0]), S::from_f64(p[1]), S::from_f64(p[2]));
+        let sweep = Sweep::new(
+            point(p0),
+            point(p1),
+            S::from_f64(0.05 + 0.5 * unit(&mut rng)),
+        )
+        .unwrap();
+        let (x, y) = (
+            compact.cast_culled(&sweep, true),
+            compact.cast_culled(&sweep, false),
+        );
+        assert_eq!(format!("{x:?}"), format!("{y:?}"), "{p0:?} -> {p1:?}");
+        assert_eq!(format!("{x:?}"), format!("{:?}", mesh.cast(&sweep)));
+        hits += x.is_some() as usize;
+        // The integer box does pass triangles by (the test would prove nothing otherwise).
+        let path = Path::new(&sweep, 16.0, 0);
+        let units = UnitBox::new(&sweep, path.pad).unwrap();
+        passed += src.iter().filter(|t| units.misses(t.vertices())).count();
+    }
+    assert!(
+        hits > 600 && passed > 1000 * n,
+        "{hits} hits, {passed} passed by"
+    );
+}
+
+#[test]
+fn integer_culling_answers_alike_i16f16() {
+    integer_culling_answers_alike::<I16F16>();
+}
+
+#[test]
+fn integer_culling_answers_alike_i32f32() {
+    integer_culling_answers_alike::<I32F32>();
+}
