@@ -4,17 +4,24 @@
 /// Most digits a sort takes: 32 bits of key.
 const DIGITS: usize = 4;
 
-/// Sorts `keys` by bits `from..to` (stable: keys equal there keep their order; at most 32 bits),
-/// using `temp` (at least as long as `keys`) as the other buffer, and returns whether the sorted
-/// keys ended in `temp` (its first `keys.len()` words) rather than in `keys`. Digits of 8 bits,
-/// counted together in one pass; a digit on which every key agrees costs no move.
+/// Sorts `keys` by bits `from..to` (stable: keys equal there keep their order; at most 32 bits,
+/// those beyond `from + 32` are not looked at), using `temp` (at least as long as `keys`) as
+/// the other buffer, and returns whether the sorted keys ended in `temp` (its first
+/// `keys.len()` words) rather than in `keys`. Digits of 8 bits (the last one narrower where the
+/// width is not a multiple of 8), counted together in one pass; a digit on which every key
+/// agrees costs no move.
 pub(crate) fn sort(keys: &mut [u64], temp: &mut [u64], from: u32, to: u32) -> bool {
     let n = keys.len();
     let Some(temp) = temp.get_mut(..n) else {
         return false;
     };
-    let digits = (to.saturating_sub(from).div_ceil(8) as usize).min(DIGITS);
-    let digit = |k: u64, d: usize| ((k >> (from + 8 * d as u32)) & 0xff) as usize;
+    let width = to.saturating_sub(from).min(8 * DIGITS as u32);
+    let digits = width.div_ceil(8) as usize;
+    // Digit `d`: bits `from + 8d` up to 8 of them, none at or beyond `to`.
+    let digit = |k: u64, d: usize| {
+        let (shift, bits) = (8 * d as u32, (width - 8 * d as u32).min(8));
+        ((k >> (from + shift)) & ((1 << bits) - 1)) as usize
+    };
     // Counts as u32 (n < 2^32 for every caller): 4 KB of stack however long the keys.
     let mut count = [[0u32; 256]; DIGITS];
     for &k in keys.iter() {
@@ -55,21 +62,33 @@ mod tests {
     fn sorts_like_the_standard_sort_on_the_chosen_bits() {
         // Few distinct values (stability matters, one digit moves), then two and three digits.
         for modulus in [37, 40_000, 1 << 24] {
-            let mut x = 0x9E37_79B9_7F4A_7C15u64;
-            let mut keys: Vec<u64> = (0..5000)
-                .map(|i| {
-                    x ^= x << 13;
-                    x ^= x >> 7;
-                    x ^= x << 17;
-                    // The index below the sorted bits.
-                    (x % modulus) << 40 | i
-                })
-                .collect();
-            let mut want = keys.clone();
-            want.sort_by_key(|k| k >> 40); // stable
-            let mut temp = vec![0; keys.len()];
-            let in_temp = super::sort(&mut keys, &mut temp, 40, 64);
-            assert_eq!(if in_temp { &temp } else { &keys }, &want, "{modulus}");
+            sort_matches(modulus, 40, 64);
+            // Bits above `to` do not count: a width that is not a multiple of 8.
+            sort_matches(modulus, 40, 53);
         }
+    }
+
+    /// Keys of `(x % modulus) << 40 | index`, sorted on bits `from..to`, against the standard
+    /// stable sort on the same bits.
+    fn sort_matches(modulus: u64, from: u32, to: u32) {
+        let mut x = 0x9E37_79B9_7F4A_7C15u64;
+        let mut keys: Vec<u64> = (0..5000)
+            .map(|i| {
+                x ^= x << 13;
+                x ^= x >> 7;
+                x ^= x << 17;
+                // The index below the sorted bits.
+                (x % modulus) << 40 | i
+            })
+            .collect();
+        let mut want = keys.clone();
+        want.sort_by_key(|k| (k >> from) & ((1u64 << (to - from)) - 1)); // stable
+        let mut temp = vec![0; keys.len()];
+        let in_temp = super::sort(&mut keys, &mut temp, from, to);
+        assert_eq!(
+            if in_temp { &temp } else { &keys },
+            &want,
+            "{modulus} {from}..{to}"
+        );
     }
 }

@@ -113,6 +113,35 @@ fn integer_culling_answers_alike<S: Scalar>() {
         hits > 600 && passed > 1000 * n,
         "{hits} hits, {passed} passed by"
     );
+    // Grazing: a short move beside each lone triangle's extreme vertex along an axis, at the
+    // radius plus -3 to 3 steps of the scalar, where a box grown by a step too little would
+    // pass by a contact the `f64` tests keep.
+    let step = 1.0 / (1u64 << S::ONE.fixed_bits().map_or(0, |(_, f)| f)) as f64;
+    let point = |p: [f64; 3]| Vec3::new(S::from_f64(p[0]), S::from_f64(p[1]), S::from_f64(p[2]));
+    let mut grazed = 0;
+    for t in &indices[200..] {
+        let t = t.map(|i| points[i as usize]);
+        for (a, side) in (0..3).flat_map(|a| [(a, 1.0), (a, -1.0)]) {
+            let v = t
+                .iter()
+                .fold(t[0], |m, p| if side * p[a] > side * m[a] { *p } else { m });
+            for k in -3..=3 {
+                let mut mid = v;
+                mid[a] += side * (0.25 + k as f64 * step);
+                let (mut p0, mut p1) = (mid, mid);
+                p0[(a + 1) % 3] -= 0.35;
+                p1[(a + 1) % 3] += 0.35;
+                let sweep = Sweep::new(point(p0), point(p1), S::from_f64(0.25)).unwrap();
+                let (x, y) = (
+                    compact.cast_culled(&sweep, true),
+                    compact.cast_culled(&sweep, false),
+                );
+                assert_eq!(format!("{x:?}"), format!("{y:?}"), "{p0:?} -> {p1:?} {k}");
+                grazed += x.is_some() as usize;
+            }
+        }
+    }
+    assert!(grazed > 1000, "{grazed} grazing hits");
 }
 
 #[test]

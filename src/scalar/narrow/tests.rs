@@ -342,18 +342,18 @@ fn split_normalize_is_exact() {
         let r = next();
         // A vector scaled as `unit_normalize` receives it: largest magnitude in [2^29, 2^30].
         let big = (1 << 29) + (r as u32 >> 3) as i32 % ((1 << 29) + 1);
-        let small = |k: u32| (((r >> k) as u32 as i64 % (2 * big as i64 + 1)) - big as i64) as i32;
+        let small = |w: u64| ((w as u32 as i64 % (2 * big as i64 + 1)) - big as i64) as i32;
         let c = [
             big * if r >> 63 == 0 { 1 } else { -1 },
-            small(32),
-            small(40),
+            small(r >> 32),
+            small(next()),
         ];
         let len2: u64 = c.iter().map(|&c| (c as i64 * c as i64) as u64).sum();
         check(c, crate::scalar::isqrt::isqrt_nearest_64(len2) as u32);
         let r = next();
         let len = (1 << 29) + 1 + (r as u32) % ((3 << 29) - 1);
-        let c = |k: u32| ((r >> k) as u32 % ((1 << 31) + 1)) as i32 - (1 << 30);
-        check([c(0), c(21), c(42)], len);
+        let c = |w: u64| (w as u32 % ((1 << 31) + 1)) as i32 - (1 << 30);
+        check([c(r >> 32), c(next()), c(next())], len);
     }
     for (c, len) in [
         ([1 << 29, 0, 0], 1 << 29),
