@@ -1,6 +1,7 @@
 //! Conservative culling of one triangle against a swept ball, before it is prepared: its box,
-//! then its plane, in `f64`, grown by the radius and a bound on every rounding. Shared by the
-//! forms that prepare triangles on the fly ([`Heightfield`](crate::Heightfield),
+//! then its plane, in `f64`, grown by the radius and a bound on every rounding (or, for a
+//! fixed-point sweep where `f64` is software, its box alone in integers: [`UnitBox`]). Shared
+//! by the forms that prepare triangles on the fly ([`Heightfield`](crate::Heightfield),
 //! [`CompactMesh`](crate::CompactMesh)).
 
 use crate::scalar::largest;
@@ -141,9 +142,8 @@ pub(crate) fn is_less(a: f64, b: f64) -> bool {
 /// Whether `f64` arithmetic is software on this target: bare-metal Arm, whose Cortex-M FPUs,
 /// where present, are single precision. There a [`CompactMesh`](crate::CompactMesh) passes a
 /// fixed-point sweep's triangles by with its [`UnitBox`] alone (a heightfield's walk stays in
-/// `f64`): on a Cortex-M0 the `f64` box
-/// and plane tests cost several times the preparations they save. Culls only pass triangles
-/// by, so the answers are the same on every target.
+/// `f64`): on a Cortex-M0 the `f64` box and plane tests cost several times the preparations
+/// they save. Culls only pass triangles by, so the answers are the same on every target.
 pub(crate) const SOFT_F64: bool = cfg!(all(target_arch = "arm", target_os = "none"));
 
 /// The box the grown path of a fixed-point sweep stays within, in its scalar's units
