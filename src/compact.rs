@@ -287,7 +287,7 @@ impl<'a, S: Scalar, I: MeshIndex> CompactMesh<'a, S, I> {
             let hi = [0, 1, 2].map(|a| largest(v[0][a], v[1][a], v[2][a]));
             let two_sided = self.bytes.get(s).is_some_and(|b| b & TWO_SIDED != 0);
             let span = path.clip(lo, hi, limit)?;
-            path.near_plane(v, span, !two_sided).then_some(())
+            path.near_triangle(v, span, !two_sided).then_some(())
         };
         let mut sound = true;
         let hit = earliest(|acc: &mut Earliest<S>| {

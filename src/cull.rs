@@ -92,20 +92,50 @@ impl Path {
     /// direction is off by up to that step over the product's length (`|n| / (l1 l2)` for the
     /// two longest edges' largest components `l1`, `l2`: no more than the scaled edges' product).
     /// Heights at a distance `D` from the triangle's first vertex move by the tilt times `D`.
-    pub(crate) fn near_plane(
+    pub(crate) fn near_plane(&self, v: [[f64; 3]; 3], span: (f64, f64), one_sided: bool) -> bool {
+        self.slab(v, span, one_sided).is_some()
+    }
+
+    /// [`near_plane`](Self::near_plane), and then whether the part of the span within reach
+    /// of the plane keeps out of reach of every edge's line on the outer side: each point of
+    /// the triangle lies on the inner side of all three, so a ball centre farther than its
+    /// radius (and every rounding) beyond one of them cannot touch it. Distances within the
+    /// plane are off in the prepared frame by the same tilt as heights, so the same reach
+    /// bounds both.
+    pub(crate) fn near_triangle(
         &self,
         v: [[f64; 3]; 3],
-        (t0, t1): (f64, f64),
+        span: (f64, f64),
         one_sided: bool,
     ) -> bool {
-        let sub = |a: [f64; 3], b: [f64; 3]| [0, 1, 2].map(|k| a[k] - b[k]);
-        let dot = |a: [f64; 3], b: [f64; 3]| a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+        let Some(Slab {
+            n,
+            span: (a, b),
+            reach,
+        }) = self.slab(v, span, one_sided)
+        else {
+            return false;
+        };
+        // Outward in the plane from edge `i` is `e_i × n`, of length |e_i| |n|; the distance
+        // times that is linear along the path, so the span's ends decide. Squares compare it
+        // with the reach (itself times |n|) without a square root.
+        // An empty part (by rounding: the plane tests kept the triangle) keeps it too.
+        is_less(b, a)
+            || !(0..3).any(|i| {
+                let (from, e) = (v[i], sub(v[(i + 1) % 3], v[i]));
+                let out = cross(e, n);
+                let (w0, dw) = (dot(sub(self.p0, from), out), dot(self.d, out));
+                let (wa, wb) = (w0 + a * dw, w0 + b * dw);
+                let limit = reach * reach * dot(e, e);
+                wa > 0.0 && wb > 0.0 && wa * wa > limit && wb * wb > limit
+            })
+    }
+
+    /// The plane tests of [`near_plane`](Self::near_plane): for a triangle they keep, its
+    /// normal, the part of the span within reach of its plane, and that reach.
+    fn slab(&self, v: [[f64; 3]; 3], (t0, t1): (f64, f64), one_sided: bool) -> Option<Slab> {
         let (e, f) = (sub(v[1], v[0]), sub(v[2], v[0]));
-        let n = [
-            e[1] * f[2] - e[2] * f[1],
-            e[2] * f[0] - e[0] * f[2],
-            e[0] * f[1] - e[1] * f[0],
-        ];
+        let n = cross(e, f);
         // Distances times |n|, where the path enters the triangle's box and where it leaves.
         let (start, along) = (dot(n, sub(self.p0, v[0])), dot(n, self.d));
         let (d0, d1) = (start + t0 * along, start + t1 * along);
@@ -130,8 +160,51 @@ impl Path {
                 || is_less(2.0 * height(big(self.d)), along));
         // d0 and d1 are finite (the path and the triangle are): ordered by one comparison.
         let (near, far) = if d1 < d0 { (d1, d0) } else { (d0, d1) };
-        !(behind || is_less(reach, near) || is_less(far, -reach))
+        if behind || is_less(reach, near) || is_less(far, -reach) {
+            return None;
+        }
+        let (mut a, mut b) = (t0, t1);
+        if along != 0.0 {
+            let (ta, tb) = ((-reach - start) / along, (reach - start) / along);
+            let (lo, hi) = if tb < ta { (tb, ta) } else { (ta, tb) };
+            if lo > a {
+                a = lo;
+            }
+            if hi < b {
+                b = hi;
+            }
+        }
+        Some(Slab {
+            n,
+            span: (a, b),
+            reach,
+        })
     }
+}
+
+/// What [`Path::near_plane`] found of a triangle it keeps: its normal `n` (unnormalised), the
+/// part of the span where the path is within `reach` of its plane, and that reach (times
+/// `|n|`, as are all distances here).
+struct Slab {
+    n: [f64; 3],
+    span: (f64, f64),
+    reach: f64,
+}
+
+fn sub(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
+    [0, 1, 2].map(|k| a[k] - b[k])
+}
+
+fn dot(a: [f64; 3], b: [f64; 3]) -> f64 {
+    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+}
+
+fn cross(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
+    [
+        a[1] * b[2] - a[2] * b[1],
+        a[2] * b[0] - a[0] * b[2],
+        a[0] * b[1] - a[1] * b[0],
+    ]
 }
 
 /// `a < b`, false where either is NaN (never expected): a NaN keeps a triangle.
@@ -177,3 +250,6 @@ impl UnitBox {
         })
     }
 }
+
+#[cfg(test)]
+mod tests;
