@@ -1,5 +1,5 @@
 //! [`CompactMesh`]: a [`Mesh`]'s tree over shared vertices and indexed triangles, about 19
-//! bytes per triangle of a terrain in `f32` or `I16F16` (a prepared mesh: 120), answering exactly
+//! bytes per triangle of a terrain in `f32` or `I16F16` (a prepared mesh: 100), answering exactly
 //! as the prepared mesh.
 //!
 //! # Layout

@@ -298,7 +298,7 @@ impl<S: Scalar> StandardTriangle<S> {
         let margin = S::div_pow2(r, 6) + tie::<S>();
         let q = Vec3::new(xq, S::ZERO, zq);
         (0..3).all(|i| {
-            let w = S::dot_unit(q - self.corner(i), self.edges[i].out());
+            let w = S::dot_unit(q - self.corner(i), self.edge(i).out());
             w <= if self.features.edge(i) {
                 S::ZERO
             } else {
@@ -320,7 +320,7 @@ impl<S: Scalar> StandardTriangle<S> {
 
     /// First contact with the interior of edge `i`, from vertex `i` to vertex `i + 1`.
     fn edge_contact(&self, i: usize, p0: Vec3<S>, d: Vec3<S>, r: S) -> Option<Timed<S>> {
-        let e = &self.edges[i];
+        let e = &self.edge(i);
         let rel = p0 - self.corner(i);
         // Along the edge (u) and away from the triangle in its plane (w).
         let (along, out) = (e.along(), e.out());

@@ -51,7 +51,7 @@ fn spans<S: Scalar>(
     i: usize,
     intervals: impl Iterator<Item = (S, S)> + Clone,
 ) -> bool {
-    let (len, tol) = (t.edges[i].len, tolerance(t, i));
+    let (len, tol) = (t.edge(i).len, tolerance(t, i));
     // Extend the covered stretch [0, reach] from the edge's start until no interval extends it.
     let mut reach = S::ZERO;
     loop {
@@ -147,7 +147,7 @@ pub(crate) fn interval<S: Scalar>(
     if same_triangle(o, t) || !same_plane(o.normal(), t.normal()) {
         return None;
     }
-    let (corner, edge, tol) = (t.corner(i), t.edges[i], tolerance(t, i));
+    let (corner, edge, tol) = (t.corner(i), t.edge(i), tolerance(t, i));
     let (a, b) = (t.standard_point(a), t.standard_point(b));
     let on_line = |p: Vec3<S>| p.y.abs() <= tol && S::dot_unit(p - corner, edge.out()).abs() <= tol;
     let along = |p: Vec3<S>| S::dot_unit(p - corner, edge.along());
@@ -168,7 +168,7 @@ fn same_triangle<S: Scalar>(o: &StandardTriangle<S>, t: &StandardTriangle<S>) ->
 fn tolerance<S: Scalar>(t: &StandardTriangle<S>, i: usize) -> S {
     let o = t.origin();
     let extent = largest(o.x.abs(), o.y.abs(), o.z.abs());
-    let len = t.edges[i].len;
+    let len = t.edge(i).len;
     let e = S::height_error(if extent > len { extent } else { len });
     e + e + e + e
 }

@@ -20,7 +20,7 @@
 //! with the rule of a [`Scene`](crate::Scene) (flat or valley across a shared edge: inactive;
 //! ridge or open: active), from the triangles prepared exactly as a mesh would prepare them, so
 //! the same triangles give the same answers in every form. Memory: 2 bytes per vertex and 1
-//! per cell, about 1.5 bytes per triangle (a prepared triangle is 112 bytes in `f32`).
+//! per cell, about 1.5 bytes per triangle (a prepared triangle is 92 bytes in `f32`).
 //!
 //! # Query
 //! The sweep's footprint in x–z, grown by the radius and a bound on every rounding (as the

@@ -18,7 +18,7 @@ use core::fmt;
 /// the same prepared triangles in input order gives (the slice [`Geometry`]), including merged
 /// simultaneous contacts; `index` is the triangle's index in the input.
 ///
-/// Memory per triangle: the prepared triangle (112 bytes for `f32` and `I16F16`, 224 for `f64`
+/// Memory per triangle: the prepared triangle (92 bytes for `f32` and `I16F16`, 184 for `f64`
 /// and `I32F32`), 4 bytes of `order`, and 3.7 bytes of nodes (a 44-byte node per about 12
 /// triangles; 8 364 for 100 352): the tree adds about 7.7 bytes per triangle in every scalar.
 /// The build also needs six scratch words (48 bytes) per triangle while it runs.

@@ -103,7 +103,7 @@ pub(crate) fn overlap<S: Scalar>(
 ) -> Option<Penetration<S>> {
     // The triangle lies within its two edges at v0 of its origin: a few comparisons reject most
     // triangles of a scan before any product.
-    let (e, o) = (&t.edges, t.origin());
+    let (e, o) = (t.edges(), t.origin());
     let reach = r + if e[0].len > e[2].len {
         e[0].len
     } else {
@@ -135,7 +135,7 @@ pub(crate) fn overlap<S: Scalar>(
         return None;
     }
     let flat = Vec3::new(q.x, S::ZERO, q.z);
-    let inside = (t.edges.iter().enumerate())
+    let inside = (t.edges().iter().enumerate())
         .all(|(i, e)| S::dot_unit(flat - t.corner(i), e.out()) <= S::ZERO);
     // The face region: out along the normal on the centre's side.
     let face = || {
@@ -153,7 +153,7 @@ pub(crate) fn overlap<S: Scalar>(
     }
     // The nearest point of the nearest edge segment (its ends are the vertices).
     let mut near: Option<(S, Vec3<S>, Contact)> = None;
-    for (i, e) in t.edges.iter().enumerate() {
+    for (i, e) in t.edges().iter().enumerate() {
         let along = e.along();
         let u = S::dot_unit(flat - t.corner(i), along);
         let (u, contact) = if u <= S::ZERO {

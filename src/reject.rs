@@ -29,7 +29,7 @@ impl<S: Scalar> StandardTriangle<S> {
     /// is touched with the centre in front of the plane): see [`clipped_beyond`].
     pub(crate) fn beyond_an_edge(&self, a: Vec3<S>, b: Vec3<S>, r: S) -> bool {
         (0..3).any(|i| {
-            let (c, out) = (self.corner(i), self.edges[i].out());
+            let (c, out) = (self.corner(i), self.edge(i).out());
             let (wa, wb) = (S::dot_unit(a - c, out), S::dot_unit(b - c, out));
             wa > r && (wb > r || (b.y < S::ZERO && clipped_beyond(a, b, wa, wb, r)))
         })

@@ -68,8 +68,10 @@ pub struct StandardTriangle<S: Scalar> {
     x1: S,
     z1: S,
     x2: S,
-    normal: Vec3<S>,
-    pub(crate) edges: [Edge<S>; 3],
+    /// Edges 0 and 1; edge 2 runs from `v2` back to the origin along −x, with length `x2`
+    /// and direction `[neg_x, 0]` (−1, or the float just above it): see [`edge`](Self::edge).
+    edges: [Edge<S>; 2],
+    neg_x: S::Unit,
     pub(crate) features: Features,
     pub(crate) two_sided: bool,
 }
@@ -202,11 +204,10 @@ impl<S: Scalar> StandardTriangle<S> {
             Vec3::new(x1, z, z1),
             Vec3::new(x2, z, z),
         );
-        // Edge 2 runs from v2 = (x2, 0, 0) back to the origin: length x2, direction −x.
         let mut edges = [Edge {
-            dir: [S::direction_neg_x(x2), S::UNIT_ZERO],
-            len: x2,
-        }; 3];
+            dir: [S::UNIT_ZERO; 2],
+            len: S::ZERO,
+        }; 2];
         for (edge, (from, to)) in edges.iter_mut().zip([(v0, v1), (v1, v2)]) {
             let (len, dir) = S::direction(to - from).ok_or(DEGENERATE)?;
             *edge = Edge {
@@ -214,15 +215,19 @@ impl<S: Scalar> StandardTriangle<S> {
                 len,
             };
         }
-        Ok(Self::from_parts(Parts {
+        Ok(Self {
             origin: t.v0,
-            axes: [ux, uy, uz],
-            shape: [x1, z1, x2],
-            normal: uy.map(S::unit_to_scalar),
+            ux,
+            uy,
+            uz,
+            x1,
+            z1,
+            x2,
             edges,
-            features: Features::ALL.bits(),
+            neg_x: S::direction_neg_x(x2),
+            features: Features::ALL,
             two_sided: false,
-        }))
+        })
     }
 
     /// The triangle as plain data, e.g. for baking into a `static` (see [`Parts`]).
@@ -231,8 +236,8 @@ impl<S: Scalar> StandardTriangle<S> {
             origin: self.origin,
             axes: [self.ux, self.uy, self.uz],
             shape: [self.x1, self.z1, self.x2],
-            normal: self.normal,
-            edges: self.edges,
+            normal: self.normal(),
+            edges: [self.edge(0), self.edge(1), self.edge(2)],
             features: self.features.bits(),
             two_sided: self.two_sided,
         }
@@ -253,8 +258,8 @@ impl<S: Scalar> StandardTriangle<S> {
             x1,
             z1,
             x2,
-            normal: p.normal,
-            edges: p.edges,
+            edges: [p.edges[0], p.edges[1]],
+            neg_x: p.edges[2].dir[0],
             features: Features::from_bits(p.features),
             two_sided: p.two_sided,
         }
@@ -262,7 +267,23 @@ impl<S: Scalar> StandardTriangle<S> {
 
     /// The front unit normal in world orientation (the frame's +y axis).
     pub fn normal(&self) -> Vec3<S> {
-        self.normal
+        self.uy.map(S::unit_to_scalar)
+    }
+
+    /// Edge `i` (0, 1 or 2) in the standard frame; any other `i` gives edge 2.
+    pub(crate) fn edge(&self, i: usize) -> Edge<S> {
+        match i {
+            0 | 1 => self.edges[i],
+            _ => Edge {
+                dir: [self.neg_x, S::UNIT_ZERO],
+                len: self.x2,
+            },
+        }
+    }
+
+    /// The three edges in the standard frame.
+    pub(crate) fn edges(&self) -> [Edge<S>; 3] {
+        [self.edges[0], self.edges[1], self.edge(2)]
     }
 
     /// The triangle's first vertex: the world position of the frame's origin.

@@ -59,7 +59,7 @@ fn edges_are_directions_of_the_corners<S: Scalar>() {
                 dir: [dir.x, dir.z],
                 len,
             };
-            assert_eq!(st.edges[i], want, "edge {i} of {a:?} {b:?} {c:?}");
+            assert_eq!(st.edge(i), want, "edge {i} of {a:?} {b:?} {c:?}");
         }
     }
     // Most of them are proper triangles.
