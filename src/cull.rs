@@ -110,12 +110,25 @@ impl Path {
     ) -> bool {
         let Some(Slab {
             n,
-            span: (a, b),
+            span: (mut a, mut b),
+            start,
+            along,
             reach,
         }) = self.slab(v, span, one_sided)
         else {
             return false;
         };
+        // The part of the span within reach of the plane.
+        if along != 0.0 {
+            let (ta, tb) = ((-reach - start) / along, (reach - start) / along);
+            let (lo, hi) = if tb < ta { (tb, ta) } else { (ta, tb) };
+            if lo > a {
+                a = lo;
+            }
+            if hi < b {
+                b = hi;
+            }
+        }
         // Outward in the plane from edge `i` is `e_i × n`, of length |e_i| |n|; the distance
         // times that is linear along the path, so the span's ends decide. Squares compare it
         // with the reach (itself times |n|) without a square root.
@@ -131,8 +144,9 @@ impl Path {
             })
     }
 
-    /// The plane tests of [`near_plane`](Self::near_plane): for a triangle they keep, its
-    /// normal, the part of the span within reach of its plane, and that reach.
+    /// The plane tests of [`near_plane`](Self::near_plane), and what the edge tests of
+    /// [`near_triangle`](Self::near_triangle) need of a triangle they keep.
+    #[inline(always)]
     fn slab(&self, v: [[f64; 3]; 3], (t0, t1): (f64, f64), one_sided: bool) -> Option<Slab> {
         let (e, f) = (sub(v[1], v[0]), sub(v[2], v[0]));
         let n = cross(e, f);
@@ -163,31 +177,24 @@ impl Path {
         if behind || is_less(reach, near) || is_less(far, -reach) {
             return None;
         }
-        let (mut a, mut b) = (t0, t1);
-        if along != 0.0 {
-            let (ta, tb) = ((-reach - start) / along, (reach - start) / along);
-            let (lo, hi) = if tb < ta { (tb, ta) } else { (ta, tb) };
-            if lo > a {
-                a = lo;
-            }
-            if hi < b {
-                b = hi;
-            }
-        }
         Some(Slab {
             n,
-            span: (a, b),
+            span: (t0, t1),
+            start,
+            along,
             reach,
         })
     }
 }
 
 /// What [`Path::near_plane`] found of a triangle it keeps: its normal `n` (unnormalised), the
-/// part of the span where the path is within `reach` of its plane, and that reach (times
-/// `|n|`, as are all distances here).
+/// span, the path's distance from the plane at its start and its change along the path, and
+/// the reach (all distances times `|n|`).
 struct Slab {
     n: [f64; 3],
     span: (f64, f64),
+    start: f64,
+    along: f64,
     reach: f64,
 }
 
