@@ -280,7 +280,12 @@ macro_rules! fixed_scalar {
             }
             #[inline]
             fn unit_to_scalar(u: $unit) -> Self {
-                <$t>::from_bits(round_shift!(u.to_bits() as $wide, $ufrac - $frac) as $bits)
+                // `round_shift!` in the unit's own width (a unit vector's bits are at most
+                // 2^UFRAC in magnitude, so nothing overflows), without a branch: for v < 0,
+                // floor((v + half - 1) / 2^K) = -floor((|v| + half) / 2^K), ties away from zero.
+                const K: u32 = $ufrac - $frac;
+                let v = u.to_bits();
+                <$t>::from_bits(v.wrapping_add((1 << (K - 1)) - (v < 0) as $bits) >> K)
             }
             #[inline]
             fn from_int(n: i32) -> Self {

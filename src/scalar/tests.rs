@@ -39,3 +39,40 @@ fn fixed_to_f64_is_to_num() {
         }
     }
 }
+
+/// `unit_to_scalar` rounds a unit component to the scalar's step, ties away from zero, in the
+/// unit's own width: the integer of the exact quotient, at every tie of `I16F16`'s units of
+/// magnitude up to one and beside it, at one and minus one, and at random, and the same for
+/// `I32F32` at random and at its ties near zero and one.
+#[test]
+fn unit_to_scalar_rounds_ties_away() {
+    use super::sealed::Kernel;
+    use fixed::types::{I2F30, I2F62};
+    // round(v / 2^k), ties away from zero, in 128 bits.
+    let want = |v: i128, k: u32| {
+        let q = (v.abs() + (1 << (k - 1))) >> k;
+        if v < 0 { -q } else { q }
+    };
+    let mut rng = Rng(0x2545_F491_4F6C_DD1D);
+    let ties = (-(1i32 << 16)..1 << 16).map(|q| (q << 14) + (1 << 13));
+    let random = (0..1_000_000).map(|_| (rng.next() as i32) >> 1);
+    for v in ties.chain(random).chain([-(1 << 30), 1 << 30]) {
+        for v in [v, v + 1, v - 1] {
+            let v = v.clamp(-(1 << 30), 1 << 30);
+            let got = I16F16::unit_to_scalar(I2F30::from_bits(v)).to_bits();
+            assert_eq!(got as i128, want(v as i128, 14), "{v}");
+        }
+    }
+    let one = 1i64 << 62;
+    let ties = (-4..=4)
+        .chain([(1 << 32) - 1, -(1 << 32)])
+        .map(|q| (q << 30) + (1 << 29));
+    let random = (0..1_000_000).map(|_| (rng.next() as i64) >> 1 >> (rng.next() % 62));
+    for v in ties.chain(random).chain([-one, one, -one + 1, one - 1]) {
+        let v = v.clamp(-one, one);
+        for v in [v, -v, v + 1, v - 1] {
+            let got = I32F32::unit_to_scalar(I2F62::from_bits(v)).to_bits();
+            assert_eq!(got as i128, want(v as i128, 30), "{v}");
+        }
+    }
+}
