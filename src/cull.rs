@@ -99,9 +99,10 @@ impl Path {
     /// [`near_plane`](Self::near_plane), and then whether the part of the span within reach
     /// of the plane keeps out of reach of every edge's line on the outer side: each point of
     /// the triangle lies on the inner side of all three, so a ball centre farther than its
-    /// radius (and every rounding) beyond one of them cannot touch it. Distances within the
-    /// plane are off in the prepared frame by the same tilt as heights, so the same reach
-    /// bounds both.
+    /// radius (and every rounding) beyond one of them cannot touch it. An inactive edge's seam
+    /// widens the face beyond its line by far less than the radius, and the pad's seam margins
+    /// cover it. Distances within the plane are off in the prepared frame by the same tilt as
+    /// heights, so the same reach bounds both.
     pub(crate) fn near_triangle(
         &self,
         v: [[f64; 3]; 3],

@@ -76,9 +76,11 @@ pub struct StandardTriangle<S: Scalar> {
     pub(crate) two_sided: bool,
 }
 
-/// Everything a [`StandardTriangle`] holds, as plain data with public fields: the form in which
-/// a build step bakes prepared triangles into a `static`, so firmware keeps them in flash and
-/// does no work at start-up (see the `bake` example).
+/// Everything a [`StandardTriangle`] is made of, as plain data with public fields: the form in
+/// which a build step bakes prepared triangles into a `static`, so firmware keeps them in flash
+/// and does no work at start-up (see the `bake` example). Two fields are derived and not
+/// stored by the triangle: `normal` (the y axis rounded to `S`) and edge 2 but for its
+/// direction's x (it runs along −x with length `x2`).
 ///
 /// Parts are meant to come from [`StandardTriangle::to_parts`] on the same scalar type; the
 /// `const` [`StandardTriangle::from_parts`] trusts them, and [`Parts::verify`] checks them
@@ -246,7 +248,9 @@ impl<S: Scalar> StandardTriangle<S> {
     /// Rebuilds a triangle from [`Parts`] made by [`to_parts`](Self::to_parts), in a `const`
     /// context, so a prepared scene can live in a `static` (read-only memory) with no start-up
     /// work. Nothing is re-validated here: parts from anywhere else may give wrong answers (never
-    /// undefined behaviour); check baked parts with [`Parts::verify`] in a test.
+    /// undefined behaviour); check baked parts with [`Parts::verify`] in a test. The derived
+    /// fields (`normal`, edge 2's length and its direction's z) are not read: `to_parts`
+    /// computes them again.
     pub const fn from_parts(p: Parts<S>) -> Self {
         let [ux, uy, uz] = p.axes;
         let [x1, z1, x2] = p.shape;

@@ -14,9 +14,20 @@ fn add(a: [f64; 3], b: [f64; 3], k: f64) -> [f64; 3] {
     [0, 1, 2].map(|i| a[i] + k * b[i])
 }
 
-/// A random triangle within 4 of the origin: a terrain-like one, a random one or a sliver.
-fn triangle(rng: &mut Rng, k: usize) -> [[f64; 3]; 3] {
-    let c = [0, 1, 2].map(|_| 3.0 * rng.signed());
+/// How far from the origin triangles may lie: most of the safe range (fixed point), or as far
+/// as a triangle of side one keeps a thousandth of a unit's precision (floats).
+fn far<S: Scalar>() -> f64 {
+    if S::PRECISION.relative {
+        1e-3 / S::PRECISION.epsilon
+    } else {
+        0.9 * S::PRECISION.limit
+    }
+}
+
+/// A random triangle of side about one, within 4 of a centre `c`: a terrain-like one, a random
+/// one or a sliver.
+fn triangle(rng: &mut Rng, k: usize, c: [f64; 3]) -> [[f64; 3]; 3] {
+    let c = add(c, [rng.signed(), rng.signed(), rng.signed()], 3.0);
     let mut v = [0, 1, 2].map(|_| add(c, [rng.signed(), rng.signed(), rng.signed()], 1.0));
     match k % 3 {
         // Nearly flat, as a terrain's cells.
@@ -33,8 +44,13 @@ fn triangle(rng: &mut Rng, k: usize) -> [[f64; 3]; 3] {
 
 /// Whether the culls keep the triangle for this sweep, as the compact mesh asks them: by the
 /// plane tests alone, and with the edges too.
-fn kept<S: Scalar>(sweep: &Sweep<S>, v: [[f64; 3]; 3], two_sided: bool) -> (bool, bool) {
-    let path = Path::new(sweep, 4.5, 0);
+fn kept<S: Scalar>(
+    sweep: &Sweep<S>,
+    v: [[f64; 3]; 3],
+    two_sided: bool,
+    (extent, class): (f64, u8),
+) -> (bool, bool) {
+    let path = Path::new(sweep, extent, class);
     let lo = [0, 1, 2].map(|a| v[0][a].min(v[1][a]).min(v[2][a]));
     let hi = [0, 1, 2].map(|a| v[0][a].max(v[1][a]).max(v[2][a]));
     let span = path.clip(lo, hi, 1.0);
@@ -43,15 +59,27 @@ fn kept<S: Scalar>(sweep: &Sweep<S>, v: [[f64; 3]; 3], two_sided: bool) -> (bool
     (plane, edges)
 }
 
-/// Random sweeps, and sweeps past each edge's line at the radius and the seam margin, give or
-/// take a few steps: every one the culls pass by misses the prepared triangle (with all
-/// features, or none, whose seams widen the face), one- and two-sided.
+/// Random sweeps (rays and large balls among them), and sweeps past each edge's line at the
+/// radius, at the seam margin and at multiples of them, give or take a few steps: every one the
+/// culls pass by misses the prepared triangle (with all features, or none, whose seams widen
+/// the face), one- and two-sided, near the origin and far from it.
 fn culls_pass_by_only_misses<S: Scalar>() {
     let mut rng = Rng(0xc011_5eed);
-    let step = S::PRECISION.epsilon.max(1.0 / (1u64 << 40) as f64);
     let (mut passed, mut grazing_hits, mut checked) = (0, 0, 0);
-    for k in 0..600 {
-        let v = triangle(&mut rng, k);
+    for k in 0..800 {
+        let centre = if k % 4 == 1 {
+            [0, 1, 2].map(|_| far::<S>() * rng.signed())
+        } else {
+            [0.0; 3]
+        };
+        let v = triangle(&mut rng, k, centre);
+        let magnitude = v.iter().flatten().fold(0.0f64, |m, x| m.max(x.abs())) + 4.0;
+        // A step of the coordinates here.
+        let step = if S::PRECISION.relative {
+            S::PRECISION.epsilon * magnitude
+        } else {
+            S::PRECISION.epsilon
+        };
         let Ok(st) = StandardTriangle::new(&Triangle::new(point(v[0]), point(v[1]), point(v[2])))
         else {
             continue;
@@ -64,6 +92,7 @@ fn culls_pass_by_only_misses<S: Scalar>() {
             Features::from_bits(0)
         };
         let st = st.with_features(features).with_two_sided(two_sided);
+        let class = (magnitude + 8.0, crate::bvh::class_of(&st) as u8);
         let mut check = |p0: [f64; 3], p1: [f64; 3], r: f64, grazing: bool| {
             let Ok(sweep) = Sweep::new(point(p0), point(p1), S::from_f64(r)) else {
                 return;
@@ -71,7 +100,7 @@ fn culls_pass_by_only_misses<S: Scalar>() {
             let hit = st.cast(&sweep);
             checked += 1;
             grazing_hits += (grazing && hit.is_some()) as usize;
-            let (plane, edges) = kept(&sweep, exact, two_sided);
+            let (plane, edges) = kept(&sweep, exact, two_sided, class);
             if !edges {
                 // Only by the edges: what this test is for.
                 passed += plane as usize;
@@ -82,7 +111,12 @@ fn culls_pass_by_only_misses<S: Scalar>() {
             let mid = [0, 1, 2].map(|a| (v[0][a] + v[1][a] + v[2][a]) / 3.0);
             let p0 = add(mid, [rng.signed(), rng.signed(), rng.signed()], 1.5);
             let p1 = add(p0, [rng.signed(), rng.signed(), rng.signed()], 1.5);
-            check(p0, p1, 0.05 + 0.5 * (rng.signed() + 1.0), false);
+            let r = match k % 7 {
+                0 => 0.0,
+                1 => 1.0 + rng.signed(),
+                _ => 0.05 + 0.5 * (rng.signed() + 1.0),
+            };
+            check(p0, p1, r, false);
         }
         // Grazing: beside each edge, outward in the plane by the radius (plus the seam
         // margin r / 64 at most) and a few steps, sliding along it or coming down onto it.
@@ -94,7 +128,10 @@ fn culls_pass_by_only_misses<S: Scalar>() {
             let out = unit(super::cross(e[i], n));
             let r = 0.1 + 0.2 * (rng.signed() + 1.0);
             let at = add(exact[i], e[i], 0.5 + 0.4 * rng.signed());
-            for f in [-0.01, -1e-3, -1e-4, 0.0, 1e-4, 1.0 / 64.0, 0.05, 0.1, 0.3] {
+            // Distances r (1 + f): the edge's reach, and (f near −1) the seams' r / 64.
+            let seams = [-1.0 + 1.0 / 128.0, -1.0 + 1.0 / 64.0, -1.0 + 1.0 / 32.0];
+            let reach = [-0.01, -1e-3, -1e-4, 0.0, 1e-4, 1.0 / 64.0, 0.05, 0.1, 0.3];
+            for f in seams.into_iter().chain(reach) {
                 for s in -3..=3 {
                     let beside = add(at, out, r * (1.0 + f) + s as f64 * step);
                     let along = unit(e[i]);
@@ -106,7 +143,7 @@ fn culls_pass_by_only_misses<S: Scalar>() {
         }
     }
     assert!(
-        passed > checked / 5 && grazing_hits > 1000,
+        passed > checked / 10 && grazing_hits > 1000,
         "{passed} of {checked} passed by the edges alone, {grazing_hits} grazing hits"
     );
 }
