@@ -79,7 +79,8 @@ impl Default for Features {
 
 /// A contact in the standard frame: alpha, the offset from the touched point to the ball's
 /// centre (`None` for the face, whose normal is +y), the feature, and alpha unrounded, as a
-/// fraction `(num, den)`, from which the contact's position is computed in one rounding.
+/// fraction `(num, den)` that rounds to alpha (`num.div(den)`), from which the contact's
+/// position is computed in one rounding.
 type Touch<S> = (S, Option<Vec3<S>>, Contact, (S, S));
 
 /// An edge or vertex contact with its alpha still as a fraction `t / len` (see `first_touch`):
@@ -173,9 +174,9 @@ impl<S: Scalar> StandardTriangle<S> {
         // `p0 + alpha (p1 - p0)` would carry alpha's rounding times the path's length.
         let (p0, d) = (sweep.p0(), sweep.p1() - sweep.p0());
         let position = if offset.is_none() {
-            self.face_position(p0, d, sweep.radius(), (num, den), back)
+            self.face_position(p0, d, sweep.radius(), (num, den, alpha), back)
         } else {
-            p0 + S::scale_fraction(d, num, den)
+            p0 + S::scale_fraction(d, num, den, alpha)
         };
         let normal = match offset {
             None => self.normal(),

@@ -92,7 +92,7 @@ impl<S: Scalar> StandardTriangle<S> {
         let (p0, p1) = (sweep.p0(), sweep.p1());
         Some(Hit {
             alpha,
-            position: self.face_position(p0, p1 - p0, r, (r - y0, y1 - y0), false),
+            position: self.face_position(p0, p1 - p0, r, (r - y0, y1 - y0, alpha), false),
             normal: self.normal(),
             contact: Contact::Face,
         })
@@ -102,7 +102,7 @@ impl<S: Scalar> StandardTriangle<S> {
 impl<S: Scalar> StandardTriangle<S> {
     /// The ball's centre where the path from `p0` along `d` comes down to height `r` over the
     /// plane (over the back, mirrored, if `back`), the fraction given unrounded as `num / den`
-    /// (heights: `r - y0` over `y1 - y0`).
+    /// (heights: `r - y0` over `y1 - y0`) and rounded as `alpha` (`num.div(den)`).
     ///
     /// A float height carries rounding in proportion to the point's distance from the triangle's
     /// origin (the difference, the products and the normal's own rounding), and a path's ends
@@ -114,10 +114,10 @@ impl<S: Scalar> StandardTriangle<S> {
         p0: Vec3<S>,
         d: Vec3<S>,
         r: S,
-        (num, den): (S, S),
+        (num, den, alpha): (S, S, S),
         back: bool,
     ) -> Vec3<S> {
-        let at = p0 + S::scale_fraction(d, num, den);
+        let at = p0 + S::scale_fraction(d, num, den, alpha);
         if !S::PRECISION.relative || num == S::ZERO {
             return at;
         }

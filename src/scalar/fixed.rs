@@ -232,9 +232,10 @@ macro_rules! fixed_scalar {
                 saturate!($t, $bits, $wide, q)
             }
             #[inline]
-            fn scale_fraction(v: Vec3<Self>, n: Self, d: Self) -> Vec3<Self> {
+            fn scale_fraction(v: Vec3<Self>, n: Self, d: Self, q: Self) -> Vec3<Self> {
+                debug_assert_eq!(q, n.div(d), "the fraction's quotient");
                 let bits = [v.x.to_bits(), v.y.to_bits(), v.z.to_bits()];
-                match $nscale(bits, n.to_bits(), d.to_bits()) {
+                match $nscale(bits, n.to_bits(), d.to_bits(), q.to_bits()) {
                     Some(q) => Vec3::new(q[0], q[1], q[2]).map(<$t>::from_bits),
                     None => v.map(|c| Self::mul_div(c, n, d)),
                 }

@@ -104,7 +104,7 @@ macro_rules! float_scalar {
                 if d == 0.0 { 0.0 } else { a * n / d }
             }
             #[inline]
-            fn scale_fraction(v: Vec3<Self>, n: Self, d: Self) -> Vec3<Self> {
+            fn scale_fraction(v: Vec3<Self>, n: Self, d: Self, _: Self) -> Vec3<Self> {
                 v.map(|c| Self::mul_div(c, n, d))
             }
             #[inline]

@@ -133,8 +133,9 @@ pub(crate) mod sealed {
         /// operations). Needs `|n| <= |d|`; zero for `d == 0`.
         fn mul_div(a: Self, n: Self, d: Self) -> Self;
         /// [`mul_div`](Self::mul_div) of every component of `v` by the same fraction `n / d`:
-        /// the same numbers, for a core that can share the work of the three divisions.
-        fn scale_fraction(v: Vec3<Self>, n: Self, d: Self) -> Vec3<Self>;
+        /// the same numbers, for a core that can share the work of the three divisions. Needs
+        /// `q == n.div(d)`, the fraction as already rounded, whose division a core may reuse.
+        fn scale_fraction(v: Vec3<Self>, n: Self, d: Self, q: Self) -> Vec3<Self>;
         /// The length of `v` and its unit direction; `None` for the zero vector. Needs
         /// components within `8 * LIMIT` (fixed-point: the length is the exact integer square root
         /// of the exact sum of squares, rounded to nearest).

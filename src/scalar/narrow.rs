@@ -77,20 +77,39 @@ pub(super) fn split_mul_u32(a: u32, b: u32) -> u64 {
 /// gives an estimate `floor(|a| F / 2^k)` short of `floor(|a n| / |d|)` by at most one
 /// (`|a| / 2^k < 1/2` lost to F, one to the floor) once `|a| < 2^(k-1)`: `k` is 16, or more in
 /// steps of 4 up to 32 for longer vectors. The exact remainder `|a n| - q |d|` corrects the
-/// estimate and decides the rounding. `None` for `|n| >= |d|`.
-pub(super) fn split_scale_fraction_i32(a: [i32; 3], n: i32, d: i32) -> Option<[i32; 3]> {
+/// estimate and decides the rounding. `q` is `round(n 2^16 / d)`, the fraction as
+/// [`split_div_i32`] rounds it, which gives `F` for `k = 16` ([`floor_of_rounded`]) with no
+/// division steps. `None` for `|n| >= |d|`.
+pub(super) fn split_scale_fraction_i32(a: [i32; 3], n: i32, d: i32, q: i32) -> Option<[i32; 3]> {
     let (nm, dm) = (n.unsigned_abs(), d.unsigned_abs());
     if nm >= dm {
         return None;
     }
     let top = a.iter().fold(0, |m, c| m | c.unsigned_abs());
-    let (mut r, mut k) = (remainder_steps::<16>(nm, dm), 16);
+    let (mut f, mut r) = floor_of_rounded(nm, dm, q.unsigned_abs());
+    let mut k = 16;
     while k < 32 && top >> (k - 1) != 0 {
         r = remainder_steps::<4>(r, dm);
         k += 4;
     }
-    let f = (exact_quotient(nm, r, dm, k) << (32 - k), dm);
-    Some(a.map(|a| scale_one(a, n, d, f)))
+    if k > 16 {
+        f = exact_quotient(nm, r, dm, k);
+    }
+    Some(a.map(|a| scale_one(a, n, d, (f << (32 - k), dm))))
+}
+
+/// `floor(n 2^16 / d)` and its remainder for `n < d <= 2^31`, given `q`, that quotient rounded
+/// to nearest (so the floor or one more): `n 2^16 - q d` is then the remainder or the remainder
+/// less `d`, within `(-d, d)`, and its value modulo 2^32 tells the two apart (the second wraps
+/// to `2^32 - d` or more, at least `d`).
+#[inline]
+fn floor_of_rounded(n: u32, d: u32, q: u32) -> (u32, u32) {
+    let r = (n << 16).wrapping_sub(q.wrapping_mul(d));
+    if r >= d {
+        (q.wrapping_sub(1), r.wrapping_add(d))
+    } else {
+        (q, r)
+    }
 }
 
 /// One component of [`split_scale_fraction_i32`], with `(F, |d|)`.

@@ -97,14 +97,15 @@ pub(super) fn no_narrow_div(_: i64, _: i64) -> Option<i64> {
     None
 }
 
-/// `I16F16`'s `round(a n / d)` for the three components `a` of a vector (bits, `|n| < |d|`) on
-/// cores without a long multiply or a divide instruction: one 64-bit division shared by the
-/// three, instead of one each ([`split_scale_fraction_i32`]); `None` elsewhere, and for
-/// `|n| >= |d|` or `d == 0`, where the per-component path is taken.
+/// `I16F16`'s `round(a n / d)` for the three components `a` of a vector (bits, `|n| < |d|`,
+/// `q` the bits of `n / d` as `div` rounds it) on cores without a long multiply or a divide
+/// instruction: one 64-bit division shared by the three, instead of one each, and started
+/// from `q` ([`split_scale_fraction_i32`]); `None` elsewhere, and for `|n| >= |d|` or
+/// `d == 0`, where the per-component path is taken.
 #[inline]
-pub(super) fn narrow_scale_fraction_i32(a: [i32; 3], n: i32, d: i32) -> Option<[i32; 3]> {
+pub(super) fn narrow_scale_fraction_i32(a: [i32; 3], n: i32, d: i32, q: i32) -> Option<[i32; 3]> {
     if cfg!(ballcast_no_long_mul) {
-        split_scale_fraction_i32(a, n, d)
+        split_scale_fraction_i32(a, n, d, q)
     } else {
         None
     }
@@ -112,7 +113,7 @@ pub(super) fn narrow_scale_fraction_i32(a: [i32; 3], n: i32, d: i32) -> Option<[
 
 /// No narrow scaling by a fraction (`I32F32`).
 #[inline]
-pub(super) fn no_narrow_scale_fraction(_: [i64; 3], _: i64, _: i64) -> Option<[i64; 3]> {
+pub(super) fn no_narrow_scale_fraction(_: [i64; 3], _: i64, _: i64, _: i64) -> Option<[i64; 3]> {
     None
 }
 
