@@ -197,6 +197,50 @@ fn the_character_loop_lands_walks_and_jumps<S: Tolerance>() {
     assert!(p.x.to_f64() > 5.0, "{}: did not walk: {p:?}", S::NAME);
 }
 
+/// The 20 × 20 floor and a wall at x = 8 facing −x, 4 high: a corner along z.
+fn floor_and_wall<S: Scalar>() -> Scene<S, 8> {
+    let mut s = floor::<S>();
+    let w = |y: f64, z: f64| v::<S>([8.0, y, z]);
+    s.push(Triangle::new(w(0.0, -10.0), w(0.0, 10.0), w(4.0, 10.0)))
+        .unwrap();
+    s.push(Triangle::new(w(0.0, -10.0), w(4.0, 10.0), w(4.0, -10.0)))
+        .unwrap();
+    s
+}
+
+/// A ball resting in the corner of a floor and a wall, walked into the wall at 60 Hz: one
+/// frame of gravity (9.81 / 3600, below 2^-8.5, whose square `I16F16` rounds to zero) still
+/// brings it down onto the floor every frame, and a sideways step as small slides it along
+/// the wall. Both slides are what is left of the step once the wall takes its part; their
+/// product with the step was once rounded to zero in `I16F16`, and the slide dropped.
+fn slow_slides_along_a_wall_are_kept<S: Tolerance>() {
+    let scene = floor_and_wall::<S>();
+    let (r, up) = (S::from_f64(0.5), v::<S>([0.0, 1.0, 0.0]));
+    let walkable = S::from_f64(std::f64::consts::FRAC_1_SQRT_2);
+    let mut p = v::<S>([7.0, 0.6, 0.0]);
+    for _ in 0..60 {
+        p = move_and_slide(&scene, p, v([0.05, -0.02, 0.0]), r)
+            .unwrap()
+            .position;
+    }
+    let g = 9.81 / 3600.0;
+    for frame in 0..60 {
+        let out = move_and_slide(&scene, p, v([0.05, -g, 0.0]), r).unwrap();
+        p = out.position;
+        let grounded = out.floor(up, walkable).unwrap().is_some();
+        assert!(grounded, "{}: frame {frame} not grounded at {p:?}", S::NAME);
+    }
+    for step in [0.002, 0.0027] {
+        let out = move_and_slide(&scene, p, v([0.05, 0.0, step]), r).unwrap();
+        let moved = out.position.z.to_f64() - p.z.to_f64();
+        assert!(
+            (moved - step).abs() < 1e-4,
+            "{}: slid {moved} of {step} along the wall",
+            S::NAME
+        );
+    }
+}
+
 macro_rules! per_scalar {
     ($($m:ident: $t:ty),*) => {$(mod $m {
         use super::*;
@@ -215,6 +259,10 @@ macro_rules! per_scalar {
         #[test]
         fn character_loop() {
             the_character_loop_lands_walks_and_jumps::<$t>();
+        }
+        #[test]
+        fn slow_slides_along_a_wall() {
+            slow_slides_along_a_wall_are_kept::<$t>();
         }
     })*};
 }

@@ -15,7 +15,7 @@ use lockstep::{Bits, Fnv, Outcome, simulate};
 const F64: Outcome = pinned(0x1644_abf4_3739_4b28, 8381);
 const F32: Outcome = pinned(0x7795_caad_c2c7_6dd2, 8381);
 const I32F32_RUN: Outcome = pinned(0x1f8d_e7eb_e80e_7ab3, 8421);
-const I16F16_RUN: Outcome = pinned(0x6263_04f8_01af_b530, 8365);
+const I16F16_RUN: Outcome = pinned(0x93a3_04b3_e021_cca7, 8376);
 
 const fn pinned(hash: u64, contacts: u32) -> Outcome {
     Outcome {

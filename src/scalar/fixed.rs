@@ -207,6 +207,11 @@ macro_rules! fixed_scalar {
                 saturate!($t, $bits, $wide, round_shift!(sum, $frac))
             }
             #[inline]
+            fn dot_sign(a: Vec3<Self>, b: Vec3<Self>) -> Ordering {
+                let p = |a: $t, b: $t| $wmul(a.to_bits(), b.to_bits());
+                (p(a.x, b.x) + p(a.y, b.y) + p(a.z, b.z)).cmp(&0)
+            }
+            #[inline]
             fn height_error(_: Self) -> Self {
                 <$t>::from_bits(8)
             }

@@ -116,6 +116,12 @@ macro_rules! float_scalar {
                 crate::vec3::dot3(a, b)
             }
             #[inline]
+            fn dot_sign(a: Vec3<Self>, b: Vec3<Self>) -> Ordering {
+                crate::vec3::dot3(a, b)
+                    .partial_cmp(&0.0)
+                    .unwrap_or(Ordering::Equal)
+            }
+            #[inline]
             fn height_error(m: Self) -> Self {
                 let m = if m > 1.0 { m } else { 1.0 };
                 4.0 * <$t>::EPSILON * m

@@ -32,7 +32,7 @@ pub(super) fn resolve<S: Scalar, G: Geometry<S> + ?Sized>(
         };
         match scene.cast(&sweep) {
             // Into something it does not yet overlap, or deeper into one it does: stop short.
-            Some(hit) if S::dot(push, hit.normal) < S::ZERO => {
+            Some(hit) if S::dot_sign(push, hit.normal).is_lt() => {
                 centre = settle(&hit, centre, push, skin, rounding);
                 break;
             }

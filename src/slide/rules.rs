@@ -54,18 +54,27 @@ pub(super) fn add_planes<S: Scalar>(planes: &mut Planes<S>, hit: &SceneHit<S>) -
 
 /// `v` constrained by every plane (unit normals): unchanged if it moves into none; else the
 /// first of: `v` without its part into one plane, along the crease of two, that moves into
-/// no other plane (beyond rounding); else zero. Zero too if the result runs against `primal`,
-/// or is no larger than the rounding of the normals times `v`.
+/// no other plane (beyond rounding); else zero. Zero too if the result runs against `primal`
+/// (the sign of their product taken exactly), or is no larger than the rounding of the normals
+/// times `v` (in fixed point, plus two steps).
 pub(super) fn constrain<S: Scalar>(v: Vec3<S>, planes: &[Vec3<S>], primal: Vec3<S>) -> Vec3<S> {
     let zero = Vec3::ZERO;
     let slack = -S::height_error(magnitude(v));
     let clear = |w: Vec3<S>| planes.iter().all(|n| S::dot(w, *n) >= slack);
     // What is left after removing a large push into a plane carries the normal's rounding
-    // times the push (four steps of resolution of it at most): the same each call, so it would
-    // add up to a drift. Less than that is not motion.
-    let noise = S::mul(magnitude(v), crate::scalar::tie::<S>());
+    // times the push (four steps of resolution of it at most), and in fixed point also the
+    // products' own rounding, a step at most whatever the push: the same each call, so it
+    // would add up to a drift. Less than that is not motion.
+    let steps = if S::PRECISION.relative {
+        S::ZERO
+    } else {
+        S::EPSILON + S::EPSILON
+    };
+    let noise = S::mul(magnitude(v), crate::scalar::tie::<S>()) + steps;
     let keep = |w: Vec3<S>| {
-        if magnitude(w) > noise && S::dot(w, primal) > S::ZERO {
+        // The sign exactly: a slow slide (in `I16F16`, below about 2^-8.5 a component) has a
+        // product with the motion below half a step, which would round to zero.
+        if magnitude(w) > noise && S::dot_sign(w, primal).is_gt() {
             w
         } else {
             zero
