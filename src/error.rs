@@ -88,6 +88,9 @@ pub enum Error {
         /// Its length.
         len: usize,
     },
+    /// A direction (such as [`Slide::floor`](crate::slide::Slide::floor)'s `up`) is the zero
+    /// vector, which points nowhere.
+    ZeroVector,
 }
 
 impl Error {
@@ -143,6 +146,7 @@ impl fmt::Display for Error {
                 value, min, max, ..
             } => write!(f, "{value} is outside the accepted range [{min}, {max}]"),
             Error::NegativeRadius { value } => write!(f, "the radius {value} is negative"),
+            Error::Full { capacity: 1 } => f.write_str("full: it holds 1 triangle"),
             Error::Full { capacity } => write!(f, "full: it holds {capacity} triangles"),
             Error::RadiusTooSmall { radius, min } => write!(
                 f,
@@ -161,6 +165,7 @@ impl fmt::Display for Error {
                     "an index buffer of {len} is not a whole number of triangles"
                 )
             }
+            Error::ZeroVector => f.write_str("a direction is the zero vector"),
         }
     }
 }

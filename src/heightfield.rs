@@ -76,12 +76,19 @@ pub struct Heightfield<'a, S: Scalar> {
 #[non_exhaustive]
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum HeightfieldError {
-    /// `heights` does not hold `(columns + 1) (rows + 1)` values, or a side is zero.
+    /// `heights` does not hold `(columns + 1) (rows + 1)` values.
     Size {
         /// Heights expected.
         needed: usize,
         /// Heights given.
         given: usize,
+    },
+    /// `columns` or `rows` is zero: a grid needs at least one cell.
+    Empty {
+        /// The columns given.
+        columns: u32,
+        /// The rows given.
+        rows: u32,
     },
     /// `cells` holds fewer than `columns × rows` bytes.
     Capacity {
@@ -90,11 +97,34 @@ pub enum HeightfieldError {
     },
     /// More than [`MAX_TRIANGLES`] triangles.
     TooMany,
-    /// `spacing` is not positive and finite, or `unit` or `origin` not finite.
-    Spacing,
-    /// The grid reaches beyond the scalar's safe range ([`Scalar::LIMIT`]), or has more columns
-    /// or rows than the scalar counts exactly.
-    OutOfRange,
+    /// `spacing` is not positive and finite.
+    Spacing {
+        /// The spacing given.
+        value: f64,
+    },
+    /// `unit`, the height step, is NaN or infinite.
+    Unit {
+        /// The unit given.
+        value: f64,
+    },
+    /// A coordinate of `origin` is NaN or infinite.
+    Origin {
+        /// The first such coordinate.
+        value: f64,
+    },
+    /// A corner of the grid (or its lowest or highest height) lies beyond the scalar's safe
+    /// range, `±`[`Scalar::LIMIT`].
+    OutOfRange {
+        /// The coordinate farthest out.
+        value: f64,
+        /// The scalar's limit.
+        limit: f64,
+    },
+    /// More columns or rows than the scalar counts exactly (`I16F16`: 32 767).
+    Sides {
+        /// The larger of the two.
+        count: u32,
+    },
     /// A triangle was refused by [`StandardTriangle::new`] (out of the scalar's range, or
     /// degenerate at its precision).
     Triangle {
@@ -112,12 +142,27 @@ impl fmt::Display for HeightfieldError {
                 f,
                 "heightfield needs (columns + 1) x (rows + 1) = {needed} heights, got {given}"
             ),
+            Self::Empty { columns, rows } => write!(
+                f,
+                "heightfield of {columns} x {rows} cells: it needs at least one column and one row"
+            ),
             Self::Capacity { needed } => write!(f, "cell buffer too small: {needed} bytes needed"),
             Self::TooMany => f.write_str("more than 2^31 triangles"),
-            Self::Spacing => {
-                f.write_str("spacing not positive and finite, or unit or origin not finite")
+            Self::Spacing { value } => {
+                write!(f, "heightfield spacing {value} is not positive and finite")
             }
-            Self::OutOfRange => f.write_str("heightfield reaches beyond the scalar's safe range"),
+            Self::Unit { value } => write!(f, "heightfield height unit {value} is not finite"),
+            Self::Origin { value } => {
+                write!(f, "heightfield origin coordinate {value} is not finite")
+            }
+            Self::OutOfRange { value, limit } => write!(
+                f,
+                "heightfield reaches {value}, beyond the scalar's safe range [-{limit}, {limit}]"
+            ),
+            Self::Sides { count } => write!(
+                f,
+                "heightfield of {count} cells along a side: more than the scalar counts exactly"
+            ),
             Self::Triangle { error, .. } => write!(f, "heightfield {error}"),
         }
     }
@@ -178,16 +223,28 @@ impl<'a, S: Scalar> Heightfield<'a, S> {
         let Some(n) = n else {
             return Err(HeightfieldError::TooMany);
         };
+        if n == 0 {
+            return Err(HeightfieldError::Empty { columns, rows });
+        }
         let needed = (w + 1) * (h + 1);
-        if n == 0 || heights.len() != needed {
+        if heights.len() != needed {
             let given = heights.len();
             return Err(HeightfieldError::Size { needed, given });
         }
         if cells.len() < n {
             return Err(HeightfieldError::Capacity { needed: n });
         }
-        if !(spacing > S::ZERO && spacing.is_finite() && unit.is_finite() && origin.is_finite()) {
-            return Err(HeightfieldError::Spacing);
+        if !(spacing > S::ZERO && spacing.is_finite()) {
+            let value = spacing.to_f64();
+            return Err(HeightfieldError::Spacing { value });
+        }
+        if !unit.is_finite() {
+            let value = unit.to_f64();
+            return Err(HeightfieldError::Unit { value });
+        }
+        if let Some(&value) = origin.to_array().iter().find(|c| !c.is_finite()) {
+            let value = value.to_f64();
+            return Err(HeightfieldError::Origin { value });
         }
         // The grid's far corner and heights in f64 first: a scalar's conversion saturates.
         let limit = S::LIMIT.to_f64();
@@ -204,8 +261,13 @@ impl<'a, S: Scalar> Heightfield<'a, S> {
         // Every column and row number must be exact in the scalar (I16F16 stops at 32 767),
         // or the vertices would not be where the walk looks for them.
         let exact = |n: u32| n <= i32::MAX as u32 && S::from_int(n as i32).to_f64() == n as f64;
-        if ends.iter().flatten().any(|v| v.abs() > limit) || !exact(columns) || !exact(rows) {
-            return Err(HeightfieldError::OutOfRange);
+        let far = ends.iter().flatten().fold(0.0f64, |m, v| m.max(v.abs()));
+        if far > limit {
+            return Err(HeightfieldError::OutOfRange { value: far, limit });
+        }
+        if !exact(columns) || !exact(rows) {
+            let count = columns.max(rows);
+            return Err(HeightfieldError::Sides { count });
         }
         let mut field = Self::from_parts(
             origin,

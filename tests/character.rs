@@ -197,6 +197,35 @@ fn the_character_loop_lands_walks_and_jumps<S: Tolerance>() {
     assert!(p.x.to_f64() > 5.0, "{}: did not walk: {p:?}", S::NAME);
 }
 
+/// `up` is a direction: a short or long one finds the floor as a unit one does (it once
+/// compared `normal · up` with the cosine unscaled, so a short `up` found none), and the zero
+/// vector is refused.
+fn floor_with_an_up_of_any_length<S: Tolerance>() {
+    let scene = floor::<S>();
+    let out = move_and_slide(
+        &scene,
+        v([0.0, 0.6, 0.0]),
+        v([0.1, -0.2, 0.0]),
+        S::from_f64(0.5),
+    );
+    let out = out.unwrap();
+    let cos45 = S::from_f64(std::f64::consts::FRAC_1_SQRT_2);
+    let found = |up: [f64; 3]| out.floor(v(up), cos45).unwrap().map(|c| c.time);
+    let unit = found([0.0, 1.0, 0.0]);
+    assert!(unit.is_some(), "{}: not grounded", S::NAME);
+    for up in [[0.0, 0.5, 0.0], [0.0, 100.0, 0.0], [0.0, 0.01, 0.0]] {
+        assert_eq!(found(up), unit, "{}: up {up:?}", S::NAME);
+    }
+    // Tilted beyond the slope limit, whatever its length: not floor.
+    assert_eq!(found([2.0, 1.0, 0.0]), None, "{}", S::NAME);
+    assert_eq!(
+        out.floor(v([0.0; 3]), cos45).unwrap_err(),
+        Error::ZeroVector,
+        "{}",
+        S::NAME
+    );
+}
+
 /// The 20 × 20 floor and a wall at x = 8 facing −x, 4 high: a corner along z.
 fn floor_and_wall<S: Scalar>() -> Scene<S, 8> {
     let mut s = floor::<S>();
@@ -259,6 +288,10 @@ macro_rules! per_scalar {
         #[test]
         fn character_loop() {
             the_character_loop_lands_walks_and_jumps::<$t>();
+        }
+        #[test]
+        fn floor_with_up_of_any_length() {
+            floor_with_an_up_of_any_length::<$t>();
         }
         #[test]
         fn slow_slides_along_a_wall() {

@@ -257,7 +257,12 @@ fn errors_not_panics<S: Scalar>() {
     };
     let size = |needed, given| Err(HeightfieldError::Size { needed, given });
     assert_eq!(build(one, 2, 2, &heights[..8], &mut cells), size(9, 8));
-    assert_eq!(build(one, 0, 2, &heights[..3], &mut cells), size(3, 3));
+    // No cells: said so (not as a size that matches).
+    let empty = Err(HeightfieldError::Empty {
+        columns: 0,
+        rows: 2,
+    });
+    assert_eq!(build(one, 0, 2, &heights[..3], &mut cells), empty);
     let capacity = Err(HeightfieldError::Capacity { needed: 4 });
     assert_eq!(build(one, 2, 2, &heights, &mut cells[..3]), capacity);
     assert_eq!(
@@ -267,14 +272,35 @@ fn errors_not_panics<S: Scalar>() {
     for bad in [S::ZERO, S::ZERO - one] {
         assert_eq!(
             build(bad, 2, 2, &heights, &mut cells),
-            Err(HeightfieldError::Spacing)
+            Err(HeightfieldError::Spacing {
+                value: bad.to_f64()
+            })
         );
     }
-    let far = S::from_f64(S::LIMIT.to_f64() / 1.5);
+    // Each refusal names the value: the spacing, the unit, the origin's coordinate, the
+    // farthest corner.
+    let limit = S::LIMIT.to_f64();
+    let far = S::from_f64(limit / 1.5);
+    let reach = 2.0 * far.to_f64();
     assert_eq!(
         build(far, 2, 2, &heights, &mut cells),
-        Err(HeightfieldError::OutOfRange)
+        Err(HeightfieldError::OutOfRange {
+            value: reach,
+            limit
+        })
     );
+    if S::PRECISION.relative {
+        let nan = S::from_f64(f64::NAN);
+        let bad_unit = Heightfield::build(o, one, nan, 2, 2, &heights, |_, _| false, &mut cells);
+        assert!(matches!(bad_unit, Err(HeightfieldError::Unit { value }) if value.is_nan()));
+        let origin = v::<S>([0.0, f64::INFINITY, 0.0]);
+        let bad_origin =
+            Heightfield::build(origin, one, unit, 2, 2, &heights, |_, _| false, &mut cells);
+        let want = HeightfieldError::Origin {
+            value: f64::INFINITY,
+        };
+        assert_eq!(bad_origin.map(|_| ()), Err(want));
+    }
     // Far from the origin, a float cannot tell cells of one step apart: a degenerate triangle,
     // named. Fixed point's absolute steps keep every cell whole.
     let far = Heightfield::build(
@@ -453,7 +479,10 @@ fn i16f16_beyond_32767_columns() {
         |_, _| false,
         &mut cells,
     );
-    assert_eq!(built.map(|_| ()), Err(HeightfieldError::OutOfRange));
+    assert_eq!(
+        built.map(|_| ()),
+        Err(HeightfieldError::Sides { count: 32_770 })
+    );
 }
 
 /// Parts from elsewhere with sides whose product overflows: wrong answers allowed, no panic.

@@ -122,21 +122,31 @@ fn clip_refuses_any_bad_velocity<S: Scalar>() {
     holds(point::<S>(), true, |u| (u.1, out.clip(v(u.0)).is_err()));
 }
 
-/// `floor` takes a unit `up` and a cosine: components and cosine within `[-1, 1]`.
+/// `floor` takes a direction `up` (components within the safe range, not all zero in the
+/// scalar) and a cosine within `[-1, 1]`.
 fn floor_refuses_any_bad_argument<S: Scalar>() {
     let s = scene::<S>();
     let out = move_and_slide(&s, v([0.0, 1.0, 0.0]), v([0.0, -1.0, 0.0]), S::ONE).unwrap();
-    let unit = prop_oneof![
+    let limit = S::LIMIT.to_f64();
+    let component = prop_oneof![
         4 => (-1.0..=1.0f64).prop_map(|x| (x, false)),
+        1 => Just((0.0, false)),
+        1 => (-limit..=limit).prop_map(|x| (x, false)),
         1 => Just((f64::NAN, true)),
         1 => Just((f64::INFINITY, true)),
+        1 => Just((2.0 * limit, true)),
+    ];
+    let cosine = prop_oneof![
+        4 => (-1.0..=1.0f64).prop_map(|x| (x, false)),
+        1 => Just((f64::NAN, true)),
         1 => Just((1.5, true)),
         1 => Just((-3.0, true)),
     ];
-    let args = (unit.clone(), unit.clone(), unit.clone(), unit);
+    let args = (component.clone(), component.clone(), component, cosine);
     holds(args, true, |(x, y, z, c)| {
         let got = out.floor(v([x.0, y.0, z.0]), S::from_f64(c.0));
-        (x.1 || y.1 || z.1 || c.1, got.is_err())
+        let zero = [x.0, y.0, z.0].iter().all(|&a| S::from_f64(a) == S::ZERO);
+        (x.1 || y.1 || z.1 || c.1 || zero, got.is_err())
     });
 }
 

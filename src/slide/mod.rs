@@ -18,6 +18,7 @@
 mod resolve;
 mod rules;
 
+use crate::contact::unit;
 use crate::{Error, Geometry, Scalar, SceneHit, Sweep, Vec3, check};
 use heapless::Vec;
 use resolve::{resolve, settle};
@@ -84,8 +85,8 @@ impl<S: Scalar> Slide<S> {
     }
 
     /// The last contact that counts as floor: one whose normal lies within a slope limit of
-    /// `up` (a unit vector), i.e. `normal · up >= min_cos` with `min_cos` the cosine of the
-    /// steepest walkable slope (`FRAC_1_SQRT_2` for 45°). The character controllers of engines call a
+    /// the direction `up` (of any length: it is normalised here), i.e. `normal · up >= min_cos`
+    /// with `min_cos` the cosine of the steepest walkable slope (`FRAC_1_SQRT_2` for 45°). The character controllers of engines call a
     /// ball with such a contact *grounded* (Unity's `isGrounded`, Godot's `is_on_floor`).
     ///
     /// ```
@@ -100,11 +101,13 @@ impl<S: Scalar> Slide<S> {
     /// # Ok::<(), ballcast::Error>(())
     /// ```
     ///
-    /// Errors: [`Error::NaN`], or [`Error::OutOfRange`] for a component of `up` or `min_cos`
-    /// outside `[-1, 1]`.
+    /// Errors: [`Error::NaN`]; [`Error::OutOfRange`] for a component of `up` beyond
+    /// `±`[`Scalar::LIMIT`] or `min_cos` outside `[-1, 1]`; [`Error::ZeroVector`] for an `up`
+    /// of zero (in the scalar).
     pub fn floor(&self, up: Vec3<S>, min_cos: S) -> Result<Option<&SlideContact<S>>, Error> {
-        let up = check::point(up, S::ONE)?;
+        let up = check::point(up, S::LIMIT)?;
         let min_cos = check::within(min_cos, -S::ONE, S::ONE)?;
+        let up = unit(up).ok_or(Error::ZeroVector)?;
         Ok(self
             .contacts
             .iter()
