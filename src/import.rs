@@ -1,8 +1,11 @@
 //! Scenes from what modelling tools and file formats export: a vertex array with an index
 //! buffer (glTF, OBJ after triangulation, most engines' meshes), or any iterator of triangles;
-//! and triangles converted from one scalar to another.
+//! triangles converted from one scalar to another; and (with `alloc`) shared vertices and
+//! indices welded from a triangle soup.
 
 use crate::{Error, Scalar, Scene, Triangle, Vec3, check};
+#[cfg(feature = "alloc")]
+use alloc::vec::Vec;
 
 impl<S: Scalar, const N: usize> Scene<S, N> {
     /// A scene of one-sided triangles from `vertices` and an index buffer, three indices per
@@ -123,4 +126,67 @@ impl<S: Scalar> Triangle<S> {
         };
         Ok(Triangle::new(p(self.v0)?, p(self.v1)?, p(self.v2)?))
     }
+}
+
+/// What [`weld`] makes: the shared vertices, and three indices into them per triangle.
+#[cfg(feature = "alloc")]
+pub type Welded<S> = (Vec<Vec3<S>>, Vec<[u32; 3]>);
+
+/// Shared vertices and index triples from a triangle soup (what most loaders give; what
+/// [`CompactMesh::compact`](crate::CompactMesh::compact) takes): corners equal in value
+/// (`-0.0` and `0.0` included) become one vertex, numbered in order of first appearance, and
+/// each triangle keeps its corners' order, so the triangles rebuilt from the two are the input's,
+/// bit for bit (a NaN corner, equal to nothing, stays a vertex of its own). `O(N log N)`: the
+/// corners sorted by value. Needs the `alloc` feature.
+///
+/// Errors: [`Error::Full`] beyond `u32::MAX / 3` triangles (the indices are `u32`).
+///
+/// ```
+/// use ballcast::{Vec3, Triangle, import::weld};
+/// let v = Vec3::new;
+/// let quad = [
+///     Triangle::new(v(0.0f32, 0.0, 0.0), v(0.0, 0.0, 2.0), v(2.0, 0.0, 2.0)),
+///     Triangle::new(v(-0.0, 0.0, 0.0), v(2.0, 0.0, 2.0), v(2.0, 0.0, 0.0)),
+/// ];
+/// let (vertices, indices) = weld(&quad)?;
+/// assert_eq!(vertices.len(), 4);
+/// assert_eq!(indices, [[0, 1, 2], [0, 2, 3]]);
+/// # Ok::<(), ballcast::Error>(())
+/// ```
+#[cfg(feature = "alloc")]
+pub fn weld<S: Scalar>(triangles: &[Triangle<S>]) -> Result<Welded<S>, Error> {
+    const MAX: usize = u32::MAX as usize / 3;
+    if triangles.len() > MAX {
+        return Err(Error::Full { capacity: MAX });
+    }
+    let corners: Vec<Vec3<S>> = triangles.iter().flat_map(Triangle::vertices).collect();
+    // Equal values have equal keys (adding zero makes -0.0 one with 0.0); distinct values
+    // may share one (`I32F32` beyond 53 bits), and are told apart exactly within its run.
+    let key = |k: usize| corners[k].to_array().map(|c| (c.to_f64() + 0.0).to_bits());
+    let mut sorted: Vec<usize> = (0..corners.len()).collect();
+    sorted.sort_unstable_by_key(|&k| (key(k), k));
+    // Each corner's first equal corner: runs are in corner order, so it comes earlier.
+    let mut first: Vec<usize> = (0..corners.len()).collect();
+    for run in sorted.chunk_by(|&a, &b| key(a) == key(b)) {
+        for (i, &k) in run.iter().enumerate() {
+            if let Some(&e) = run[..i].iter().find(|&&e| corners[e] == corners[k]) {
+                first[k] = first[e];
+            }
+        }
+    }
+    let (mut vertices, mut number) = (Vec::new(), Vec::with_capacity(corners.len()));
+    for (k, &f) in first.iter().enumerate() {
+        let n = if f == k {
+            vertices.push(corners[k]);
+            vertices.len() - 1
+        } else {
+            number[f]
+        };
+        number.push(n);
+    }
+    let indices = number
+        .chunks_exact(3)
+        .map(|c| [c[0], c[1], c[2]].map(|n| n as u32))
+        .collect();
+    Ok((vertices, indices))
 }

@@ -1,0 +1,94 @@
+//! What the `alloc` feature adds: `MeshBuf` (a mesh owning its parts) and `import::weld` (shared
+//! vertices from a triangle soup, for `CompactMesh`). Run by CI with
+//! `cargo test --all-features --test alloc`; without the feature this file is empty.
+#![cfg(feature = "alloc")]
+
+mod common;
+mod meshes;
+
+use ballcast::import::weld;
+use ballcast::{CompactMesh, Degenerates, MeshBuf, Sweep, Triangle, Vec3};
+use common::{Rng, Tolerance, v};
+use fixed::types::{I16F16, I32F32};
+use meshes::{boxes, build, heightfield, soup, tri};
+
+/// A welded soup rebuilds the input's triangles bit for bit, shares the corners equal in value
+/// (a `w × w` terrain has `(w + 1)²` vertices), and its compact mesh answers as the prepared
+/// mesh; `MeshBuf` builds the parts `Mesh::build` does.
+fn welded_soups_compact<S: Tolerance>() {
+    let mut rng = Rng(0x0a11_0c0d);
+    let w = 10;
+    let shapes = [
+        (heightfield(&mut rng, w, 1.0, 0.65), Some((w + 1) * (w + 1))),
+        (boxes(&mut rng, 8, 5.0), None),
+        (soup(&mut rng, 150, 4.0), None),
+    ];
+    for (src, expected) in shapes {
+        let input: Vec<Triangle<S>> = src.iter().map(|&t| tri::<S>(t)).collect();
+        let (vertices, indices) = weld(&input).unwrap();
+        let rebuilt: Vec<Triangle<S>> = indices
+            .iter()
+            .map(|c| {
+                Triangle::new(
+                    vertices[c[0] as usize],
+                    vertices[c[1] as usize],
+                    vertices[c[2] as usize],
+                )
+            })
+            .collect();
+        assert_eq!(format!("{rebuilt:?}"), format!("{input:?}"), "{}", S::NAME);
+        // No two vertices equal.
+        for (i, a) in vertices.iter().enumerate() {
+            assert!(
+                vertices[..i].iter().all(|b| b != a),
+                "{}: {a:?} twice",
+                S::NAME
+            );
+        }
+        if let Some(n) = expected {
+            assert_eq!(vertices.len(), n, "{}", S::NAME);
+        }
+        let owned = MeshBuf::build(&input, Degenerates::Skip).unwrap();
+        let mesh = owned.mesh();
+        let reference = build(&input, Degenerates::Skip).unwrap();
+        assert_eq!(mesh.nodes(), reference.mesh().nodes(), "{}", S::NAME);
+        assert_eq!(mesh.order(), reference.mesh().order(), "{}", S::NAME);
+        let n = mesh.len();
+        let (mut t, mut o, mut b) = (vec![[0u32; 3]; n], vec![0u32; n], vec![0u8; n]);
+        let compact =
+            CompactMesh::compact(&mesh, &vertices, &indices, &mut t, &mut o, &mut b).unwrap();
+        for _ in 0..300 {
+            let (p0, p1, r) = (rng.point(6.0), rng.point(6.0), rng.range(0.05, 1.0));
+            let sweep = Sweep::new(v::<S>(p0), v(p1), S::from_f64(r)).unwrap();
+            let (x, y) = (compact.cast(&sweep), mesh.cast(&sweep));
+            assert_eq!(format!("{x:?}"), format!("{y:?}"), "{}", S::NAME);
+        }
+    }
+}
+
+/// Corners equal in value are one vertex, `-0.0` and `0.0` included; a NaN corner is equal to
+/// nothing, so it stays a vertex of its own (and is refused later, by the mesh's build).
+#[test]
+fn weld_merges_signed_zeros_and_keeps_nans_apart() {
+    let v = Vec3::new;
+    let a = Triangle::new(v(0.0f32, 0.0, 0.0), v(0.0, 0.0, 1.0), v(1.0, 0.0, 0.0));
+    let b = Triangle::new(v(-0.0, -0.0, 0.0), v(1.0, 0.0, 0.0), v(f32::NAN, 0.0, 0.0));
+    let c = Triangle::new(v(f32::NAN, 0.0, 0.0), v(1.0, 0.0, 0.0), v(0.0, 0.0, 1.0));
+    let (vertices, indices) = weld(&[a, b, c]).unwrap();
+    assert_eq!(indices, [[0, 1, 2], [0, 2, 3], [4, 2, 1]]);
+    assert_eq!(vertices.len(), 5);
+    assert!(vertices[3].x.is_nan() && vertices[4].x.is_nan());
+    assert_eq!(weld::<f32>(&[]).unwrap(), (vec![], vec![]));
+}
+
+macro_rules! per_scalar {
+    ($($m:ident: $t:ty),*) => {$(mod $m {
+        use super::*;
+        #[test]
+        fn welded_soups_compact_as_the_mesh() {
+            welded_soups_compact::<$t>();
+        }
+    })*};
+}
+
+per_scalar!(f64_: f64, f32_: f32, i32f32: I32F32, i16f16: I16F16);
