@@ -210,7 +210,7 @@ mod serde_tests {
         );
         let full = serde_json::from_str::<Scene<f32, 1>>(LEVEL).unwrap_err();
         assert!(
-            full.to_string().starts_with("full: it holds 1 triangles"),
+            full.to_string().starts_with("full: it holds 1 triangle "),
             "{full}"
         );
     }
