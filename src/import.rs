@@ -3,7 +3,7 @@
 //! triangles converted from one scalar to another; and (with `alloc`) shared vertices and
 //! indices welded from a triangle soup.
 
-use crate::{Error, Scalar, Scene, Triangle, Vec3, check};
+use crate::{Error, Scalar, Scene, Triangle, Vec3};
 #[cfg(feature = "alloc")]
 use alloc::vec::Vec;
 
@@ -120,11 +120,8 @@ impl<S: Scalar> Triangle<S> {
     /// # Ok::<(), Error>(())
     /// ```
     pub fn try_cast<T: Scalar>(&self) -> Result<Triangle<T>, Error> {
-        let p = |v: Vec3<S>| -> Result<Vec3<T>, Error> {
-            let c = |x: S| check::convert::<T>(x.to_f64());
-            Ok(Vec3::new(c(v.x)?, c(v.y)?, c(v.z)?))
-        };
-        Ok(Triangle::new(p(self.v0)?, p(self.v1)?, p(self.v2)?))
+        let [a, b, c] = self.vertices().map(Vec3::try_cast::<T>);
+        Ok(Triangle::new(a?, b?, c?))
     }
 }
 

@@ -160,7 +160,8 @@ impl<S: Scalar> Vec3<S> {
     }
 
     /// The same vector in another scalar, each component rounded to nearest through `f64`
-    /// ([`Scalar::from_f64`]: fixed-point saturates, NaN becomes out of range).
+    /// ([`Scalar::from_f64`]: fixed-point saturates, NaN becomes out of range; an error made
+    /// later then shows the saturated value: [`try_cast`](Self::try_cast) refuses instead).
     ///
     /// ```
     /// use ballcast::Vec3;
@@ -170,6 +171,24 @@ impl<S: Scalar> Vec3<S> {
     /// ```
     pub fn cast<T: Scalar>(self) -> Vec3<T> {
         self.map(|c| T::from_f64(c.to_f64()))
+    }
+
+    /// [`cast`](Self::cast), refusing a component that `T` cannot hold within its safe range
+    /// rather than saturating it, so the error carries the value given.
+    ///
+    /// Errors: [`Error::NaN`](crate::Error::NaN); [`Error::OutOfRange`](crate::Error::OutOfRange)
+    /// with the component's value and `T`'s range.
+    ///
+    /// ```
+    /// use ballcast::{Error, Vec3};
+    /// use fixed::types::I16F16;
+    /// let far = Vec3::new(0.0f32, 5000.0, 0.0).try_cast::<I16F16>().unwrap_err();
+    /// assert!(matches!(far, Error::OutOfRange { value: 5000.0, .. }));
+    /// assert_eq!(far.to_string(), "5000 is outside the accepted range [-4096, 4096]");
+    /// ```
+    pub fn try_cast<T: Scalar>(self) -> Result<Vec3<T>, crate::Error> {
+        let c = |x: S| crate::check::convert::<T>(x.to_f64());
+        Ok(Vec3::new(c(self.x)?, c(self.y)?, c(self.z)?))
     }
 }
 

@@ -65,6 +65,20 @@ fn conversions_round_trip<S: Tolerance>() {
     // Through f64, every scalar's value converts exactly (these are dyadic).
     assert_eq!(back(a.cast::<f64>()), p);
     assert_eq!(a.cast::<f64>().cast::<S>(), a);
+    // The checked conversion agrees within range, and beyond it (or for NaN) refuses with the
+    // value given, where `cast` would saturate (fixed point) and hide it.
+    assert_eq!(Vec3::new(0.5f64, -2.25, 1000.125).try_cast::<S>(), Ok(a));
+    let limit = S::LIMIT.to_f64();
+    let far = Vec3::new(0.0f64, -3.0 * limit, 0.0).try_cast::<S>();
+    let want = ballcast::Error::OutOfRange {
+        value: -3.0 * limit,
+        min: -limit,
+        max: limit,
+        triangle: None,
+    };
+    assert_eq!(far, Err(want), "{}", S::NAME);
+    let nan = Vec3::new(f64::NAN, 0.0, 0.0).try_cast::<S>();
+    assert_eq!(nan, Err(ballcast::Error::NaN { triangle: None }));
 }
 
 macro_rules! per_scalar {
