@@ -29,11 +29,8 @@ fn welded_soups_compact<S: Tolerance>() {
         let rebuilt: Vec<Triangle<S>> = indices
             .iter()
             .map(|c| {
-                Triangle::new(
-                    vertices[c[0] as usize],
-                    vertices[c[1] as usize],
-                    vertices[c[2] as usize],
-                )
+                let [a, b, c] = c.map(|k| vertices[k as usize]);
+                Triangle::new(a, b, c)
             })
             .collect();
         assert_eq!(format!("{rebuilt:?}"), format!("{input:?}"), "{}", S::NAME);
