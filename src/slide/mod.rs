@@ -86,8 +86,9 @@ impl<S: Scalar> Slide<S> {
 
     /// The last contact that counts as floor: one whose normal lies within a slope limit of
     /// the direction `up` (of any length: it is normalised here), i.e. `normal · up >= min_cos`
-    /// with `min_cos` the cosine of the steepest walkable slope (`FRAC_1_SQRT_2` for 45°). The character controllers of engines call a
-    /// ball with such a contact *grounded* (Unity's `isGrounded`, Godot's `is_on_floor`).
+    /// with `min_cos` the cosine of the steepest walkable slope (`FRAC_1_SQRT_2` for 45°). The
+    /// character controllers of engines call a ball with such a contact *grounded* (Unity's
+    /// `isGrounded`, Godot's `is_on_floor`).
     ///
     /// ```
     /// use ballcast::{Scene, Triangle, Vec3, move_and_slide};
