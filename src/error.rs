@@ -74,12 +74,13 @@ pub enum Error {
         /// The triangle's index, where it was one of many.
         triangle: Option<usize>,
     },
-    /// An index buffer names a vertex that is not there.
+    /// An index buffer names a vertex that is not there: an index at or beyond the vertex
+    /// count, or a negative one.
     VertexIndex {
         /// The triangle whose corner it is (the index buffer's position divided by three).
         triangle: usize,
-        /// The index read.
-        index: usize,
+        /// The index read, exactly as the buffer holds it (any primitive integer fits).
+        index: i128,
         /// How many vertices there are.
         vertices: usize,
     },
@@ -155,6 +156,9 @@ impl fmt::Display for Error {
             ),
             Error::Mismatch { .. } => {
                 f.write_str("baked parts differ from what their source triangle makes")
+            }
+            Error::VertexIndex { index, .. } if index < 0 => {
+                write!(f, "vertex index {index} is negative")
             }
             Error::VertexIndex {
                 index, vertices, ..

@@ -13,8 +13,9 @@ impl<S: Scalar, const N: usize> Scene<S, N> {
     /// stores them.
     ///
     /// Errors: [`Error::IndexCount`] for a buffer whose length is not a multiple of three,
-    /// [`Error::VertexIndex`] naming the triangle and the index beyond `vertices` (both checked
-    /// before anything is pushed), and those of [`push`](Self::push), naming the triangle.
+    /// [`Error::VertexIndex`] naming the triangle and the index beyond `vertices` or negative
+    /// (checked before anything is pushed), and those of [`push`](Self::push), naming the
+    /// triangle.
     ///
     /// ```
     /// use ballcast::{Error, Scene, Vec3};
@@ -25,9 +26,11 @@ impl<S: Scalar, const N: usize> Scene<S, N> {
     /// let bad = Scene::<f32, 8>::from_indexed(&quad, &[0u32, 1, 2, 0, 2, 4]).unwrap_err();
     /// assert_eq!(bad, Error::VertexIndex { triangle: 1, index: 4, vertices: 4 });
     /// assert_eq!(bad.to_string(), "triangle 1: vertex index 4 is beyond the 4 vertices");
+    /// let negative = Scene::<f32, 8>::from_indexed(&quad, &[0i32, -1, 2]).unwrap_err();
+    /// assert_eq!(negative.to_string(), "triangle 0: vertex index -1 is negative");
     /// # Ok::<(), Error>(())
     /// ```
-    pub fn from_indexed<I: Copy + TryInto<usize>>(
+    pub fn from_indexed<I: Copy + TryInto<i128>>(
         vertices: &[Vec3<S>],
         indices: &[I],
     ) -> Result<Self, Error> {
@@ -39,7 +42,7 @@ impl<S: Scalar, const N: usize> Scene<S, N> {
     /// [`from_indexed`](Self::from_indexed) into this scene: triangle indices in errors are
     /// those the triangles would have had in the scene. On an error from a push, the triangles
     /// before it stay in the scene ([`clear`](Self::clear) it to start again).
-    pub fn extend_indexed<I: Copy + TryInto<usize>>(
+    pub fn extend_indexed<I: Copy + TryInto<i128>>(
         &mut self,
         vertices: &[Vec3<S>],
         indices: &[I],
@@ -49,8 +52,10 @@ impl<S: Scalar, const N: usize> Scene<S, N> {
         }
         let first = self.len();
         let corner = |k: usize| {
-            let index = indices[k].try_into().unwrap_or(usize::MAX);
-            vertices.get(index).copied().ok_or(Error::VertexIndex {
+            // Every primitive integer converts to `i128` exactly (`u128` beyond it saturates).
+            let index: i128 = indices[k].try_into().unwrap_or(i128::MAX);
+            let found = usize::try_from(index).ok().and_then(|i| vertices.get(i));
+            found.copied().ok_or(Error::VertexIndex {
                 triangle: first + k / 3,
                 index,
                 vertices: vertices.len(),

@@ -122,6 +122,27 @@ fn triangle_try_cast_refuses_what_does_not_fit<S: Scalar>() {
     );
 }
 
+/// A negative index (as OBJ writes relative ones, if passed on unresolved) and one beyond
+/// `usize` are named as the buffer holds them, not as a wrapped or saturated number.
+#[test]
+fn negative_and_huge_indices_are_named_as_read() {
+    let (verts, _) = grid::<f32>();
+    let e = Scene::<f32, 8>::from_indexed(&verts, &[0i32, 1, 2, 0, -1, 2]).unwrap_err();
+    let want = Error::VertexIndex {
+        triangle: 1,
+        index: -1,
+        vertices: 9,
+    };
+    assert_eq!(e, want);
+    assert_eq!(e.to_string(), "triangle 1: vertex index -1 is negative");
+    let huge = u128::from(u64::MAX) + 5;
+    let e = Scene::<f32, 8>::from_indexed(&verts, &[0, huge, 2]).unwrap_err();
+    assert_eq!(
+        e.to_string(),
+        format!("triangle 0: vertex index {huge} is beyond the 9 vertices")
+    );
+}
+
 macro_rules! per_scalar {
     ($($m:ident: $t:ty),*) => {$(mod $m {
         #[allow(unused_imports)] // the fixed-point types, unused where $t is a float

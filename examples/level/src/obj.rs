@@ -1,12 +1,18 @@
 //! Wavefront OBJ through `tobj`: faces triangulated as fans (quads into two triangles),
-//! negative indices counted back from the last vertex, materials ignored.
+//! negative indices counted back from the last vertex, materials ignored. Before `tobj` reads
+//! it, the file is scanned for the faults a level must not pass over, so that the error names
+//! the line: a position that is not three numbers, a face with fewer than three corners (which
+//! `tobj` would drop without a word), a corner that is not a vertex index or names a vertex not
+//! defined before it.
 
 use super::{Problem, Tri};
 use std::path::Path;
 
 pub(crate) fn load(path: &Path) -> Result<Vec<Tri>, Problem> {
-    // tobj reports a missing file as a generic open error: say which.
-    std::fs::metadata(path).map_err(Problem::Io)?;
+    let bytes = std::fs::read(path).map_err(Problem::Io)?;
+    if let Some(fault) = first_fault(&String::from_utf8_lossy(&bytes)) {
+        return Err(Problem::Malformed(fault));
+    }
     let options = tobj::LoadOptions {
         triangulate: true,
         ignore_points: true,
@@ -30,4 +36,52 @@ pub(crate) fn load(path: &Path) -> Result<Vec<Tri>, Problem> {
         }
     }
     Ok(out)
+}
+
+/// The first fault of the kinds in the module docs, as "line N: what", if any.
+fn first_fault(text: &str) -> Option<String> {
+    let mut vertices = 0i64;
+    for (n, line) in text.lines().enumerate() {
+        let mut words = line.split_whitespace();
+        let at = n + 1;
+        match words.next() {
+            Some("v") => {
+                if words.take(3).filter(|w| w.parse::<f64>().is_ok()).count() < 3 {
+                    let line = line.trim();
+                    return Some(format!(
+                        "line {at}: `{line}` is not a position of three numbers"
+                    ));
+                }
+                vertices += 1;
+            }
+            Some("f") => {
+                let corners: Vec<&str> = words.collect();
+                if corners.len() < 3 {
+                    let k = corners.len();
+                    return Some(format!(
+                        "line {at}: a face needs three corners, this one has {k}"
+                    ));
+                }
+                for c in corners {
+                    // A corner is `v`, `v/vt`, `v//vn` or `v/vt/vn`: its first field counts.
+                    match c.split('/').next().and_then(|v| v.parse::<i64>().ok()) {
+                        None | Some(0) => {
+                            return Some(format!(
+                                "line {at}: the corner `{c}` is not a vertex index"
+                            ));
+                        }
+                        Some(i) if i.unsigned_abs() > vertices.unsigned_abs() => {
+                            return Some(format!(
+                                "line {at}: vertex index {i} is beyond the {vertices} vertices \
+                                 defined before it"
+                            ));
+                        }
+                        Some(_) => {}
+                    }
+                }
+            }
+            _ => {}
+        }
+    }
+    None
 }

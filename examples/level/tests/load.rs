@@ -101,12 +101,27 @@ fn refused(name: &str, what: &str) -> Problem {
 
 #[test]
 fn malformed_obj() {
+    // Each names its line.
     assert!(matches!(
-        refused("bad_number.obj", "malformed"),
+        refused(
+            "bad_number.obj",
+            "malformed: line 3: `v 1 x 0` is not a position"
+        ),
         Problem::Malformed(_)
     ));
     assert!(matches!(
-        refused("bad_index.obj", "malformed"),
+        refused(
+            "bad_index.obj",
+            "line 4: vertex index 9 is beyond the 3 vertices"
+        ),
+        Problem::Malformed(_)
+    ));
+    // A face of two corners, after a good one: refused, not dropped without a word.
+    assert!(matches!(
+        refused(
+            "two_corners.obj",
+            "line 5: a face needs three corners, this one has 2"
+        ),
         Problem::Malformed(_)
     ));
     assert!(matches!(
