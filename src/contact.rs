@@ -101,9 +101,10 @@ impl<S: Scalar> StandardTriangle<S> {
 
     /// The same triangle, one-sided (`false`, the default) or two-sided (`true`).
     ///
-    /// One-sided, only a ball moving towards the front (velocity · front normal < 0) with its
-    /// centre in front of the plane at contact can touch it; two-sided, the back behaves like a
-    /// front facing the other way.
+    /// One-sided, only a ball whose centre starts in front of the plane can touch it: the face
+    /// when the ball moves towards the front (velocity · front normal < 0), an edge or vertex
+    /// whatever the motion, with the centre in front at contact. Two-sided, the back behaves
+    /// like a front facing the other way.
     pub fn with_two_sided(mut self, two_sided: bool) -> Self {
         self.two_sided = two_sided;
         self
@@ -118,8 +119,11 @@ impl<S: Scalar> StandardTriangle<S> {
     /// its active edges and its active vertices.
     ///
     /// Rules, so that results are predictable at the boundaries:
-    /// - One-sided by default: nothing counts unless the ball moves towards the front, and an
-    ///   edge or vertex contact counts only with the centre on the front side of the plane.
+    /// - One-sided by default: nothing counts unless the centre starts in front of the plane.
+    ///   The face counts only for a ball moving towards the front; an edge or vertex counts
+    ///   with the centre in front at contact, also for a ball moving along the plane or away
+    ///   from it (falling past the top edge of a wall, the ball lands on the edge). Two-sided,
+    ///   the side the centre starts on is the front.
     /// - A ball that *starts* overlapping the triangle (centre in front, closer than `r` to the
     ///   face region, an active edge or an active vertex) and does not move away (it moves
     ///   further in, or along the plane as rounded) is reported at `alpha = 0`, with the normal
@@ -203,26 +207,27 @@ impl<S: Scalar> StandardTriangle<S> {
     /// or `None` where no contact is possible.
     #[inline(always)]
     fn facing(&self, sweep: &Sweep<S>, (y0, y1): (S, S)) -> Option<(bool, S, S)> {
-        // Towards the back (or along the plane behind it): a one-sided triangle ignores it, a
-        // two-sided one mirrors y.
-        let back = y1 > y0 || (y1 == y0 && y0 < S::ZERO);
+        // The side the centre starts on (one in the plane: the side it comes from); behind, a
+        // one-sided triangle ignores the sweep, a two-sided one mirrors y.
+        let back = if y0 == S::ZERO { y1 > y0 } else { y0 < S::ZERO };
         let (start, end) = if back { (-y0, -y1) } else { (y0, y1) };
-        // Contact needs the centre to start on the side it moves towards and to come within r
-        // of the plane: decided by the heights, before the rest of the transform. A path along
-        // the plane counts only where the ball starts overlapping the triangle.
-        let out = (back && !self.two_sided) || start < S::ZERO || end >= sweep.radius();
+        // Contact needs the centre to come within r of the plane: decided by the heights,
+        // before the rest of the transform.
+        let r = sweep.radius();
+        let out = (back && !self.two_sided) || start < S::ZERO || (start >= r && end >= r);
         (!out).then_some((back, start, end))
     }
 
-    /// `cast` for a sweep moving towards the front (or parallel to the plane).
+    /// `cast` for a sweep whose centre starts in front of the plane (or in it).
     fn cast_front(&self, s: &StandardSweep<S>) -> Option<Touch<S>> {
         let (p0, p1, r) = (s.p0, s.p1, s.radius);
         let d = p1 - p0;
-        // Moving away, starting behind the plane, or never within r of it. A path along the
-        // plane (as rounded) can only meet what the ball already overlaps, at alpha = 0: it must
-        // not carry an overlapping ball on by a step of rounding per call.
-        if d.y > S::ZERO || p0.y < S::ZERO || p1.y >= r {
+        // Starting behind the plane, or never within r of it.
+        if p0.y < S::ZERO || (p0.y >= r && p1.y >= r) {
             return None;
+        }
+        if d.y > S::ZERO {
+            return self.cast_rising(p0, p1, r);
         }
         // The face is reached at height r, before any edge or vertex can be.
         let face = face_point(s);
@@ -242,6 +247,23 @@ impl<S: Scalar> StandardTriangle<S> {
             return None;
         }
         self.edges_and_vertices(p0, d, r)
+    }
+
+    /// [`cast_front`](Self::cast_front) for a ball moving away from the plane, its centre
+    /// starting in front within `r` of it: the face cannot be met (a ball that overlaps it
+    /// leaves), but an edge or vertex the ball passes within `r` of can. Starting outside the
+    /// face region, the ball touches the triangle first where it touches one of them first.
+    #[cold]
+    #[inline(never)]
+    fn cast_rising(&self, p0: Vec3<S>, p1: Vec3<S>, r: S) -> Option<Touch<S>> {
+        let over_face = contains(self, p0.x, p0.z) || self.within_seams(p0.x, p0.z, r);
+        if over_face || r == S::ZERO || !self.near_path(p0, p1, r) {
+            return None;
+        }
+        if self.beyond_an_edge(p0, p1, r) {
+            return None;
+        }
+        self.edges_and_vertices(p0, p1 - p0, r)
     }
 
     /// The earliest contact with an active edge or vertex: the part of
@@ -280,9 +302,7 @@ impl<S: Scalar> StandardTriangle<S> {
                 best = v;
             }
         }
-        // Along the plane, only what the ball already overlaps counts.
         best.map(|((alpha, offset, contact), key)| (alpha, offset, contact, key))
-            .filter(|(alpha, ..)| d.y < S::ZERO || *alpha == S::ZERO)
     }
 
     /// Whether `q'` lies inside the triangle once each inactive edge is moved out by
@@ -375,7 +395,7 @@ impl<S: Scalar> StandardTriangle<S> {
 }
 
 /// Whether the ball's centre is still higher than `r` above the plane (heights `start` to
-/// `end`, falling) at alpha `reach`, by more than any rounding: then every contact with the
+/// `end`) up to alpha `reach`, by more than any rounding: then every contact with the
 /// triangle comes after `reach`. Every contact has the centre within `r` of a point of the plane
 /// at its alpha: exactly at the face's, and up to the rounding of the edge and vertex tests (a
 /// few steps of the heights' magnitude) plus that of alpha itself (half a step, times the
@@ -387,7 +407,9 @@ fn above_at<S: Scalar>(sweep: &Sweep<S>, (start, end): (S, S), reach: S) -> bool
     let m = largest(start.abs(), end.abs(), r);
     let h = S::height_error(largest(m, length, S::ZERO));
     let e = h + h + h + h + tie::<S>().mul(length) + tie::<S>().mul(length);
-    start + reach.mul(end - start) > r + e
+    // Along or away from the plane the start is the lowest point, and `facing` kept it
+    // within r: no contact is excluded.
+    end < start && start + reach.mul(end - start) > r + e
 }
 
 /// The fraction of a path at which a point starting at offset `q0` from a feature, moving a

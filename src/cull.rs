@@ -83,8 +83,8 @@ impl Path {
     /// Whether the path, over `[t0, t1]`, comes within the pad of the plane through `v`:
     /// every contact needs the ball within its radius of the triangle's plane. The distance
     /// along the path is linear, so its ends decide. A one-sided triangle (front where `v` turns
-    /// counter-clockwise) is also passed by where the path starts behind its plane or moves
-    /// away from its front, beyond the rounding of the heights `cast` decides both by.
+    /// counter-clockwise) is also passed by where the path starts behind its plane, beyond the
+    /// rounding of the heights `cast` decides it by.
     ///
     /// The prepared triangle's plane is tilted from the exact one by the rounding of its
     /// normal, which a sliver magnifies: the normal comes from the cross product of two edges
@@ -170,9 +170,7 @@ impl Path {
         // extent is at most `longest` per axis from the first vertex: `2 (longest + pad)` away.
         let reach = (self.pad + tilt * 2.0 * (longest + self.pad)) * norm;
         let height = |far: f64| (self.slack + tilt * 2.0 * far) * norm;
-        let behind = one_sided
-            && (is_less(start, -height(big(sub(self.p0, v[0]))))
-                || is_less(2.0 * height(big(self.d)), along));
+        let behind = one_sided && is_less(start, -height(big(sub(self.p0, v[0]))));
         // d0 and d1 are finite (the path and the triangle are): ordered by one comparison.
         let (near, far) = if d1 < d0 { (d1, d0) } else { (d0, d1) };
         if behind || is_less(reach, near) || is_less(far, -reach) {

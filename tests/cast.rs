@@ -63,10 +63,41 @@ fn hand_cases<S: Tolerance>() {
         close(a, 2.2 / 6.0) && near(n, [0.48, 0.8, -0.36]),
         "{a} {n:?}"
     );
-    // Sliding horizontally at height 0.5 towards the hypotenuse x + z = 4 from outside: moving
-    // parallel to the plane, so a one-sided triangle reports nothing.
+    // Sliding horizontally at height 0.5 towards the hypotenuse x + z = 4 from outside, along
+    // the plane: the ball catches the edge where its centre is √0.75 from it across the plane,
+    // after (2√2 − √0.75) of the path's 3√2; normal (√0.375, 0.5, √0.375).
+    let (a, n, c) = cast::<S>(TRI, [4.0, 0.5, 4.0], [1.0, 0.5, 1.0], 1.0, all, false).unwrap();
+    let (w, h) = (0.75f64.sqrt(), 0.375f64.sqrt());
+    assert_eq!(c, Contact::Edge(1));
+    assert!(
+        close(a, (8.0f64.sqrt() - w) / 18.0f64.sqrt()) && near(n, [h, 0.5, h]),
+        "{a} {n:?}"
+    );
+    // Rising from height 0.3 beside edge 2 (z = 0) at z = -1.5 towards it, along (0, 0.6, 2):
+    // away from the plane, yet the ball catches the edge, at t with (0.3 + 0.6 t)² +
+    // (2 t − 1.5)² = 1. Two-sided, the same from behind, mirrored; one-sided, nothing there.
+    let t = (5.64 - (5.64f64 * 5.64 - 4.0 * 4.36 * 1.34).sqrt()) / (2.0 * 4.36);
+    let normal = [0.0, 0.3 + 0.6 * t, 2.0 * t - 1.5];
+    for two in [false, true] {
+        let (a, n, c) = cast::<S>(TRI, [2.0, 0.3, -1.5], [2.0, 0.9, 0.5], 1.0, all, two).unwrap();
+        assert!(
+            c == Contact::Edge(2) && close(a, t) && near(n, normal),
+            "{a} {n:?}"
+        );
+    }
+    let (a, n, c) = cast::<S>(TRI, [2.0, -0.3, -1.5], [2.0, -0.9, 0.5], 1.0, all, true).unwrap();
+    let mirrored = [0.0, -normal[1], normal[2]];
+    assert!(
+        c == Contact::Edge(2) && close(a, t) && near(n, mirrored),
+        "{a} {n:?}"
+    );
     assert_eq!(
-        cast::<S>(TRI, [4.0, 0.5, 4.0], [1.0, 0.5, 1.0], 1.0, all, false),
+        cast::<S>(TRI, [2.0, -0.3, -1.5], [2.0, -0.9, 0.5], 1.0, all, false),
+        None
+    );
+    // Overlapping the face and rising out across edge 2: it leaves, nothing is reported.
+    assert_eq!(
+        cast::<S>(TRI, [2.0, 0.5, 0.5], [2.0, 0.8, -1.5], 1.0, all, false),
         None
     );
     // Moving towards the back: nothing one-sided; two-sided, the back face with normal -y.
@@ -140,7 +171,7 @@ fn f64_cast_matches_distance_oracle() {
         );
         let height = |p: P| common::dot(common::sub(p, c.tri[0]), n);
         let start = distance_to_triangle(c.p0, c.tri);
-        if start < c.r || common::dot(common::sub(c.p1, c.p0), n) >= 0.0 {
+        if start < c.r || height(c.p0) < 0.0 {
             continue; // overlap and one-sided rules: covered by the hand cases
         }
         let end = got.map_or(1.0, |(a, _)| a);
