@@ -4,7 +4,9 @@
 
 mod common;
 
-use ballcast::{Contact, Error, Scalar, Scene, Sweep, Triangle, move_and_slide, slide::Slider};
+use ballcast::{
+    Contact, Error, Scalar, Scene, Sweep, Triangle, Vec3, move_and_slide, slide::Slider,
+};
 use common::{Tolerance, back, v};
 use fixed::types::{I16F16, I32F32};
 
@@ -311,6 +313,60 @@ fn falling_past_a_walls_top_edge_lands_on_it<S: Tolerance>() {
     );
 }
 
+/// A floor and two walls meeting along the y axis at `angle` degrees (wider than a right
+/// angle: the walls' normals make an obtuse corner), one facing +x, the other turned about y.
+fn wide_corner<S: Scalar>(angle: f64) -> Scene<S, 8> {
+    let mut level: Scene<S, 8> = Scene::new();
+    let (a, b, c, d) = (
+        [-20.0, 0.0, -20.0],
+        [-20.0, 0.0, 20.0],
+        [20.0, 0.0, 20.0],
+        [20.0, 0.0, -20.0],
+    );
+    level.push(Triangle::new(v(a), v(b), v(c))).unwrap();
+    level.push(Triangle::new(v(a), v(c), v(d))).unwrap();
+    for turn in [0.0f64, 180.0 - angle] {
+        let (sin, cos) = turn.to_radians().sin_cos();
+        let p = |u: f64, y: f64| v::<S>([-sin * u, y, cos * u]);
+        level
+            .push(Triangle::new(p(-20.0, -1.0), p(20.0, 4.0), p(20.0, -1.0)))
+            .unwrap();
+        level
+            .push(Triangle::new(p(-20.0, -1.0), p(-20.0, 4.0), p(20.0, 4.0)))
+            .unwrap();
+    }
+    level
+}
+
+/// The character loop standing in a corner of 120° or 150° and pressing into it: grounded on
+/// every frame, as in a right-angled corner. It once lost the floor on most frames: the slide
+/// along one wall ran against the motion and was dropped, and the crease of the two walls,
+/// straight down to the floor, was never tried.
+fn pressing_into_a_wide_corner_stays_grounded<S: Tolerance>() {
+    let (dt, r, up) = (
+        S::from_f64(1.0 / 60.0),
+        S::from_f64(0.4),
+        v::<S>([0.0, 1.0, 0.0]),
+    );
+    let walkable = S::from_f64(std::f64::consts::FRAC_1_SQRT_2);
+    for (angle, push) in [(120.0, [-5.2, -3.0]), (150.0, [-5.8, -1.55])] {
+        let level = wide_corner::<S>(angle);
+        let (mut p, mut vel) = (v::<S>([1.5, 0.41, 0.9]), v::<S>([0.0; 3]));
+        for frame in 0..600 {
+            let wish = v::<S>([push[0], 0.0, push[1]]);
+            vel = Vec3::new(wish.x, vel.y, wish.z) + v::<S>([0.0, -9.81, 0.0]) * dt;
+            let out = move_and_slide(&level, p, vel * dt, r).unwrap();
+            (p, vel) = (out.position, out.clip(vel).unwrap());
+            let grounded = out.floor(up, walkable).unwrap().is_some();
+            assert!(
+                frame < 120 || grounded,
+                "{}: {angle}°, frame {frame} in the air at {p:?}",
+                S::NAME
+            );
+        }
+    }
+}
+
 macro_rules! per_scalar {
     ($($m:ident: $t:ty),*) => {$(mod $m {
         use super::*;
@@ -337,6 +393,10 @@ macro_rules! per_scalar {
         #[test]
         fn slow_slides_along_a_wall() {
             slow_slides_along_a_wall_are_kept::<$t>();
+        }
+        #[test]
+        fn pressing_into_a_wide_corner() {
+            pressing_into_a_wide_corner_stays_grounded::<$t>();
         }
         #[test]
         fn falling_past_a_walls_top_edge() {

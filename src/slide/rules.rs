@@ -54,9 +54,11 @@ pub(super) fn add_planes<S: Scalar>(planes: &mut Planes<S>, hit: &SceneHit<S>) -
 
 /// `v` constrained by every plane (unit normals): unchanged if it moves into none; else the
 /// first of: `v` without its part into one plane, along the crease of two, that moves into
-/// no other plane (beyond rounding); else zero. Zero too if the result runs against `primal`
-/// (the sign of their product taken exactly), or is no larger than the rounding of the normals
-/// times `v` (in fixed point, plus two steps).
+/// no other plane (beyond rounding), runs along `primal` (the sign of their product taken
+/// exactly) and is larger than the rounding of the normals times `v` (in fixed point, plus
+/// two steps); else zero. A candidate that runs against `primal` does not end the search: in a
+/// corner wider than a right angle, sliding along one wall leads back out of the corner, while
+/// the crease of the two walls leads down to the floor.
 pub(super) fn constrain<S: Scalar>(v: Vec3<S>, planes: &[Vec3<S>], primal: Vec3<S>) -> Vec3<S> {
     let zero = Vec3::ZERO;
     let slack = -S::height_error(magnitude(v));
@@ -71,36 +73,23 @@ pub(super) fn constrain<S: Scalar>(v: Vec3<S>, planes: &[Vec3<S>], primal: Vec3<
         S::EPSILON + S::EPSILON
     };
     let noise = S::mul(magnitude(v), crate::scalar::tie::<S>()) + steps;
-    let keep = |w: Vec3<S>| {
-        // The sign exactly: a slow slide (in `I16F16`, below about 2^-8.5 a component) has a
-        // product with the motion below half a step, which would round to zero.
-        if magnitude(w) > noise && S::dot_sign(w, primal).is_gt() {
-            w
-        } else {
-            zero
-        }
-    };
+    // The sign exactly: a slow slide (in `I16F16`, below about 2^-8.5 a component) has a
+    // product with the motion below half a step, which would round to zero.
+    let keep = |w: &Vec3<S>| clear(*w) && magnitude(*w) > noise && S::dot_sign(*w, primal).is_gt();
     if clear(v) {
         return v;
     }
-    for n in planes {
+    let slides = planes.iter().map(|n| {
         let into = S::dot(v, *n);
-        let w = if into < S::ZERO { v - n.scale(into) } else { v };
-        if clear(w) {
-            return keep(w);
-        }
-    }
-    for (i, a) in planes.iter().enumerate() {
-        for b in &planes[i + 1..] {
-            if let Some(c) = unit(cross_unit(*a, *b)) {
-                let w = c.scale(S::dot(v, c));
-                if clear(w) {
-                    return keep(w);
-                }
-            }
-        }
-    }
-    zero
+        if into < S::ZERO { v - n.scale(into) } else { v }
+    });
+    let creases = planes.iter().enumerate().flat_map(|(i, a)| {
+        let lines = planes[i + 1..]
+            .iter()
+            .filter_map(|b| unit(cross_unit(*a, *b)));
+        lines.map(|c| c.scale(S::dot(v, c)))
+    });
+    slides.chain(creases).find(keep).unwrap_or(zero)
 }
 
 /// The cross product of two unit vectors, each component rounded once.
