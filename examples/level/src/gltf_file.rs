@@ -18,7 +18,26 @@ fn malformed(m: impl Into<String>) -> Problem {
 
 pub(crate) fn load(path: &Path) -> Result<Vec<Tri>, Problem> {
     let bytes = std::fs::read(path).map_err(Problem::Io)?;
-    let gltf = Gltf::from_slice(&bytes).map_err(|e| malformed(e.to_string()))?;
+    let unchecked =
+        Gltf::from_slice_without_validation(&bytes).map_err(|e| malformed(e.to_string()))?;
+    // `gltf`'s validation reads a primitive's POSITION accessor before checking that it
+    // exists, and panics if it does not (gltf-json 1.4.1): every attribute is checked first.
+    let root = unchecked.document.as_json();
+    let accessors = root.accessors.len();
+    for (m, mesh) in root.meshes.iter().enumerate() {
+        for (p, primitive) in mesh.primitives.iter().enumerate() {
+            let used = primitive.attributes.values().map(|a| a.value());
+            if let Some(a) = used.into_iter().find(|&a| a >= accessors) {
+                return Err(malformed(format!(
+                    "mesh {m}, primitive {p}: accessor {a} does not exist ({accessors} accessors)"
+                )));
+            }
+        }
+    }
+    let blob = unchecked.blob;
+    let document = gltf::Document::from_json(unchecked.document.into_json())
+        .map_err(|e| malformed(e.to_string()))?;
+    let gltf = Gltf { document, blob };
     let buffers = buffers(&gltf, path)?;
     let scene = gltf
         .default_scene()

@@ -1,9 +1,9 @@
 //! Wavefront OBJ through `tobj`: faces triangulated as fans (quads into two triangles),
-//! negative indices counted back from the last vertex, materials ignored. Before `tobj` reads
-//! it, the file is scanned for the faults a level must not pass over, so that the error names
-//! the line: a position that is not three numbers, a face with fewer than three corners (which
-//! `tobj` would drop without a word), a corner that is not a vertex index or names a vertex not
-//! defined before it.
+//! negative indices counted back from the last vertex, materials ignored (their `.mtl` files
+//! are not read). Before `tobj` reads it, the file is scanned for the faults a level must not
+//! pass over, so that the error names the line: a position that is not three numbers, a face
+//! with fewer than three corners (which `tobj` would drop without a word), a corner whose
+//! vertex, texture or normal index is not a nonzero integer or names one not defined before it.
 
 use super::{Problem, Tri};
 use std::path::Path;
@@ -19,9 +19,11 @@ pub(crate) fn load(path: &Path) -> Result<Vec<Tri>, Problem> {
         ignore_lines: true,
         ..Default::default()
     };
-    // The material result is dropped: a level needs no .mtl file.
-    let (models, _materials) =
-        tobj::load_obj(path, &options).map_err(|e| Problem::Malformed(e.to_string()))?;
+    // Every material library "fails to open": a level needs none, and `tobj` panics on some
+    // malformed ones (tobj 4.0.5, a colour of two numbers).
+    let no_materials = |_: &Path| Err(tobj::LoadError::OpenFileFailed);
+    let (models, _materials) = tobj::load_obj_buf(&mut bytes.as_slice(), &options, no_materials)
+        .map_err(|e| Problem::Malformed(e.to_string()))?;
     let mut out = Vec::new();
     for m in &models {
         let (p, idx) = (&m.mesh.positions, &m.mesh.indices);
@@ -38,9 +40,15 @@ pub(crate) fn load(path: &Path) -> Result<Vec<Tri>, Problem> {
     Ok(out)
 }
 
+/// Whether a 1-based OBJ index (negative: counted back from the last) names one of `count`.
+fn names_one(i: i64, count: i64) -> bool {
+    i != 0 && i.unsigned_abs() <= count.unsigned_abs()
+}
+
 /// The first fault of the kinds in the module docs, as "line N: what", if any.
 fn first_fault(text: &str) -> Option<String> {
-    let mut vertices = 0i64;
+    // Positions, texture coordinates and normals defined so far.
+    let mut defined = [0i64; 3];
     for (n, line) in text.lines().enumerate() {
         let mut words = line.split_whitespace();
         let at = n + 1;
@@ -52,8 +60,10 @@ fn first_fault(text: &str) -> Option<String> {
                         "line {at}: `{line}` is not a position of three numbers"
                     ));
                 }
-                vertices += 1;
+                defined[0] += 1;
             }
+            Some("vt") => defined[1] += 1,
+            Some("vn") => defined[2] += 1,
             Some("f") => {
                 let corners: Vec<&str> = words.collect();
                 if corners.len() < 3 {
@@ -63,20 +73,21 @@ fn first_fault(text: &str) -> Option<String> {
                     ));
                 }
                 for c in corners {
-                    // A corner is `v`, `v/vt`, `v//vn` or `v/vt/vn`: its first field counts.
-                    match c.split('/').next().and_then(|v| v.parse::<i64>().ok()) {
-                        None | Some(0) => {
+                    // A corner is `v`, `v/vt`, `v//vn` or `v/vt/vn`; an empty field is absent,
+                    // except the vertex's.
+                    let kinds = ["vertex", "texture", "normal"];
+                    for (k, field) in c.split('/').enumerate().take(3) {
+                        let ok = match field.parse::<i64>() {
+                            Ok(i) => names_one(i, defined[k]),
+                            Err(_) => k > 0 && field.is_empty(),
+                        };
+                        if !ok {
+                            let (what, count) = (kinds[k], defined[k]);
                             return Some(format!(
-                                "line {at}: the corner `{c}` is not a vertex index"
-                            ));
-                        }
-                        Some(i) if i.unsigned_abs() > vertices.unsigned_abs() => {
-                            return Some(format!(
-                                "line {at}: vertex index {i} is beyond the {vertices} vertices \
+                                "line {at}: the corner `{c}` names no {what} of the {count} \
                                  defined before it"
                             ));
                         }
-                        Some(_) => {}
                     }
                 }
             }

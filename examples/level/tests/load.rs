@@ -112,10 +112,20 @@ fn malformed_obj() {
     assert!(matches!(
         refused(
             "bad_index.obj",
-            "line 4: vertex index 9 is beyond the 3 vertices"
+            "line 4: the corner `9` names no vertex of the 3"
         ),
         Problem::Malformed(_)
     ));
+    // A texture index beyond those defined, and a material library that would make the
+    // parser panic (a colour of two numbers): the first refused, the second never read.
+    assert!(matches!(
+        refused(
+            "bad_texture.obj",
+            "line 5: the corner `2/-5` names no texture of the 1"
+        ),
+        Problem::Malformed(_)
+    ));
+    assert_eq!(load(data("bad_material.obj")).unwrap().triangles.len(), 1);
     // A face of two corners, after a good one: refused, not dropped without a word.
     assert!(matches!(
         refused(
@@ -146,6 +156,12 @@ fn malformed_gltf_and_glb() {
     ));
     assert!(matches!(
         refused("truncated.glb", "malformed"),
+        Problem::Malformed(_)
+    ));
+    // A primitive whose POSITION accessor does not exist (the parser's own validation once
+    // panicked on it).
+    assert!(matches!(
+        refused("missing_accessor.gltf", "accessor 0 does not exist"),
         Problem::Malformed(_)
     ));
     // hierarchy.gltf with the root listed as a child of its own child: a cycle, not a tree.
