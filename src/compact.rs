@@ -137,7 +137,8 @@ impl core::error::Error for CompactError {}
 impl<'a, S: Scalar, I: MeshIndex> CompactMesh<'a, S, I> {
     /// A compact mesh from parts made by [`compact`](Self::compact) (or baked from them), in
     /// a `const` context, so it can be a `static`. Nothing is checked here; parts from
-    /// elsewhere can give wrong answers, never a panic or undefined behaviour.
+    /// elsewhere can give wrong answers, never undefined behaviour, and no panic in a release
+    /// build (with overflow checks on, as in a debug build, out-of-range parts can trip them).
     pub const fn from_parts(
         nodes: &'a [Node],
         grid: Grid,

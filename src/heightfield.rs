@@ -174,7 +174,8 @@ impl<'a, S: Scalar> Heightfield<'a, S> {
     /// A heightfield from parts made by [`build`](Self::build) (or baked from them), in a
     /// `const` context, so it can be a `static`. Nothing is checked here: check baked parts
     /// against [`build`](Self::build) in a test. Parts from elsewhere can give wrong answers,
-    /// never a panic or undefined behaviour.
+    /// never undefined behaviour, and no panic in a release build (with overflow checks on, as
+    /// in a debug build, out-of-range parts can trip them, as any integer arithmetic would).
     #[allow(clippy::too_many_arguments)]
     pub const fn from_parts(
         origin: Vec3<S>,

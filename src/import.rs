@@ -138,10 +138,11 @@ pub type Welded<S> = (Vec<Vec3<S>>, Vec<[u32; 3]>);
 /// [`CompactMesh::compact`](crate::CompactMesh::compact) takes): corners equal in value
 /// (`-0.0` and `0.0` included) become one vertex, numbered in order of first appearance, and
 /// each triangle keeps its corners' order, so the triangles rebuilt from the two are the input's,
-/// bit for bit (a NaN corner, equal to nothing, stays a vertex of its own). `O(N log N)`: the
-/// corners sorted by value. Needs the `alloc` feature.
+/// bit for bit. `O(N log N)`: the corners sorted by value. Needs the `alloc` feature.
 ///
-/// Errors: [`Error::Full`] beyond `u32::MAX / 3` triangles (the indices are `u32`).
+/// Errors: [`Error::NaN`] naming the first triangle with a NaN coordinate (equal to nothing, it
+/// could not be welded, nor prepared); [`Error::Full`] beyond `u32::MAX / 3` triangles (the
+/// indices are `u32`).
 ///
 /// ```
 /// use ballcast::{Vec3, Triangle, import::weld};
@@ -157,23 +158,36 @@ pub type Welded<S> = (Vec<Vec3<S>>, Vec<[u32; 3]>);
 /// ```
 #[cfg(feature = "alloc")]
 pub fn weld<S: Scalar>(triangles: &[Triangle<S>]) -> Result<Welded<S>, Error> {
+    use core::cmp::Ordering;
     const MAX: usize = u32::MAX as usize / 3;
     if triangles.len() > MAX {
         return Err(Error::Full { capacity: MAX });
     }
     let corners: Vec<Vec3<S>> = triangles.iter().flat_map(Triangle::vertices).collect();
-    // Equal values have equal keys (adding zero makes -0.0 one with 0.0); distinct values
-    // may share one (`I32F32` beyond 53 bits), and are told apart exactly within its run.
-    let key = |k: usize| corners[k].to_array().map(|c| (c.to_f64() + 0.0).to_bits());
+    let unordered = |c: &S| c.partial_cmp(c).is_none();
+    if let Some(k) = corners
+        .iter()
+        .position(|p| p.to_array().iter().any(unordered))
+    {
+        return Err(Error::NaN {
+            triangle: Some(k / 3),
+        });
+    }
+    // Without NaN the order by value (x, then y, then z), then by position, is total, and equal
+    // values (`-0.0` with `0.0`) form runs that begin with their first appearance.
+    let by_value = |a: &usize, b: &usize| {
+        let (p, q) = (corners[*a].to_array(), corners[*b].to_array());
+        let mut axes = p.iter().zip(&q).map(|(x, y)| x.partial_cmp(y));
+        let first = axes.find(|o| *o != Some(Ordering::Equal)).flatten();
+        first.unwrap_or(Ordering::Equal).then(a.cmp(b))
+    };
     let mut sorted: Vec<usize> = (0..corners.len()).collect();
-    sorted.sort_unstable_by_key(|&k| (key(k), k));
-    // Each corner's first equal corner: runs are in corner order, so it comes earlier.
+    sorted.sort_unstable_by(by_value);
+    // Each corner's first equal corner.
     let mut first: Vec<usize> = (0..corners.len()).collect();
-    for run in sorted.chunk_by(|&a, &b| key(a) == key(b)) {
-        for (i, &k) in run.iter().enumerate() {
-            if let Some(&e) = run[..i].iter().find(|&&e| corners[e] == corners[k]) {
-                first[k] = first[e];
-            }
+    for run in sorted.chunk_by(|&a, &b| corners[a] == corners[b]) {
+        for &k in run {
+            first[k] = run[0];
         }
     }
     let (mut vertices, mut number) = (Vec::new(), Vec::with_capacity(corners.len()));

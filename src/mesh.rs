@@ -114,7 +114,8 @@ impl<'a, S: Scalar> Mesh<'a, S> {
     /// A mesh from parts made by [`Mesh::build`] (or baked from them), in a `const` context, so
     /// a mesh can be a `static`. Nothing is checked here: check baked parts with
     /// [`verify`](Self::verify) in a test. Parts from elsewhere can give wrong answers, never
-    /// a panic or undefined behaviour.
+    /// undefined behaviour, and no panic in a release build (with overflow checks on, as in a
+    /// debug build, out-of-range parts can trip them).
     pub const fn from_parts(
         nodes: &'a [Node],
         triangles: &'a [StandardTriangle<S>],

@@ -130,9 +130,9 @@ pub struct Precision {
 
 impl Precision {
     /// Whether coordinates within `±extent` and radii up to `radius` are inside the safe range,
-    /// so that nothing can overflow.
+    /// so that nothing can overflow. Both are magnitudes: a negative or NaN one fits nothing.
     pub const fn fits(&self, extent: f64, radius: f64) -> bool {
-        extent <= self.limit && radius <= self.limit && radius >= 0.0
+        extent >= 0.0 && extent <= self.limit && radius >= 0.0 && radius <= self.limit
     }
 
     /// The largest error expected of a contact's position along the normal, for coordinates
@@ -252,11 +252,12 @@ pub const fn choose(extent: f64, radius: f64, path: f64, tolerance: f64) -> Opti
 }
 
 impl Verdict {
-    /// The verdict on one scalar for a scene as in [`plan`].
+    /// The verdict on one scalar for a scene as in [`plan`]; it does not fit where `extent`,
+    /// `radius` or `path` is negative or NaN (each is a magnitude).
     pub const fn of(precision: Precision, extent: f64, radius: f64, path: f64) -> Self {
         Self {
             precision,
-            fits: precision.fits(extent, radius),
+            fits: precision.fits(extent, radius) && path >= 0.0,
             distance_error: precision.distance_error(extent, path),
             position_error: precision.position_error(extent),
             min_radius: precision.min_radius(extent),
@@ -282,7 +283,8 @@ pub struct Memory {
 
 impl Memory {
     /// The bytes of a level of `triangles` triangles over `vertices` distinct vertices in each
-    /// form, in `scalar`: the sizes the builds make, exactly (the build's scratch not counted).
+    /// form, in `scalar`: the sizes the builds make, exactly (the build's scratch not counted);
+    /// `usize::MAX` where that does not fit a `usize`.
     pub const fn of(scalar: ScalarType, triangles: usize, vertices: usize) -> Self {
         let (prepared, vertex) = match scalar {
             ScalarType::I16F16 => (
@@ -296,16 +298,18 @@ impl Memory {
             ),
             ScalarType::F64 => (size_of::<StandardTriangle<f64>>(), size_of::<Vec3<f64>>()),
         };
-        let nodes = nodes_for(triangles) * size_of::<Node>();
+        let nodes = nodes_for(triangles).saturating_mul(size_of::<Node>());
         let index = if triangles <= 1 << 16 && vertices <= 1 << 16 {
             2
         } else {
             4
         };
         Self {
-            mesh: nodes + triangles * (prepared + 4),
-            compact: nodes + vertices * vertex + triangles * (4 * index + 1),
-            heightfield: 2 * vertices + triangles / 2,
+            mesh: nodes.saturating_add(triangles.saturating_mul(prepared + 4)),
+            compact: nodes
+                .saturating_add(vertices.saturating_mul(vertex))
+                .saturating_add(triangles.saturating_mul(4 * index + 1)),
+            heightfield: vertices.saturating_mul(2).saturating_add(triangles / 2),
         }
     }
 }

@@ -248,7 +248,9 @@ impl<S: Scalar> StandardTriangle<S> {
     /// Rebuilds a triangle from [`Parts`] made by [`to_parts`](Self::to_parts), in a `const`
     /// context, so a prepared scene can live in a `static` (read-only memory) with no start-up
     /// work. Nothing is re-validated here: parts from anywhere else may give wrong answers (never
-    /// undefined behaviour); check baked parts with [`Parts::verify`] in a test. The derived
+    /// undefined behaviour, and no panic in a release build; with overflow checks on, as in a
+    /// debug build, out-of-range parts can trip them); check baked parts with
+    /// [`Parts::verify`] in a test. The derived
     /// fields (`normal`, edge 2's length and its direction's z) are not read: `to_parts`
     /// computes them again.
     pub const fn from_parts(p: Parts<S>) -> Self {

@@ -71,6 +71,24 @@ fn planner_refuses_what_overflows() {
         !ballcast::plan(1.0, -1.0, 1.0)[3].fits,
         "a negative radius fits nothing"
     );
+    // Extent and path are magnitudes too: negative or NaN ones fit nothing, so no scalar is
+    // chosen for them (a negative path once made every error negative, and `choose` picked a
+    // scalar for any tolerance).
+    for (extent, path) in [(-1e30, 1.0), (1e4, -1e9), (f64::NAN, 1.0), (1.0, f64::NAN)] {
+        assert!(ballcast::plan(extent, 1.0, path).iter().all(|v| !v.fits));
+        assert_eq!(ballcast::choose(extent, 1.0, path, 1e-12), None);
+        assert_eq!(ballcast::choose(extent, 1.0, path, 1e9), None);
+    }
+    // Sizes beyond memory saturate, at once (nodes are counted in O(log² n)).
+    let huge = ballcast::plan::Memory::of(ballcast::plan::ScalarType::F64, usize::MAX / 8, 3);
+    assert_eq!(huge.mesh, usize::MAX);
+    for n in (0..5000).chain([1 << 24, (1 << 40) + 12_345]) {
+        assert_eq!(
+            ballcast::bvh::nodes_for(n),
+            nodes_for_by_recursion(n),
+            "{n}"
+        );
+    }
     // Cheaper scalars show larger errors on the same scene.
     let v = ballcast::plan(100.0, 1.0, 10.0);
     assert!(v[0].distance_error > v[1].distance_error && v[1].distance_error > v[2].distance_error);
@@ -157,4 +175,28 @@ fn drift_from_rounded_dt_is_speed_times_time_times_its_rounding() {
         (behind - predicted).abs() < 0.05 * predicted,
         "fell behind by {behind}, predicted {predicted}"
     );
+}
+
+/// `nodes_for` as the build makes nodes, child by child: the closed count must agree with it.
+fn nodes_for_by_recursion(n: usize) -> usize {
+    if n == 0 {
+        return 0;
+    }
+    let leaf = ballcast::bvh::LEAF;
+    let leaves = n.div_ceil(leaf);
+    let mut per = 1;
+    while per * 4 < leaves {
+        per *= 4;
+    }
+    // Complete children alike: at most three of size `per * LEAF`, then the rest.
+    let (full, rest) = (per * leaf, n % (per * leaf));
+    let k = (n / full).min(4);
+    let child = |m: usize| {
+        if m > leaf {
+            nodes_for_by_recursion(m)
+        } else {
+            0
+        }
+    };
+    1 + k * child(full) + if k < 4 { child(rest) } else { 0 }
 }

@@ -36,16 +36,22 @@ const fn parts(n: usize) -> [usize; 4] {
 }
 
 /// Nodes the build makes for `n` triangles (zero for none): size the node slice with it.
+/// `O(log² n)`: a node's complete children are alike, so one of them is counted for all.
 pub const fn nodes_for(n: usize) -> usize {
     if n == 0 {
         return 0;
     }
     let p = parts(n);
     let mut total = 1;
+    // The last child counted: its size and nodes.
+    let (mut size, mut nodes) = (0, 0);
     let mut k = 0;
     while k < 4 {
         if p[k] > LEAF {
-            total += nodes_for(p[k]);
+            if p[k] != size {
+                (size, nodes) = (p[k], nodes_for(p[k]));
+            }
+            total += nodes;
         }
         k += 1;
     }
