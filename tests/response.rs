@@ -244,6 +244,49 @@ fn long_runs<S: Tolerance>() {
     );
 }
 
+/// A one-sided wall at x = 0 facing +x, its top edge along z at y = 0, and a ball of radius
+/// 0.4 falling straight down beside it, centre 0.2 in front of the wall's plane: the ball
+/// meets the top edge where its centre is 0.4 from it (y = √0.12), then rolls off it outward
+/// (the edge's normal leans away from the wall) and slides down the wall's face, never closer
+/// to the wall than its radius. It once sank 0.03 into the edge: moving along the wall's
+/// plane, it was not allowed to touch the wall's edge, and the push-out squeezed it past.
+fn falling_past_a_walls_top_edge_lands_on_it<S: Tolerance>() {
+    use ballcast::{Contact, Scene, Sweep, Triangle, move_and_slide};
+    use common::v;
+    let mut wall: Scene<S, 2> = Scene::new();
+    let (a, b) = (v([0.0, -2.0, -2.0]), v([0.0, 0.0, 2.0]));
+    wall.push(Triangle::new(a, b, v([0.0, -2.0, 2.0]))).unwrap();
+    wall.push(Triangle::new(a, v([0.0, 0.0, -2.0]), b)).unwrap();
+    let r = S::from_f64(0.4);
+    let rest = 0.12f64.sqrt();
+    let start = v::<S>([0.2, 0.5, 0.0]);
+    let fall = Sweep::new(start, v([0.2, -0.3, 0.0]), r).unwrap();
+    let hit = wall.cast(&fall).expect("the top edge is in the way");
+    assert!(matches!(hit.contact, Contact::Edge(_)), "{:?}", hit.contact);
+    let y = hit.position.y.to_f64();
+    assert!((y - rest).abs() < 1e-3, "{}: touched at y = {y}", S::NAME);
+    let mut p = start;
+    for step in 0..20 {
+        p = move_and_slide(&wall, p, v([0.0, -0.04, 0.0]), r)
+            .unwrap()
+            .position;
+        let (x, y) = (p.x.to_f64(), p.y.to_f64());
+        // Never closer to the edge than the radius, less the skin's tolerance.
+        let gap = (x * x + y.max(0.0) * y.max(0.0)).sqrt() - 0.4;
+        assert!(
+            gap > -1e-3,
+            "{}: {gap} into the edge at step {step}",
+            S::NAME
+        );
+    }
+    let (x, y) = (p.x.to_f64(), p.y.to_f64());
+    assert!(
+        (0.4..0.41).contains(&x) && y < 0.0,
+        "{}: ends at {p:?}",
+        S::NAME
+    );
+}
+
 macro_rules! per_scalar {
     ($($m:ident: $t:ty),*) => {$(mod $m {
         use super::*;
@@ -274,6 +317,10 @@ macro_rules! per_scalar {
         #[test]
         fn pushed_up_and_down_stairs() {
             property(|s, k, _| stairs::<$t>(s, k, STEPS));
+        }
+        #[test]
+        fn falling_past_a_walls_top_edge() {
+            falling_past_a_walls_top_edge_lands_on_it::<$t>();
         }
         #[test]
         fn smallest_radius_holds_near_the_range_edge() {
