@@ -207,27 +207,49 @@ impl<S: Scalar> StandardTriangle<S> {
     /// or `None` where no contact is possible.
     #[inline(always)]
     fn facing(&self, sweep: &Sweep<S>, (y0, y1): (S, S)) -> Option<(bool, S, S)> {
-        // The side the centre starts on (one in the plane: the side it comes from); behind, a
-        // one-sided triangle ignores the sweep, a two-sided one mirrors y.
-        let back = if y0 == S::ZERO { y1 > y0 } else { y0 < S::ZERO };
+        // Towards the back (or along the plane behind it): a one-sided triangle ignores it, a
+        // two-sided one mirrors y. Contact needs the centre to start on the side it moves
+        // towards, or along, and to come within r of the plane: decided by the heights, before
+        // the rest of the transform.
+        let back = y1 > y0 || (y1 == y0 && y0 < S::ZERO);
         let (start, end) = if back { (-y0, -y1) } else { (y0, y1) };
-        // Contact needs the centre to come within r of the plane: decided by the heights,
-        // before the rest of the transform.
         let r = sweep.radius();
-        let out = (back && !self.two_sided) || start < S::ZERO || (start >= r && end >= r);
-        (!out).then_some((back, start, end))
+        if (back && !self.two_sided) || start < S::ZERO || end >= r {
+            // Moving away from the side the centre starts on, within r of the plane.
+            let away = start < S::ZERO && -start < r;
+            return if away {
+                self.facing_away((start, end), back)
+            } else {
+                None
+            };
+        }
+        Some((back, start, end))
+    }
+
+    /// [`facing`](Self::facing) for a sweep that moves away from the side its centre starts
+    /// on, within r of the plane (`-r < start < 0` as seen from the side it moves towards):
+    /// that side is the one whose edges and vertices it may still meet. (In the plane, `start`
+    /// zero, the side it moves towards decides, as for any sweep.)
+    #[inline(always)]
+    fn facing_away(&self, (start, end): (S, S), back: bool) -> Option<(bool, S, S)> {
+        let side = !back;
+        (!side || self.two_sided).then_some((side, -start, -end))
     }
 
     /// `cast` for a sweep whose centre starts in front of the plane (or in it).
     fn cast_front(&self, s: &StandardSweep<S>) -> Option<Touch<S>> {
         let (p0, p1, r) = (s.p0, s.p1, s.radius);
         let d = p1 - p0;
-        // Starting behind the plane, or never within r of it.
-        if p0.y < S::ZERO || (p0.y >= r && p1.y >= r) {
-            return None;
-        }
-        if d.y > S::ZERO {
-            return self.cast_rising(p0, p1, r);
+        // Moving away, starting behind the plane, or never within r of it: only a ball rising
+        // from within r of the plane can still meet an edge or vertex. A path along the plane
+        // is met where it starts overlapping, at alpha = 0, or later by an edge or vertex.
+        if d.y > S::ZERO || p0.y < S::ZERO || p1.y >= r {
+            let rising = d.y > S::ZERO && p0.y >= S::ZERO && p0.y < r;
+            return if rising {
+                self.cast_rising(p0, p1, r)
+            } else {
+                None
+            };
         }
         // The face is reached at height r, before any edge or vertex can be.
         let face = face_point(s);
@@ -251,8 +273,9 @@ impl<S: Scalar> StandardTriangle<S> {
 
     /// [`cast_front`](Self::cast_front) for a ball moving away from the plane, its centre
     /// starting in front within `r` of it: the face cannot be met (a ball that overlaps it
-    /// leaves), but an edge or vertex the ball passes within `r` of can. Starting outside the
-    /// face region, the ball touches the triangle first where it touches one of them first.
+    /// leaves), but an edge or vertex the ball passes within `r` of can.
+    /// Starting outside the face region, the ball touches the triangle first where it touches
+    /// one of them first.
     #[cold]
     #[inline(never)]
     fn cast_rising(&self, p0: Vec3<S>, p1: Vec3<S>, r: S) -> Option<Touch<S>> {
