@@ -215,8 +215,11 @@ impl<S: Scalar> StandardTriangle<S> {
         let (start, end) = if back { (-y0, -y1) } else { (y0, y1) };
         let r = sweep.radius();
         if (back && !self.two_sided) || start < S::ZERO || end >= r {
-            // Moving away from the side the centre starts on, within r of the plane.
-            let away = start < S::ZERO && -start < r;
+            // Moving away from the side the centre starts on, within r of the plane; or, for a
+            // one-sided triangle, leaving its plane for the front (a centre in the plane that
+            // moves to the back goes further in, and meets what it overlaps at alpha 0).
+            let leaves = start == S::ZERO && back && !self.two_sided;
+            let away = (start < S::ZERO && -start < r) || leaves;
             return if away {
                 self.facing_away((start, end), back)
             } else {
@@ -227,9 +230,9 @@ impl<S: Scalar> StandardTriangle<S> {
     }
 
     /// [`facing`](Self::facing) for a sweep that moves away from the side its centre starts
-    /// on, within r of the plane (`-r < start < 0` as seen from the side it moves towards):
-    /// that side is the one whose edges and vertices it may still meet. (In the plane, `start`
-    /// zero, the side it moves towards decides, as for any sweep.)
+    /// on, within r of the plane (`-r < start < 0` as seen from the side it moves towards), or
+    /// leaves the plane of a one-sided triangle for its front (`start` zero): that side is the
+    /// one whose edges and vertices it may still meet.
     #[inline(always)]
     fn facing_away(&self, (start, end): (S, S), back: bool) -> Option<(bool, S, S)> {
         let side = !back;

@@ -95,6 +95,21 @@ fn hand_cases<S: Tolerance>() {
         cast::<S>(TRI, [2.0, -0.3, -1.5], [2.0, -0.9, 0.5], 1.0, all, false),
         None
     );
+    // Leaving the plane of a one-sided triangle for its front from in it (height exactly 0),
+    // beside edge 2, along (0, 0.6, 2): the ball catches the edge, at t with (0.6 t)² +
+    // (2 t − 1.5)² = 1 (it was dropped: a centre in the plane counted as coming from the back).
+    // Leaving for the back, nothing.
+    let t = (6.0 - (36.0f64 - 4.0 * 4.36 * 1.25).sqrt()) / (2.0 * 4.36);
+    let (a, n, c) = cast::<S>(TRI, [2.0, 0.0, -1.5], [2.0, 0.6, 0.5], 1.0, all, false).unwrap();
+    let normal = [0.0, 0.6 * t, 2.0 * t - 1.5];
+    assert!(
+        c == Contact::Edge(2) && close(a, t) && near(n, normal),
+        "{a} {n:?}"
+    );
+    assert_eq!(
+        cast::<S>(TRI, [2.0, 0.0, -1.5], [2.0, -0.6, 0.5], 1.0, all, false),
+        None
+    );
     // Overlapping the face and rising out across edge 2: it leaves, nothing is reported.
     assert_eq!(
         cast::<S>(TRI, [2.0, 0.5, 0.5], [2.0, 0.8, -1.5], 1.0, all, false),
