@@ -81,7 +81,7 @@ impl Default for Features {
 /// centre (`None` for the face, whose normal is +y), the feature, and alpha unrounded, as a
 /// fraction `(num, den)` that rounds to alpha (`num.div(den)`), from which the contact's
 /// position is computed in one rounding.
-type Touch<S> = (S, Option<Vec3<S>>, Contact, (S, S));
+pub(crate) type Touch<S> = (S, Option<Vec3<S>>, Contact, (S, S));
 
 /// An edge or vertex contact with its alpha still as a fraction `t / len` (see `first_touch`):
 /// two contacts whose rounded alphas tie are still ordered exactly by it.
@@ -125,10 +125,11 @@ impl<S: Scalar> StandardTriangle<S> {
     ///   from it (falling past the top edge of a wall, the ball lands on the edge). Two-sided,
     ///   the side the centre starts on is the front.
     /// - A ball that *starts* overlapping the triangle (centre in front, closer than `r` to the
-    ///   face region, an active edge or an active vertex) and does not move away (it moves
-    ///   further in, or along the plane as rounded) is reported at `alpha = 0`, with the normal
-    ///   pushing it out. One that starts overlapping and moves away is not reported, so it can
-    ///   leave. Overlap is never reported later along the path.
+    ///   face region, an active edge or an active vertex) and does not move away from the
+    ///   nearest of them (it moves further in, or square to it as rounded) is reported at
+    ///   `alpha = 0`, with the normal pushing it out. One that moves away from the nearest is let
+    ///   go: nothing is reported until it is clear of everything it overlapped (for a lone
+    ///   triangle, nothing at all). Overlap is never reported later along the path.
     /// - A ray (radius 0) touches only the face, which includes its boundary.
     /// - The normal is the unit vector from the touched point to the ball's centre.
     ///
@@ -297,10 +298,22 @@ impl<S: Scalar> StandardTriangle<S> {
     /// the face path does not pay for its registers.
     #[inline(never)]
     fn edges_and_vertices(&self, p0: Vec3<S>, d: Vec3<S>, r: S) -> Option<Touch<S>> {
+        let best = self.earliest(p0, d, r, S::ZERO)?;
+        // Only a centre within r of the plane can start overlapping an edge or vertex.
+        if p0.y < r {
+            return self.unless_leaving(p0, d, r, best);
+        }
+        Some(best)
+    }
+
+    /// The earliest contact with an active edge or vertex at alpha `from` or later.
+    #[inline(always)]
+    pub(crate) fn earliest(&self, p0: Vec3<S>, d: Vec3<S>, r: S, from: S) -> Option<Touch<S>> {
+        let after = |c: &Timed<S>| c.0.0 >= from;
         let mut best: Option<Timed<S>> = None;
         for i in 0..3 {
             if self.features.edge(i) {
-                best = earlier(best, self.edge_contact(i, p0, d, r));
+                best = earlier(best, self.edge_contact(i, p0, d, r).filter(after));
             }
         }
         // The path's length and direction, computed once and only if a vertex needs them.
@@ -324,7 +337,7 @@ impl<S: Scalar> StandardTriangle<S> {
                     resting(q, r).then_some((at, (S::ZERO, S::ONE)))
                 }
             };
-            if v.is_some_and(|v| best.is_none_or(|b| v.0.0 < b.0.0 - tie)) {
+            if v.is_some_and(|v| after(&v) && best.is_none_or(|b| v.0.0 < b.0.0 - tie)) {
                 best = v;
             }
         }
@@ -452,14 +465,7 @@ fn first_touch<S: Scalar>(
     if s > S::ZERO {
         return None;
     }
-    // |q0 × dir|, each component a two-term dot product rounded once.
-    let z = S::UNIT_ZERO;
-    let c = Vec3::new(
-        S::dot_unit(Vec3::new(q0.y, -q0.z, S::ZERO), Vec3::new(dir.z, dir.y, z)),
-        S::dot_unit(Vec3::new(q0.z, -q0.x, S::ZERO), Vec3::new(dir.x, dir.z, z)),
-        S::dot_unit(Vec3::new(q0.x, -q0.y, S::ZERO), Vec3::new(dir.y, dir.x, z)),
-    );
-    let t = -s - S::chord(r, c)?;
+    let t = -s - S::chord(r, off_line(q0, dir))?;
     if t < S::ZERO {
         return Some((S::ZERO, (S::ZERO, len)));
     }
@@ -469,6 +475,17 @@ fn first_touch<S: Scalar>(
     // Rounded to nearest, a fraction just below one can become one: that is no contact.
     let beta = S::div(t, len);
     (beta < S::ONE).then_some((beta, (t, len)))
+}
+
+/// `q0 × dir`: the offset of a feature from a line through `q0` along the unit `dir`, whose
+/// length is their distance; each component a two-term dot product rounded once.
+pub(crate) fn off_line<S: Scalar>(q0: Vec3<S>, dir: Vec3<S::Unit>) -> Vec3<S> {
+    let z = S::UNIT_ZERO;
+    Vec3::new(
+        S::dot_unit(Vec3::new(q0.y, -q0.z, S::ZERO), Vec3::new(dir.z, dir.y, z)),
+        S::dot_unit(Vec3::new(q0.z, -q0.x, S::ZERO), Vec3::new(dir.x, dir.z, z)),
+        S::dot_unit(Vec3::new(q0.x, -q0.y, S::ZERO), Vec3::new(dir.y, dir.x, z)),
+    )
 }
 
 /// Whether a ball that does not move relative to a feature (offset `q` from it, the centre in

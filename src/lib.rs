@@ -131,6 +131,7 @@ mod reject;
 pub mod scalar;
 pub mod scene;
 pub mod slide;
+mod start_overlap;
 pub mod sweep;
 pub mod triangle;
 pub mod vec3;

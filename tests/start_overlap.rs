@@ -1,0 +1,153 @@
+//! A ball that starts overlapping a triangle: held at alpha 0 when the distance to the triangle
+//! does not grow, let go otherwise, and never reported later while it still overlaps. Random
+//! starts against an f64 oracle (the distance to the whole triangle and its gradient, from
+//! Ericson's closest point), and hand-worked cases, in every scalar.
+
+mod common;
+
+use ballcast::{Contact, Features, Scalar, StandardTriangle, Sweep, Triangle};
+use common::{P, Rng, Tolerance, add, closest_on_triangle, dot, norm, scale, sub, v};
+use fixed::types::{I16F16, I32F32};
+
+/// v0 = (0,0,0), v1 = (0,0,4), v2 = (4,0,0), front +y; edge 2 runs along x at z = 0.
+const TRI: [P; 3] = [[0.0, 0.0, 0.0], [0.0, 0.0, 4.0], [4.0, 0.0, 0.0]];
+
+fn cast<S: Scalar>(
+    t: [P; 3],
+    (p0, p1): (P, P),
+    r: f64,
+    f: Features,
+    two: bool,
+) -> Option<(f64, Contact)> {
+    let st = StandardTriangle::new(&Triangle::new(v::<S>(t[0]), v(t[1]), v(t[2])))
+        .unwrap()
+        .with_features(f)
+        .with_two_sided(two);
+    let s = Sweep::new(v(p0), v(p1), S::from_f64(r)).unwrap();
+    st.cast(&s).map(|h| (h.alpha.to_f64(), h.contact))
+}
+
+/// Random balls starting within `r` of a lone triangle (every feature active: a convex set,
+/// whose distance along a straight path is convex). Where the distance's slope at the start is
+/// clearly negative the cast must report alpha 0; where it is clearly positive, nothing (the
+/// distance only grows, so any later report would be of an overlap). One- and two-sided.
+fn starts_overlapping_a_lone_triangle<S: Tolerance>() {
+    let mut rng = Rng(11);
+    let (mut held, mut let_go) = (0, 0);
+    for i in 0..40_000 {
+        let two = i % 2 == 1;
+        let tri = [rng.point(10.0), rng.point(10.0), rng.point(10.0)];
+        let n = common::cross(sub(tri[1], tri[0]), sub(tri[2], tri[0]));
+        if norm(n) < 1.0 {
+            continue; // a sliver: its frame's rounding dominates
+        }
+        let r = rng.range(0.5, 2.0);
+        // A point of the triangle's neighbourhood within r of it.
+        let (a, b) = (rng.next(), rng.next());
+        let on = add(
+            tri[0],
+            add(scale(sub(tri[1], tri[0]), a), scale(sub(tri[2], tri[0]), b)),
+        );
+        let p0 = add(on, rng.point(r));
+        let q = closest_on_triangle(p0, tri);
+        let gap = norm(sub(p0, q));
+        let height = dot(sub(p0, tri[0]), n) / norm(n);
+        // Clearly inside r, and clearly off the plane (in front, for one-sided).
+        let margin = 1e-3 + 1e3 * S::DISTANCE;
+        if gap > r - margin || height.abs() < margin || (!two && height < 0.0) {
+            continue;
+        }
+        let d = rng.point(3.0);
+        let slope = dot(sub(p0, q), d) / (gap * norm(d));
+        if slope.abs() < 1e-2 {
+            continue;
+        }
+        let got = cast::<S>(tri, (p0, add(p0, d)), r, Features::ALL, two);
+        let case = || format!("{tri:?} {p0:?} {d:?} r {r} two-sided {two}");
+        if slope < 0.0 {
+            held += 1;
+            assert_eq!(
+                got.map(|g| g.0),
+                Some(0.0),
+                "{}: not held: {}",
+                S::NAME,
+                case()
+            );
+        } else {
+            let_go += 1;
+            assert_eq!(got, None, "{}: not let go: {}", S::NAME, case());
+        }
+    }
+    println!("{}: {held} held, {let_go} let go", S::NAME);
+    assert!(
+        held > 1_000 && let_go > 1_000,
+        "{held} held, {let_go} let go"
+    );
+}
+
+/// The case a review found: a ball starting within r of one edge, outside the face region,
+/// rising away, was reported touching another edge at alpha 0.0765, still 0.584 from the
+/// triangle with r 0.662.
+fn rising_beside_an_edge_while_overlapping_another<S: Tolerance>() {
+    let t = [
+        [-1.852850817190825, -1.3803517915946864, 0.22105456618685881],
+        [-0.9280466212444987, 0.9425960835881182, -0.2419057514753522],
+        [-1.4186763897147743, 1.0078713412594138, 0.18954126267315008],
+    ];
+    let p0 = [
+        -0.9124925115260096,
+        -0.025889724766163698,
+        0.3684964191500266,
+    ];
+    let p1 = [-1.4459051576185789, 1.7479048893532187, 1.2398093950453744];
+    let r = 0.6617404029140711;
+    assert_eq!(cast::<S>(t, (p0, p1), r, Features::ALL, false), None);
+}
+
+/// Within r of edge 2's interior (0.539 away) and of vertex 0 (0.616 away), moving away from the
+/// edge but towards the vertex: the distance to the triangle grows, so the ball is let go (it
+/// used to be held at alpha 0 by the vertex). Towards the edge, it is held.
+fn leaving_an_edge_towards_its_vertex<S: Tolerance>() {
+    let p0 = [0.3, 0.2, -0.5];
+    let all = Features::ALL;
+    let away = (p0, add(p0, [-1.0, 0.1, -0.1]));
+    assert_eq!(cast::<S>(TRI, away, 1.0, all, false), None);
+    let towards = (p0, add(p0, [-1.0, 0.0, 0.3]));
+    assert_eq!(
+        cast::<S>(TRI, towards, 1.0, all, false),
+        Some((0.0, Contact::Edge(2)))
+    );
+}
+
+/// With the edges inactive (a mesh's seams), a ball that starts within r of vertex 0 and moves
+/// away along x is clear of it at x = √0.5 and then meets vertex 2 afresh, where
+/// (x - 4)² + 0.5 = 1: at x = 4 - √0.5, alpha (3.5 - √0.5) / 4.5.
+fn a_fresh_contact_after_leaving_is_kept<S: Tolerance>() {
+    let f = Features::FACE_ONLY
+        .with_vertex(0, true)
+        .with_vertex(2, true);
+    let path = ([0.5, 0.5, -0.5], [5.0, 0.5, -0.5]);
+    let (a, c) = cast::<S>(TRI, path, 1.0, f, false).unwrap();
+    assert_eq!(c, Contact::Vertex(2));
+    let want = (3.5 - 0.5f64.sqrt()) / 4.5;
+    assert!((a - want).abs() < 1e-3, "{}: alpha {a}", S::NAME);
+}
+
+macro_rules! per_scalar {
+    ($($m:ident: $t:ty),*) => {$(mod $m {
+        #[allow(unused_imports)]
+        use super::*;
+        #[test]
+        fn starts_overlapping_a_lone_triangle() { super::starts_overlapping_a_lone_triangle::<$t>() }
+        #[test]
+        fn rising_beside_an_edge_while_overlapping_another() {
+            super::rising_beside_an_edge_while_overlapping_another::<$t>()
+        }
+        #[test]
+        fn leaving_an_edge_towards_its_vertex() { super::leaving_an_edge_towards_its_vertex::<$t>() }
+        #[test]
+        fn a_fresh_contact_after_leaving_is_kept() { super::a_fresh_contact_after_leaving_is_kept::<$t>() }
+    })*};
+}
+
+per_scalar!(f64_: f64, f32_: f32, i32f32: I32F32, i16f16: I16F16);
