@@ -284,10 +284,8 @@ impl<S: Scalar> StandardTriangle<S> {
     #[inline(never)]
     fn cast_rising(&self, p0: Vec3<S>, p1: Vec3<S>, r: S) -> Option<Touch<S>> {
         let over_face = contains(self, p0.x, p0.z) || self.within_seams(p0.x, p0.z, r);
-        if over_face || r == S::ZERO || !self.near_path(p0, p1, r) {
-            return None;
-        }
-        if self.beyond_an_edge(p0, p1, r) {
+        if over_face || r == S::ZERO || !self.near_path(p0, p1, r) || self.beyond_an_edge(p0, p1, r)
+        {
             return None;
         }
         self.edges_and_vertices(p0, p1 - p0, r)
