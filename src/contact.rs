@@ -81,7 +81,7 @@ impl Default for Features {
 /// centre (`None` for the face, whose normal is +y), the feature, and alpha unrounded, as a
 /// fraction `(num, den)` that rounds to alpha (`num.div(den)`), from which the contact's
 /// position is computed in one rounding.
-pub(crate) type Touch<S> = (S, Option<Vec3<S>>, Contact, (S, S));
+type Touch<S> = (S, Option<Vec3<S>>, Contact, (S, S));
 
 /// An edge or vertex contact with its alpha still as a fraction `t / len` (see `first_touch`):
 /// two contacts whose rounded alphas tie are still ordered exactly by it.
@@ -296,17 +296,22 @@ impl<S: Scalar> StandardTriangle<S> {
     /// the face path does not pay for its registers.
     #[inline(never)]
     fn edges_and_vertices(&self, p0: Vec3<S>, d: Vec3<S>, r: S) -> Option<Touch<S>> {
-        let best = self.earliest(p0, d, r, S::ZERO)?;
-        // Only a centre within r of the plane can start overlapping an edge or vertex.
-        if p0.y < r {
-            return self.unless_leaving(p0, d, r, best);
+        let mut from = S::ZERO;
+        // A second pass only for a ball let go from a starting overlap: from where it is clear.
+        for _ in 0..2 {
+            let best = self.earliest(p0, d, r, from)?;
+            // Only a centre within r of the plane can start overlapping an edge or vertex.
+            match (from == S::ZERO && p0.y < r).then(|| self.clear_after(p0, d, r, best.0)) {
+                Some(Some(end)) => from = end,
+                _ => return Some(best),
+            }
         }
-        Some(best)
+        None
     }
 
     /// The earliest contact with an active edge or vertex at alpha `from` or later.
     #[inline(always)]
-    pub(crate) fn earliest(&self, p0: Vec3<S>, d: Vec3<S>, r: S, from: S) -> Option<Touch<S>> {
+    fn earliest(&self, p0: Vec3<S>, d: Vec3<S>, r: S, from: S) -> Option<Touch<S>> {
         let after = |c: &Timed<S>| c.0.0 >= from;
         let mut best: Option<Timed<S>> = None;
         for i in 0..3 {

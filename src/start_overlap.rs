@@ -11,7 +11,7 @@
 //! if any, is a fresh one. For a lone triangle (every feature active, a convex set) the distance
 //! to the triangle only grows once it has grown at the start, so a ball let go meets nothing.
 
-use crate::contact::{Touch, off_line};
+use crate::contact::off_line;
 use crate::{Scalar, StandardTriangle, Vec3};
 
 /// The part of the path, as alpha from `from` to `to`, over which the ball is within `r` of a
@@ -24,25 +24,17 @@ struct Span<S> {
 }
 
 impl<S: Scalar> StandardTriangle<S> {
-    /// `best`, the earliest edge or vertex contact of a sweep whose centre starts within `r` of
-    /// the plane (`p0`, `d` in the standard frame, from the front), as the rule above has it.
+    /// For a sweep whose centre starts within `r` of the plane (`p0`, `d` in the standard frame,
+    /// from the front) and whose earliest edge or vertex contact is at alpha `first`: the alpha
+    /// from which contacts count, if that contact is not one (the rule above).
     #[cold]
     #[inline(never)]
-    pub(crate) fn unless_leaving(
-        &self,
-        p0: Vec3<S>,
-        d: Vec3<S>,
-        r: S,
-        best: Touch<S>,
-    ) -> Option<Touch<S>> {
+    pub(crate) fn clear_after(&self, p0: Vec3<S>, d: Vec3<S>, r: S, first: S) -> Option<S> {
         if self.held(p0, d, r) {
-            return Some(best);
+            return None;
         }
         let end = self.clear_from(p0, d, r);
-        if best.0 >= end {
-            return Some(best);
-        }
-        self.earliest(p0, d, r, end)
+        (end > first).then_some(end)
     }
 
     /// Whether the ball starts clear of every active edge and vertex, or does not move away
