@@ -23,6 +23,37 @@ struct Span<S> {
     start: bool,
 }
 
+/// An active edge or vertex as seen from the path: `q`, the offset of the centre's start from
+/// the feature (for an edge, across it: out of the triangle and up), and `m`, the path relative
+/// to it; for an edge also the centre's position along it, `u0 + alpha du` against its length.
+struct Feature<S> {
+    q: Vec3<S>,
+    m: Vec3<S>,
+    along: Option<(S, S, S)>,
+}
+
+impl<S: Scalar> Feature<S> {
+    /// Whether the start is beside the feature (an edge counts strictly between its ends).
+    fn beside(&self) -> bool {
+        self.along
+            .is_none_or(|(u0, _, len)| u0 > S::ZERO && u0 < len)
+    }
+
+    /// The alphas over which the centre is beside the feature.
+    fn bounds(&self) -> Option<(S, S)> {
+        let Some((u0, du, len)) = self.along else {
+            return Some((S::ZERO, S::ONE));
+        };
+        if du > S::ZERO {
+            Some((fraction(-u0, du), fraction(len - u0, du)))
+        } else if du < S::ZERO {
+            Some((fraction(u0 - len, -du), fraction(u0, -du)))
+        } else {
+            self.beside().then_some((S::ZERO, S::ONE))
+        }
+    }
+}
+
 impl<S: Scalar> StandardTriangle<S> {
     /// For a sweep whose centre starts within `r` of the plane (`p0`, `d` in the standard frame,
     /// from the front) and whose earliest edge or vertex contact is at alpha `first`: the alpha
@@ -37,34 +68,43 @@ impl<S: Scalar> StandardTriangle<S> {
         (end > first).then_some(end)
     }
 
+    /// Active feature `k`: edges 0 to 2, then vertices 0 to 2.
+    #[inline(never)]
+    fn feature(&self, k: usize, p0: Vec3<S>, d: Vec3<S>) -> Option<Feature<S>> {
+        let i = k % 3;
+        let rel = p0 - self.corner(i);
+        if k >= 3 {
+            return self.features.vertex(i).then_some(Feature {
+                q: rel,
+                m: d,
+                along: None,
+            });
+        }
+        if !self.features.edge(i) {
+            return None;
+        }
+        let e = self.edge(i);
+        let (along, out) = (e.along(), e.out());
+        let z = S::ZERO;
+        Some(Feature {
+            q: Vec3::new(S::dot_unit(rel, out), p0.y, z),
+            m: Vec3::new(S::dot_unit(d, out), d.y, z),
+            along: Some((S::dot_unit(rel, along), S::dot_unit(d, along), e.len)),
+        })
+    }
+
     /// Whether the ball starts clear of every active edge and vertex, or does not move away
     /// from the nearest of those it starts within `r` of (the first of equals, edges first).
     /// No square root of the path and no division: most calls end here.
     fn held(&self, p0: Vec3<S>, d: Vec3<S>, r: S) -> bool {
         let mut nearest: Option<(S, bool)> = None;
-        // `q` the offset from the feature's nearest point, `m` the motion relative to it. The
-        // sign's products are those of `chord`'s bound (|q| < r) times the path's length.
-        let mut consider = |q: Vec3<S>, m: Vec3<S>| {
-            if let Some(k) = S::chord(r, q).filter(|&k| k > S::ZERO)
+        for f in (0..6).filter_map(|k| self.feature(k, p0, d)) {
+            // The sign's products are those of `chord`'s bound (|q| < r) times the path's length.
+            if let Some(k) = S::chord(r, f.q).filter(|&k| k > S::ZERO)
+                && f.beside()
                 && nearest.is_none_or(|(n, _)| k > n)
             {
-                nearest = Some((k, S::dot_sign(q, m).is_le()));
-            }
-        };
-        for i in 0..3 {
-            if self.features.edge(i) {
-                let (e, rel) = (self.edge(i), p0 - self.corner(i));
-                let u0 = S::dot_unit(rel, e.along());
-                if u0 > S::ZERO && u0 < e.len {
-                    let out = e.out();
-                    let q = Vec3::new(S::dot_unit(rel, out), p0.y, S::ZERO);
-                    consider(q, Vec3::new(S::dot_unit(d, out), d.y, S::ZERO));
-                }
-            }
-        }
-        for i in 0..3 {
-            if self.features.vertex(i) {
-                consider(p0 - self.corner(i), d);
+                nearest = Some((k, S::dot_sign(f.q, f.m).is_le()));
             }
         }
         nearest.is_none_or(|(_, stays)| stays)
@@ -74,13 +114,12 @@ impl<S: Scalar> StandardTriangle<S> {
     /// vertex it overlaps: the end of the union of the spans that meet the one it starts in.
     fn clear_from(&self, p0: Vec3<S>, d: Vec3<S>, r: S) -> S {
         let mut spans = [None; 6];
-        for i in 0..3 {
-            if self.features.edge(i) {
-                spans[i] = self.edge_span(i, p0, d, r);
-            }
-            if self.features.vertex(i) {
-                spans[3 + i] = span(p0 - self.corner(i), d, r, (S::ZERO, S::ONE));
-            }
+        for (k, s) in spans.iter_mut().enumerate() {
+            *s = self.feature(k, p0, d).and_then(|f| {
+                let mut s = span(f.q, f.m, r, f.bounds()?)?;
+                s.start &= f.beside();
+                Some(s)
+            });
         }
         let spans = spans.iter().flatten();
         let mut end = S::ZERO;
@@ -99,30 +138,6 @@ impl<S: Scalar> StandardTriangle<S> {
             }
         }
         end
-    }
-
-    /// The [`Span`] of the interior of edge `i`: within `r` of its line while the centre is
-    /// beside the edge (strictly between its ends, as for a contact).
-    fn edge_span(&self, i: usize, p0: Vec3<S>, d: Vec3<S>, r: S) -> Option<Span<S>> {
-        let e = self.edge(i);
-        let rel = p0 - self.corner(i);
-        let (along, out) = (e.along(), e.out());
-        let (u0, du) = (S::dot_unit(rel, along), S::dot_unit(d, along));
-        let (w0, dw) = (S::dot_unit(rel, out), S::dot_unit(d, out));
-        let z = S::ZERO;
-        // Beside the edge: 0 < u0 + alpha du < len.
-        let beside = if du > z {
-            (fraction(-u0, du), fraction(e.len - u0, du))
-        } else if du < z {
-            (fraction(u0 - e.len, -du), fraction(u0, -du))
-        } else if u0 > z && u0 < e.len {
-            (z, S::ONE)
-        } else {
-            return None;
-        };
-        let mut s = span(Vec3::new(w0, p0.y, z), Vec3::new(dw, d.y, z), r, beside)?;
-        s.start &= u0 > z && u0 < e.len;
-        Some(s)
     }
 }
 
