@@ -104,7 +104,7 @@ impl<S: Scalar> StandardTriangle<S> {
     /// One-sided, only a ball whose centre starts in front of the plane can touch it: the face
     /// when the ball moves towards the front (velocity · front normal < 0), an edge or vertex
     /// whatever the motion, with the centre in front at contact. Two-sided, the back behaves
-    /// like a front facing the other way.
+    /// like a front facing the other way, and the edges and vertices count on either side.
     pub fn with_two_sided(mut self, two_sided: bool) -> Self {
         self.two_sided = two_sided;
         self
@@ -123,13 +123,16 @@ impl<S: Scalar> StandardTriangle<S> {
     ///   The face counts only for a ball moving towards the front; an edge or vertex counts
     ///   with the centre in front at contact, also for a ball moving along the plane or away
     ///   from it (falling past the top edge of a wall, the ball lands on the edge). Two-sided,
-    ///   the side the centre starts on is the front.
+    ///   the side the centre starts on is the front for the face, and the edges and vertices
+    ///   count from either side (a ball that passes the plane beside the triangle and comes
+    ///   back at its edge from behind touches it).
     /// - A ball that *starts* overlapping the triangle (centre in front, closer than `r` to the
     ///   face region, an active edge or an active vertex) and does not move away from the
     ///   nearest of them (it moves further in, or square to it as rounded) is reported at
     ///   `alpha = 0`, with the normal pushing it out. One that moves away from the nearest is let
-    ///   go: nothing is reported until it is clear of everything it overlapped (for a lone
-    ///   triangle, nothing at all). Overlap is never reported later along the path.
+    ///   go: nothing is reported until it is clear of the triangle, including what it reaches
+    ///   while still overlapping (for a lone triangle, nothing at all). Overlap is never
+    ///   reported later along the path.
     /// - A ray (radius 0) touches only the face, which includes its boundary.
     /// - The normal is the unit vector from the touched point to the ball's centre.
     ///
@@ -413,7 +416,8 @@ impl<S: Scalar> StandardTriangle<S> {
         };
         let (beta, key) = first_touch(Vec3::new(w0, p0.y, z), motion, r)?;
         let (u, w, y) = (u0 + beta.mul(du), w0 + beta.mul(dw), p0.y + beta.mul(d.y));
-        if !(u > z && u < e.len && y >= z) {
+        // One-sided, the centre must be in front at contact; two-sided, either side will do.
+        if !(u > z && u < e.len && (y >= z || self.two_sided)) {
             return None;
         }
         let offset = Vec3::new(S::mul_unit(w, out.x), y, S::mul_unit(w, out.z));
@@ -432,7 +436,8 @@ impl<S: Scalar> StandardTriangle<S> {
         let v = self.corner(i);
         let (beta, key) = first_touch(p0 - v, motion, r)?;
         let offset = p0 - v + d.scale(beta);
-        (offset.y >= S::ZERO).then_some(((beta, Some(offset), Contact::Vertex(i as u8)), key))
+        let side = offset.y >= S::ZERO || self.two_sided;
+        side.then_some(((beta, Some(offset), Contact::Vertex(i as u8)), key))
     }
 }
 

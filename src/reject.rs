@@ -25,13 +25,14 @@ impl<S: Scalar> StandardTriangle<S> {
 
     /// Whether the segment from `a` (at height `r`) to `b` stays more than `r` outside one
     /// edge's line: the whole triangle lies inside that line, so nothing of it can be touched.
-    /// Where `b` is below the plane only the part down to the plane counts (an edge or vertex
-    /// is touched with the centre in front of the plane): see [`clipped_beyond`].
+    /// Where `b` is below the plane of a one-sided triangle only the part down to the plane
+    /// counts (an edge or vertex is touched with the centre in front): see [`clipped_beyond`].
     pub(crate) fn beyond_an_edge(&self, a: Vec3<S>, b: Vec3<S>, r: S) -> bool {
         (0..3).any(|i| {
             let (c, out) = (self.corner(i), self.edge(i).out());
             let (wa, wb) = (S::dot_unit(a - c, out), S::dot_unit(b - c, out));
-            wa > r && (wb > r || (b.y < S::ZERO && clipped_beyond(a, b, wa, wb, r)))
+            let one_sided = !self.two_sided;
+            wa > r && (wb > r || (b.y < S::ZERO && one_sided && clipped_beyond(a, b, wa, wb, r)))
         })
     }
 

@@ -3,15 +3,18 @@
 //!
 //! The distance from a point moving along a straight path to a point or to a line is a convex
 //! function of alpha, so the ball is within `r` of each active edge (its interior) or vertex over
-//! one interval of the path. A ball that starts within `r` of some of them is held at alpha 0
-//! when it does not move away from the nearest (the distance to the triangle does not grow, as
-//! for the face). Otherwise it is let go: the intervals that meet the one it starts in form the
-//! stretch of path over which it is still overlapping, and no contact inside that stretch is
+//! one span of the path; it is within `r` of the face region over another (the region is convex,
+//! and the height below `r` an interval). A ball that starts within `r` of some edges or
+//! vertices is held at alpha 0 when it does not move away from the nearest (the distance to the
+//! triangle does not grow, as for the face). Otherwise it is let go: the spans that meet the
+//! ones it starts in form the stretch of path over which it is still overlapping (including
+//! features it reaches before it is clear of the others), and no contact inside that stretch is
 //! reported (it would be an overlap reported later along the path). The first contact after it,
 //! if any, is a fresh one. For a lone triangle (every feature active, a convex set) the distance
 //! to the triangle only grows once it has grown at the start, so a ball let go meets nothing.
 
 use crate::contact::off_line;
+use crate::scalar::tie;
 use crate::{Scalar, StandardTriangle, Vec3};
 
 /// The part of the path, as alpha from `from` to `to`, over which the ball is within `r` of a
@@ -61,8 +64,13 @@ impl<S: Scalar> StandardTriangle<S> {
     #[cold]
     #[inline(never)]
     pub(crate) fn clear_after(&self, p0: Vec3<S>, d: Vec3<S>, r: S, first: S) -> Option<S> {
-        if self.held(p0, d, r) {
-            return None;
+        // Held where the nearest feature it starts within r of gave its alpha-0 contact. A later
+        // first contact means that feature gave none (it moves away from it, as that test
+        // rounds the motion): the ball is let go.
+        match self.nearest_at_start(p0, d, r) {
+            None => return None,
+            Some(true) if first == S::ZERO => return None,
+            Some(_) => {}
         }
         let end = self.clear_from(p0, d, r);
         (end > first).then_some(end)
@@ -93,10 +101,10 @@ impl<S: Scalar> StandardTriangle<S> {
         })
     }
 
-    /// Whether the ball starts clear of every active edge and vertex, or does not move away
-    /// from the nearest of those it starts within `r` of (the first of equals, edges first).
-    /// No square root of the path and no division: most calls end here.
-    fn held(&self, p0: Vec3<S>, d: Vec3<S>, r: S) -> bool {
+    /// `None` if the ball starts clear of every active edge and vertex, else whether it does not
+    /// move away from the nearest of those it starts within `r` of (the first of equals, edges
+    /// first). No square root of the path and no division: most calls end here.
+    fn nearest_at_start(&self, p0: Vec3<S>, d: Vec3<S>, r: S) -> Option<bool> {
         let mut nearest: Option<(S, bool)> = None;
         for f in (0..6).filter_map(|k| self.feature(k, p0, d)) {
             // The sign's products are those of `chord`'s bound (|q| < r) times the path's length.
@@ -107,20 +115,22 @@ impl<S: Scalar> StandardTriangle<S> {
                 nearest = Some((k, S::dot_sign(f.q, f.m).is_le()));
             }
         }
-        nearest.is_none_or(|(_, stays)| stays)
+        nearest.map(|(_, stays)| stays)
     }
 
-    /// The alpha from which a ball that starts overlapping is clear of every active edge and
-    /// vertex it overlaps: the end of the union of the spans that meet the one it starts in.
+    /// The alpha from which a ball that starts overlapping is clear of the triangle: the end of
+    /// the union of the spans (active edges and vertices, and the face region) that meet the
+    /// ones it starts in.
     fn clear_from(&self, p0: Vec3<S>, d: Vec3<S>, r: S) -> S {
-        let mut spans = [None; 6];
-        for (k, s) in spans.iter_mut().enumerate() {
+        let mut spans = [None; 7];
+        for (k, s) in spans.iter_mut().take(6).enumerate() {
             *s = self.feature(k, p0, d).and_then(|f| {
                 let mut s = span(f.q, f.m, r, f.bounds()?)?;
                 s.start &= f.beside();
                 Some(s)
             });
         }
+        spans[6] = self.face_span(p0, d, r);
         let spans = spans.iter().flatten();
         let mut end = S::ZERO;
         for s in spans.clone().filter(|s| s.start) {
@@ -138,6 +148,45 @@ impl<S: Scalar> StandardTriangle<S> {
             }
         }
         end
+    }
+
+    /// The [`Span`] over which the centre is over the face region (widened along inactive edges
+    /// as `cast` widens it) and below height `r`: within `r` of the face. A ball that starts
+    /// there never reaches this stage, so the span only extends the overlapping stretch.
+    fn face_span(&self, p0: Vec3<S>, d: Vec3<S>, r: S) -> Option<Span<S>> {
+        let (mut from, mut to) = (S::ZERO, S::ONE);
+        // Keeps the alphas at which `w0 + alpha dw <= 0`.
+        let mut clip = |w0: S, dw: S| {
+            if dw > S::ZERO {
+                let t = fraction(-w0, dw);
+                to = if t < to { t } else { to };
+            } else if dw < S::ZERO {
+                let t = fraction(w0, -dw);
+                from = if t > from { t } else { from };
+            } else if w0 > S::ZERO {
+                to = S::ZERO;
+            }
+        };
+        let margin = S::div_pow2(r, 6) + tie::<S>();
+        for i in 0..3 {
+            let out = self.edge(i).out();
+            let seam = if self.features.edge(i) {
+                S::ZERO
+            } else {
+                margin
+            };
+            clip(
+                S::dot_unit(p0 - self.corner(i), out) - seam,
+                S::dot_unit(d, out),
+            );
+        }
+        clip(p0.y - r, d.y);
+        clip(-p0.y, -d.y);
+        (from < to).then_some(Span {
+            from,
+            to,
+            start: false,
+        })
     }
 }
 

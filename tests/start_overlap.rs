@@ -119,6 +119,31 @@ fn leaving_an_edge_towards_its_vertex<S: Tolerance>() {
     );
 }
 
+/// Within r of edge 2 (0.5025 away), rising over the face region while still within r of the
+/// face, then reaching edge 0's line from inside: the distance to the triangle only grows, so
+/// nothing is reported (edge 0 used to be, at alpha 0.68, 0.773 from the triangle).
+fn rising_into_the_face_region_beside_an_edge<S: Tolerance>() {
+    let path = ([2.0, 0.5, -0.05], [0.0, 0.9, 1.55]);
+    assert_eq!(cast::<S>(TRI, path, 1.0, Features::ALL, false), None);
+}
+
+/// A start within r of edge 0, moving square to it as `f64` rounds: held at alpha 0 or let go,
+/// either is within rounding, but not met by vertex 0 later while still overlapping (it was, at
+/// alpha 0.124, 0.416 from the triangle with r 0.83).
+fn moving_square_to_the_nearest_edge<S: Tolerance>() {
+    let t = [
+        [0.0, 0.0, 0.0],
+        [-0.7183877041620876, 0.0, 1.2681766998264896],
+        [2.5993397199795525, 0.0, 0.0],
+    ];
+    let path = (
+        [-0.5827407458285646, 0.33783475990540723, 0.587841616374096],
+        [0.37290509839724073, 0.8077162087765395, 0.38295600815388986],
+    );
+    let got = cast::<S>(t, path, 0.8297275287337706, Features::ALL, false);
+    assert!(got.is_none_or(|(a, _)| a == 0.0), "{}: {got:?}", S::NAME);
+}
+
 /// With the edges inactive (a mesh's seams), a ball that starts within r of vertex 0 and moves
 /// away along x is clear of it at x = √0.5 and then meets vertex 2 afresh, where
 /// (x - 4)² + 0.5 = 1: at x = 4 - √0.5, alpha (3.5 - √0.5) / 4.5.
@@ -145,6 +170,12 @@ macro_rules! per_scalar {
         }
         #[test]
         fn leaving_an_edge_towards_its_vertex() { super::leaving_an_edge_towards_its_vertex::<$t>() }
+        #[test]
+        fn rising_into_the_face_region_beside_an_edge() {
+            super::rising_into_the_face_region_beside_an_edge::<$t>()
+        }
+        #[test]
+        fn moving_square_to_the_nearest_edge() { super::moving_square_to_the_nearest_edge::<$t>() }
         #[test]
         fn a_fresh_contact_after_leaving_is_kept() { super::a_fresh_contact_after_leaving_is_kept::<$t>() }
     })*};

@@ -1,0 +1,104 @@
+//! Two-sided triangles stop balls either way, at their edges and vertices too: a ball that
+//! crosses the plane beside a two-sided wall and then reaches its edge or corner from the other
+//! side touches it. An f64 check against the distance oracle along the path, and the cases a
+//! game trial found, in every scalar.
+
+mod common;
+
+use ballcast::{Scalar, Scene, StandardTriangle, Sweep, Triangle};
+use common::{Case, P, Rng, Tolerance, add, distance_to_triangle, v};
+use fixed::types::{I16F16, I32F32};
+
+/// A two-sided 4 × 4 wall in the plane x = 0, |y| <= 2, |z| <= 2: a fence panel.
+fn panel<S: Scalar>() -> Scene<S, 2> {
+    let c = [
+        [0.0, -2.0, -2.0],
+        [0.0, 2.0, -2.0],
+        [0.0, 2.0, 2.0],
+        [0.0, -2.0, 2.0],
+    ];
+    let mut s = Scene::new();
+    s.push_two_sided(Triangle::new(v(c[0]), v(c[1]), v(c[2])))
+        .unwrap();
+    s.push_two_sided(Triangle::new(v(c[0]), v(c[2]), v(c[3])))
+        .unwrap();
+    s
+}
+
+/// The walls of the trial, with r = 0.5: a step that grazes the plane beyond the top corner
+/// (x = 0.000555, beyond z = 2) and ends 0.41 from the corner, and a step up from below the
+/// panel, crossing its plane beneath it, that ends 0.2 behind its bottom edge. Both passed into
+/// the wall; the same bottom-edge path with a shallower crossing was caught.
+fn crossing_the_plane_beside_a_two_sided_wall<S: Tolerance>() {
+    let scene = panel::<S>();
+    let r = 0.5;
+    let steps: [(P, P); 3] = [
+        ([0.000555, 1.96265, 2.50214], [-0.0510, 0.1592, -0.1164]),
+        ([-0.1, -5.0, 0.0], [0.3, 6.0, 0.0]),
+        ([-0.1, -5.0, 0.0], [0.2, 6.0, 0.0]),
+    ];
+    for (p0, d) in steps {
+        let s = Sweep::new(v::<S>(p0), v(add(p0, d)), S::from_f64(r)).unwrap();
+        assert!(
+            scene.cast(&s).is_some(),
+            "{}: passed into the wall from {p0:?} by {d:?}",
+            S::NAME
+        );
+    }
+}
+
+/// Random sweeps (half of them falling past a triangle's plane) at random two-sided triangles,
+/// in f64: the centre stays at least r from the whole triangle, on either side, up to the
+/// reported alpha, and is r from it there. Starts within r are left to `tests/start_overlap.rs`.
+#[test]
+fn two_sided_f64_cast_matches_distance_oracle() {
+    let mut rng = Rng(23);
+    let (mut hits, mut crossing) = (0, 0);
+    for i in 0..100_000 {
+        let c: Case = if i % 2 == 0 {
+            rng.case(10.0)
+        } else {
+            rng.falling_case(10.0)
+        };
+        let [a, b, t] = c.tri.map(v::<f64>);
+        let Ok(st) = StandardTriangle::new(&Triangle::new(a, b, t)) else {
+            continue;
+        };
+        if distance_to_triangle(c.p0, c.tri) < c.r {
+            continue;
+        }
+        let sweep = Sweep::new(v(c.p0), v(c.p1), c.r).unwrap();
+        let hit = st.with_two_sided(true).cast(&sweep);
+        let end = hit.map_or(1.0, |h| h.alpha);
+        for k in 0..=64 {
+            let t = end * k as f64 / 64.0;
+            let d = distance_to_triangle(c.at(t), c.tri);
+            assert!(d >= c.r - 1e-9, "missed contact at {t}: {d} in {c:?}");
+        }
+        if let Some(h) = hit {
+            hits += 1;
+            let d = distance_to_triangle(c.at(h.alpha), c.tri);
+            assert!((d - c.r).abs() <= 1e-9, "distance {d} at contact in {c:?}");
+            // Touched from the side the centre did not start on.
+            let side = |p: P| st.to_standard(v(p)).unwrap().y;
+            crossing += (side(c.p0) * side(c.at(h.alpha)) < 0.0) as usize;
+        }
+    }
+    assert!(
+        hits > 5_000 && crossing > 10,
+        "{hits} hits, {crossing} from the far side"
+    );
+}
+
+macro_rules! per_scalar {
+    ($($m:ident: $t:ty),*) => {$(mod $m {
+        #[allow(unused_imports)]
+        use super::*;
+        #[test]
+        fn crossing_the_plane_beside_a_two_sided_wall() {
+            super::crossing_the_plane_beside_a_two_sided_wall::<$t>()
+        }
+    })*};
+}
+
+per_scalar!(f64_: f64, f32_: f32, i32f32: I32F32, i16f16: I16F16);
