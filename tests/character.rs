@@ -324,53 +324,6 @@ fn pressing_into_a_wide_corner_stays_grounded<S: Tolerance>() {
     }
 }
 
-/// Standing on a 30° slope for 10 s at 60 Hz. Gravity added to the velocity slides a
-/// frictionless ball down any slope; a character that should stand walks along the floor's
-/// plane and is pressed into the floor along its normal (by g dt² a frame) instead: then it is
-/// grounded on every frame and does not move at all.
-fn standing_still_on_a_slope_pressed_into_it<S: Tolerance>() {
-    let t = 30f64.to_radians();
-    let n = [t.sin(), t.cos(), 0.0];
-    let scene = slope::<S>(n);
-    let (dt, r, up) = (
-        S::from_f64(1.0 / 60.0),
-        S::from_f64(0.5),
-        v::<S>([0.0, 1.0, 0.0]),
-    );
-    let walkable = S::from_f64(std::f64::consts::FRAC_1_SQRT_2);
-    let (g, wish) = (S::from_f64(9.81), v::<S>([0.0; 3]));
-    let (mut p, mut vel) = (v::<S>(common::scale(n, 0.6)), v::<S>([0.0; 3]));
-    let (mut floor, mut settled) = (None, None);
-    for frame in 0..600 {
-        let d = match floor {
-            Some(normal) => {
-                vel = wish - normal * wish.dot(normal);
-                vel * dt - normal * g.mul(dt).mul(dt)
-            }
-            None => {
-                vel += v::<S>([0.0, -9.81, 0.0]) * dt;
-                vel * dt
-            }
-        };
-        let out = move_and_slide(&scene, p, d, r).unwrap();
-        (p, vel) = (out.position, out.clip(vel).unwrap());
-        floor = out.floor(up, walkable).unwrap().map(|c| c.hit.normal);
-        if frame >= 60 {
-            assert!(
-                floor.is_some(),
-                "{}: frame {frame} in the air at {p:?}",
-                S::NAME
-            );
-            assert_eq!(
-                *settled.get_or_insert(p),
-                p,
-                "{}: frame {frame} moved",
-                S::NAME
-            );
-        }
-    }
-}
-
 macro_rules! per_scalar {
     ($($m:ident: $t:ty),*) => {$(mod $m {
         use super::*;
@@ -397,10 +350,6 @@ macro_rules! per_scalar {
         #[test]
         fn slow_slides_along_a_wall() {
             slow_slides_along_a_wall_are_kept::<$t>();
-        }
-        #[test]
-        fn standing_still_on_a_slope() {
-            standing_still_on_a_slope_pressed_into_it::<$t>();
         }
         #[test]
         fn pressing_into_a_wide_corner() {

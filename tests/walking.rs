@@ -1,0 +1,139 @@
+//! The README's walking recipe: while grounded, walk along the floor's plane, then press into
+//! the floor along its normal by g dt², as a second, separate move; in the air, fall. Standing
+//! still on a slope, and walking slowly from flat ground onto a ramp. Every property in every
+//! scalar; expected values worked by hand.
+
+mod common;
+
+use ballcast::{Geometry, Scalar, Scene, Triangle, Vec3, move_and_slide};
+use common::{Tolerance, v};
+use fixed::types::{I16F16, I32F32};
+
+/// A character's state between frames: position, velocity and the floor's normal, if grounded.
+type State<S> = (Vec3<S>, Vec3<S>, Option<Vec3<S>>);
+
+/// One frame of the recipe at 60 Hz with r = 0.5, g = 9.81 and slopes up to 45° walkable.
+fn frame<S: Scalar, G: Geometry<S>>(
+    level: &G,
+    (p, vel, floor): State<S>,
+    wish: Vec3<S>,
+) -> State<S> {
+    let (dt, r, g) = (S::from_f64(1.0 / 60.0), S::from_f64(0.5), S::from_f64(9.81));
+    let (up, walkable) = (v::<S>([0.0, 1.0, 0.0]), S::from_f64(0.5f64.sqrt()));
+    match floor {
+        Some(n) => {
+            // Pressed into the floor first, along its own normal (so it does not slide), then
+            // the walk along it. In one move, a slow walk into a ramp points into both the
+            // floor and the ramp, and sliding rightly goes nowhere.
+            let press = Vec3::ZERO - n * g.mul(dt).mul(dt);
+            let pressed = move_and_slide(level, p, press, r).unwrap();
+            let vel = wish - n * wish.dot(n);
+            let walk = move_and_slide(level, pressed.position, vel * dt, r).unwrap();
+            let floor = walk.floor(up, walkable).unwrap();
+            let floor = floor.or(pressed.floor(up, walkable).unwrap());
+            (
+                walk.position,
+                walk.clip(vel).unwrap(),
+                floor.map(|c| c.hit.normal),
+            )
+        }
+        None => {
+            let vel = vel + v::<S>([0.0, -9.81, 0.0]) * dt;
+            let out = move_and_slide(level, p, vel * dt, r).unwrap();
+            let floor = out.floor(up, walkable).unwrap().map(|c| c.hit.normal);
+            (out.position, out.clip(vel).unwrap(), floor)
+        }
+    }
+}
+
+/// A 16 × 16 plane through the origin with front normal `n`, two triangles.
+fn slope<S: Scalar>(n: [f64; 3]) -> Scene<S, 8> {
+    // Two directions in the plane: a = n × z (or n × x), b = n × a, both unit.
+    let helper = if n[2].abs() < 0.9 {
+        [0.0, 0.0, 1.0]
+    } else {
+        [1.0, 0.0, 0.0]
+    };
+    let a = common::cross(n, helper);
+    let a = common::scale(a, 1.0 / common::norm(a));
+    let b = common::cross(n, a);
+    let p = |i: f64, j: f64| common::add(common::scale(a, 8.0 * i), common::scale(b, 8.0 * j));
+    let (p0, p1, p2, p3) = (p(-1.0, -1.0), p(1.0, -1.0), p(1.0, 1.0), p(-1.0, 1.0));
+    let mut s = Scene::new();
+    // Counter-clockwise seen from n: (p1 - p0) × (p2 - p0) points along a × b = n.
+    s.push(Triangle::new(v(p0), v(p1), v(p2))).unwrap();
+    s.push(Triangle::new(v(p0), v(p2), v(p3))).unwrap();
+    s
+}
+
+/// Standing on a 30° slope for 10 s. Gravity added to the velocity slides a frictionless ball
+/// down any slope; pressed in along the floor's normal instead, the ball is grounded on every
+/// frame after it lands and does not move at all.
+fn standing_still_on_a_slope_pressed_into_it<S: Tolerance>() {
+    let t = 30f64.to_radians();
+    let n = [t.sin(), t.cos(), 0.0];
+    let scene = slope::<S>(n);
+    let mut state = (v::<S>(common::scale(n, 0.6)), Vec3::ZERO, None);
+    let mut settled = None;
+    for frame_no in 0..600 {
+        state = frame(&scene, state, Vec3::ZERO);
+        if frame_no >= 60 {
+            let p = state.0;
+            assert!(
+                state.2.is_some(),
+                "{}: frame {frame_no} in the air at {p:?}",
+                S::NAME
+            );
+            assert_eq!(
+                *settled.get_or_insert(p),
+                p,
+                "{}: frame {frame_no} moved",
+                S::NAME
+            );
+        }
+    }
+}
+
+/// Flat ground (y = 0, x < 0) meeting a 44° ramp at x = 0, walked into at 0.05 units/s from
+/// x = -1. With the press in the same move as the walk, the ball stopped for good at the foot
+/// (x = -0.2017). Here it reaches the ramp after about 16 s and then climbs it: by 40 s its
+/// centre has risen by more than 0.2 (at 0.05 cos 44° along the ramp, about 0.4).
+fn walking_slowly_onto_a_ramp<S: Tolerance>() {
+    let t = 44f64.to_radians();
+    let top = [8.0, 8.0 * t.tan()];
+    let mut scene: Scene<S, 4> = Scene::new();
+    let quad = |s: &mut Scene<S, 4>, a: [f64; 2], b: [f64; 2]| {
+        let c = [
+            [a[0], a[1], -4.0],
+            [a[0], a[1], 4.0],
+            [b[0], b[1], 4.0],
+            [b[0], b[1], -4.0],
+        ];
+        s.push(Triangle::new(v(c[0]), v(c[1]), v(c[2]))).unwrap();
+        s.push(Triangle::new(v(c[0]), v(c[2]), v(c[3]))).unwrap();
+    };
+    quad(&mut scene, [-8.0, 0.0], [0.0, 0.0]);
+    quad(&mut scene, [0.0, 0.0], top);
+    let mut state = (v::<S>([-1.0, 0.5005, 0.0]), Vec3::ZERO, None);
+    let wish = v::<S>([0.05, 0.0, 0.0]);
+    for _ in 0..2400 {
+        state = frame(&scene, state, wish);
+    }
+    let [x, y, _] = common::back(state.0);
+    assert!(y > 0.7 && x > 0.0, "{}: stuck at ({x}, {y})", S::NAME);
+}
+
+macro_rules! per_scalar {
+    ($($m:ident: $t:ty),*) => {$(mod $m {
+        #[allow(unused_imports)]
+        use super::*;
+        #[test]
+        fn standing_still_on_a_slope_pressed_into_it() {
+            super::standing_still_on_a_slope_pressed_into_it::<$t>()
+        }
+        #[test]
+        fn walking_slowly_onto_a_ramp() { super::walking_slowly_onto_a_ramp::<$t>() }
+    })*};
+}
+
+per_scalar!(f64_: f64, f32_: f32, i32f32: I32F32, i16f16: I16F16);
