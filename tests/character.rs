@@ -22,26 +22,6 @@ fn floor<S: Scalar>() -> Scene<S, 8> {
     s
 }
 
-/// A plane through the origin with unit normal `n`, as two large triangles.
-fn slope<S: Scalar>(n: [f64; 3]) -> Scene<S, 8> {
-    // Two directions in the plane: a = n × z (or n × x), b = n × a, both unit.
-    let helper = if n[2].abs() < 0.9 {
-        [0.0, 0.0, 1.0]
-    } else {
-        [1.0, 0.0, 0.0]
-    };
-    let a = common::cross(n, helper);
-    let a = common::scale(a, 1.0 / common::norm(a));
-    let b = common::cross(n, a);
-    let p = |i: f64, j: f64| common::add(common::scale(a, 8.0 * i), common::scale(b, 8.0 * j));
-    let (p0, p1, p2, p3) = (p(-1.0, -1.0), p(1.0, -1.0), p(1.0, 1.0), p(-1.0, 1.0));
-    let mut s = Scene::new();
-    // Counter-clockwise seen from n: (p1 - p0) × (p2 - p0) points along a × b = n.
-    s.push(Triangle::new(v(p0), v(p1), v(p2))).unwrap();
-    s.push(Triangle::new(v(p0), v(p2), v(p3))).unwrap();
-    s
-}
-
 fn contact_time_and_point_are_where_the_ball_touched<S: Tolerance>() {
     let scene = floor::<S>();
     // Falling 1 from y = 1 with r = 0.5 and moving 1 in x: touches half-way through the step,
@@ -106,7 +86,7 @@ fn grounded_only_on_walkable_slopes<S: Tolerance>() {
     for (deg, walkable) in [(0.0f64, true), (30.0, true), (60.0, false), (90.0, false)] {
         let t = deg.to_radians();
         let n = [t.sin(), t.cos(), 0.0];
-        let scene = slope::<S>(n);
+        let scene = common::slope::<S>(n);
         let start = common::scale(n, 1.0);
         let out = move_and_slide(&scene, v(start), v([-1.0, -1.0, 0.0]), S::from_f64(0.5));
         let out = out.unwrap();

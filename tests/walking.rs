@@ -46,33 +46,13 @@ fn frame<S: Scalar, G: Geometry<S>>(
     }
 }
 
-/// A 16 × 16 plane through the origin with front normal `n`, two triangles.
-fn slope<S: Scalar>(n: [f64; 3]) -> Scene<S, 8> {
-    // Two directions in the plane: a = n × z (or n × x), b = n × a, both unit.
-    let helper = if n[2].abs() < 0.9 {
-        [0.0, 0.0, 1.0]
-    } else {
-        [1.0, 0.0, 0.0]
-    };
-    let a = common::cross(n, helper);
-    let a = common::scale(a, 1.0 / common::norm(a));
-    let b = common::cross(n, a);
-    let p = |i: f64, j: f64| common::add(common::scale(a, 8.0 * i), common::scale(b, 8.0 * j));
-    let (p0, p1, p2, p3) = (p(-1.0, -1.0), p(1.0, -1.0), p(1.0, 1.0), p(-1.0, 1.0));
-    let mut s = Scene::new();
-    // Counter-clockwise seen from n: (p1 - p0) × (p2 - p0) points along a × b = n.
-    s.push(Triangle::new(v(p0), v(p1), v(p2))).unwrap();
-    s.push(Triangle::new(v(p0), v(p2), v(p3))).unwrap();
-    s
-}
-
 /// Standing on a 30° slope for 10 s. Gravity added to the velocity slides a frictionless ball
 /// down any slope; pressed in along the floor's normal instead, the ball is grounded on every
 /// frame after it lands and does not move at all.
 fn standing_still_on_a_slope_pressed_into_it<S: Tolerance>() {
     let t = 30f64.to_radians();
     let n = [t.sin(), t.cos(), 0.0];
-    let scene = slope::<S>(n);
+    let scene = common::slope::<S>(n);
     let mut state = (v::<S>(common::scale(n, 0.6)), Vec3::ZERO, None);
     let mut settled = None;
     for frame_no in 0..600 {

@@ -2,7 +2,7 @@
 //! standard frame), conversion of a case to any scalar, and the tolerance table.
 #![allow(dead_code)] // each test binary uses a different part
 
-use ballcast::{Error, Scalar, StandardTriangle, Sweep, Triangle, Vec3};
+use ballcast::{Error, Scalar, Scene, StandardTriangle, Sweep, Triangle, Vec3};
 
 pub type P = [f64; 3];
 
@@ -349,4 +349,24 @@ impl Case {
     pub fn at(&self, t: f64) -> P {
         add(self.p0, scale(sub(self.p1, self.p0), t))
     }
+}
+
+/// A 16 × 16 plane through the origin with front normal `n`, two triangles.
+pub fn slope<S: Scalar>(n: [f64; 3]) -> Scene<S, 8> {
+    // Two directions in the plane: a = n × z (or n × x), b = n × a, both unit.
+    let helper = if n[2].abs() < 0.9 {
+        [0.0, 0.0, 1.0]
+    } else {
+        [1.0, 0.0, 0.0]
+    };
+    let a = cross(n, helper);
+    let a = scale(a, 1.0 / norm(a));
+    let b = cross(n, a);
+    let p = |i: f64, j: f64| add(scale(a, 8.0 * i), scale(b, 8.0 * j));
+    let (p0, p1, p2, p3) = (p(-1.0, -1.0), p(1.0, -1.0), p(1.0, 1.0), p(-1.0, 1.0));
+    let mut s = Scene::new();
+    // Counter-clockwise seen from n: (p1 - p0) × (p2 - p0) points along a × b = n.
+    s.push(Triangle::new(v(p0), v(p1), v(p2))).unwrap();
+    s.push(Triangle::new(v(p0), v(p2), v(p3))).unwrap();
+    s
 }
