@@ -362,15 +362,30 @@ impl<S: Scalar> StandardTriangle<S> {
     /// [`within_seams`](Self::within_seams) for a triangle with an inactive edge.
     fn widened_contains(&self, xq: S, zq: S, r: S) -> bool {
         let margin = S::div_pow2(r, 6) + tie::<S>();
+        // Where both edges at a sharp corner are seams, their moved lines meet far beyond it:
+        // the triangle's box grown by the margin bounds the widening.
+        let ((lo, hi), z1) = (self.x_extent(), self.shape().1);
+        let boxed = lo - margin <= xq && xq <= hi + margin && -margin <= zq && zq <= z1 + margin;
         let q = Vec3::new(xq, S::ZERO, zq);
-        (0..3).all(|i| {
-            let w = S::dot_unit(q - self.corner(i), self.edge(i).out());
-            w <= if self.features.edge(i) {
-                S::ZERO
-            } else {
-                margin
-            }
-        })
+        boxed
+            && (0..3).all(|i| {
+                let w = S::dot_unit(q - self.corner(i), self.edge(i).out());
+                w <= if self.features.edge(i) {
+                    S::ZERO
+                } else {
+                    margin
+                }
+            })
+    }
+
+    /// The triangle's extent along the standard frame's x axis.
+    pub(crate) fn x_extent(&self) -> (S, S) {
+        let (x1, _, x2) = self.shape();
+        if x1 < S::ZERO {
+            (x1, x2)
+        } else {
+            (S::ZERO, if x1 > x2 { x1 } else { x2 })
+        }
     }
 
     /// Vertex `i` in the standard frame.

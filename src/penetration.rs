@@ -118,12 +118,7 @@ pub(crate) fn overlap<S: Scalar>(
     // Beyond the plane's reach, behind a one-sided triangle (its back is open, as for a cast),
     // or beyond the triangle's box in its plane: no overlap. The box test also keeps every
     // offset below within the scalar's range.
-    let (x1, z1, x2) = t.shape();
-    let (lo, hi) = if x1 < S::ZERO {
-        (x1, x2)
-    } else {
-        (S::ZERO, if x1 > x2 { x1 } else { x2 })
-    };
+    let ((lo, hi), z1) = (t.x_extent(), t.shape().1);
     if q.y >= r
         || -q.y >= r
         || (behind && !t.two_sided)

@@ -4,6 +4,7 @@
 use crate::adjacency::{deactivate, hides};
 use crate::cover::{covered, interval};
 use crate::merge::{PLANES, earliest};
+use crate::scalar::{largest, tie};
 use crate::{Contact, Error, Scalar, StandardTriangle, Sweep, Triangle, Vec3};
 use heapless::Vec;
 
@@ -230,7 +231,7 @@ impl<S: Scalar, const N: usize> Scene<S, N> {
     /// seam gets one well-defined normal, and their distinct planes are listed for a response.
     /// The rule depends on the set of contacts, not on the order they are found in.
     pub fn cast(&self, sweep: &Sweep<S>) -> Option<SceneHit<S>> {
-        let reach = Bounds::of(&[sweep.p0(), sweep.p1()], sweep.radius());
+        let reach = Bounds::of(&[sweep.p0(), sweep.p1()], reach(sweep));
         earliest(|acc| {
             for (i, (b, t)) in self.bounds.iter().zip(self.triangles.iter()).enumerate() {
                 if b.overlaps(&reach)
@@ -241,6 +242,23 @@ impl<S: Scalar, const N: usize> Scene<S, N> {
             }
         })
     }
+}
+
+/// How far from the path's box a triangle's box may lie and the triangle still report a
+/// contact: the radius, the seam margin by which faces are widened along inactive edges
+/// (`r / 64 + 4 EPSILON`, bounded by the triangle's box grown by as much), and the rounding of
+/// the contact tests (sixteen height errors at the path's magnitude, and four steps of alpha
+/// twice over the path's length), so the box test never drops a contact the triangle reports.
+fn reach<S: Scalar>(sweep: &Sweep<S>) -> S {
+    let (p0, p1, r) = (sweep.p0(), sweep.p1(), sweep.radius());
+    let size = |p: Vec3<S>| largest(p.x.abs(), p.y.abs(), p.z.abs());
+    let d = p1 - p0;
+    let mut e = S::height_error(largest(size(p0), size(p1), r));
+    for _ in 0..4 {
+        e = e + e;
+    }
+    let steps = tie::<S>().mul(size(d));
+    r + S::div_pow2(r, 6) + tie::<S>() + e + steps + steps
 }
 
 /// Anything a ball can be cast against: a [`Scene`], or a slice of prepared triangles such as

@@ -180,6 +180,12 @@ impl<S: Scalar> StandardTriangle<S> {
                 S::dot_unit(d, out),
             );
         }
+        // The triangle's box grown by the margin bounds the widening, as in `cast`.
+        let ((lo, hi), z1) = (self.x_extent(), self.shape().1);
+        clip(lo - margin - p0.x, -d.x);
+        clip(p0.x - hi - margin, d.x);
+        clip(-margin - p0.z, -d.z);
+        clip(p0.z - z1 - margin, d.z);
         clip(p0.y - r, d.y);
         clip(-p0.y, -d.y);
         (from < to).then_some(Span {

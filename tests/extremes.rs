@@ -5,7 +5,7 @@
 
 mod common;
 
-use ballcast::{Error, Scalar, StandardSweep, StandardTriangle, Sweep, Triangle, Vec3};
+use ballcast::{Error, Features, Scalar, StandardSweep, StandardTriangle, Sweep, Triangle, Vec3};
 use common::{Case, P, Tolerance, model, v};
 use fixed::types::{I16F16, I32F32};
 use proptest::prelude::*;
@@ -205,6 +205,26 @@ fn corner_point(l: f64) -> impl Strategy<Value = P> {
 
 /// Any accepted triangle and sweep, however extreme, gives an answer without overflow, and a
 /// hit satisfies 0 <= alpha < 1 with a unit normal.
+/// A sliver (0.0018 high) whose two edges at its sharp corners are seams: each moved out by
+/// the seam margin, they met 0.6 beyond the corner, and a ball whose path never comes within
+/// 0.365 of the triangle (r 0.17) was reported touching its face.
+fn widened_sliver_corner_stays_near<S: Tolerance>() {
+    let t = [
+        [3.8828763259097885, -1.4775439352996464, -2.9486994813149447],
+        [3.3954474101151346, -3.098011811628493, -3.9640802851463306],
+        [3.599405042514466, -2.4207848943236403, -3.5408750007330485],
+    ];
+    let st = StandardTriangle::new(&Triangle::new(v::<S>(t[0]), v(t[1]), v(t[2])))
+        .unwrap()
+        .with_features(Features::from_bits(0b11_0010));
+    let (p0, p1) = (
+        [4.260809181802298, -3.9962184193367642, -3.681434435710541],
+        [4.105157007645481, 2.408867078549952, -1.3315960042265251],
+    );
+    let s = Sweep::new(v(p0), v(p1), S::from_f64(0.16984595652341705)).unwrap();
+    assert_eq!(st.cast(&s), None, "{}", S::NAME);
+}
+
 fn anything_accepted_is_answered<S: Tolerance>(t: [P; 3], p0: P, p1: P, r: f64) {
     let Ok(st) = tri::<S>(t) else { return };
     let s = Sweep::new(v(p0), v(p1), S::from_f64(r)).unwrap();
@@ -231,6 +251,7 @@ macro_rules! per_scalar {
         #[test] fn grazing_path() { super::grazing_path::<$t>() }
         #[test] fn safe_range_is_accepted_and_enforced() { super::safe_range_is_accepted_and_enforced::<$t>() }
         #[test] fn negative_radius_is_refused() { super::negative_radius_is_refused::<$t>() }
+        #[test] fn widened_sliver_corner_stays_near() { super::widened_sliver_corner_stays_near::<$t>() }
         proptest! {
             #![proptest_config(ProptestConfig::with_cases(2000))]
             #[test]

@@ -47,6 +47,51 @@ fn crossing_the_plane_beside_a_two_sided_wall<S: Tolerance>() {
     }
 }
 
+/// Grazing contacts a rounding step beyond r, near the edge of the triangle's box: a `Scene`
+/// must report what its triangle reports (it dropped these in `I16F16`, its box test allowing
+/// for no rounding).
+fn a_scene_keeps_a_grazing_contact_beside_its_box<S: Tolerance>() {
+    let cases: [([P; 3], P, P, f64); 2] = [
+        (
+            [
+                [-5.0, -0.27184620762230277, 4.0],
+                [-5.0, -0.041501171734483644, 5.0],
+                [-4.0, 0.6211411670526762, 5.0],
+            ],
+            [-5.381487792402268, -10.00764403025049, 9.593277817941825],
+            [-5.381487792402268, 3.8712349619827333, 1.6197734971422562],
+            0.38147109136043333,
+        ),
+        (
+            [
+                [3.0, 0.8403562517349514, 2.0],
+                [3.0, -0.2635905132049068, 3.0],
+                [4.0, 0.6263185920850143, 3.0],
+            ],
+            [4.758863809880672, 18.951080471170595, 0.0961400157950183],
+            [4.758863809880672, -1.5572977646568673, 3.34602993485199],
+            0.758843517005393,
+        ),
+    ];
+    for (t, p0, p1, r) in cases {
+        let tri = Triangle::new(v::<S>(t[0]), v(t[1]), v(t[2]));
+        let mut scene: Scene<S, 1> = Scene::new();
+        scene.push_two_sided(tri).unwrap();
+        let s = Sweep::new(v(p0), v(p1), S::from_f64(r)).unwrap();
+        let alone = StandardTriangle::new(&tri)
+            .unwrap()
+            .with_two_sided(true)
+            .cast(&s);
+        let got = scene.cast(&s);
+        assert_eq!(
+            got.map(|h| (h.alpha, h.contact)),
+            alone.map(|h| (h.alpha, h.contact)),
+            "{}",
+            S::NAME
+        );
+    }
+}
+
 /// Random sweeps (half of them falling past a triangle's plane) at random two-sided triangles,
 /// in f64: the centre stays at least r from the whole triangle, on either side, up to the
 /// reported alpha, and is r from it there. Starts within r are left to `tests/start_overlap.rs`.
@@ -94,6 +139,10 @@ macro_rules! per_scalar {
     ($($m:ident: $t:ty),*) => {$(mod $m {
         #[allow(unused_imports)]
         use super::*;
+        #[test]
+        fn a_scene_keeps_a_grazing_contact_beside_its_box() {
+            super::a_scene_keeps_a_grazing_contact_beside_its_box::<$t>()
+        }
         #[test]
         fn crossing_the_plane_beside_a_two_sided_wall() {
             super::crossing_the_plane_beside_a_two_sided_wall::<$t>()
