@@ -361,7 +361,7 @@ impl<S: Scalar> StandardTriangle<S> {
 
     /// [`within_seams`](Self::within_seams) for a triangle with an inactive edge.
     fn widened_contains(&self, xq: S, zq: S, r: S) -> bool {
-        let margin = S::div_pow2(r, 6) + tie::<S>();
+        let margin = seam_margin(r);
         // Where both edges at a sharp corner are seams, their moved lines meet far beyond it:
         // the triangle's box grown by the margin bounds the widening.
         let ((lo, hi), z1) = (self.x_extent(), self.shape().1);
@@ -498,6 +498,12 @@ fn first_touch<S: Scalar>(
     // Rounded to nearest, a fraction just below one can become one: that is no contact.
     let beta = S::div(t, len);
     (beta < S::ONE).then_some((beta, (t, len)))
+}
+
+/// How far a face is widened along an inactive edge (and beyond its box) for a ball of
+/// radius `r`: `r / 64 + 4 EPSILON`.
+pub(crate) fn seam_margin<S: Scalar>(r: S) -> S {
+    S::div_pow2(r, 6) + tie::<S>()
 }
 
 /// `q0 × dir`: the offset of a feature from a line through `q0` along the unit `dir`, whose

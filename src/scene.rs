@@ -2,6 +2,7 @@
 //! edges computed from adjacency, and its earliest-contact query.
 
 use crate::adjacency::{deactivate, hides};
+use crate::contact::seam_margin;
 use crate::cover::{covered, interval};
 use crate::merge::{PLANES, earliest};
 use crate::scalar::{largest, tie};
@@ -258,7 +259,7 @@ fn reach<S: Scalar>(sweep: &Sweep<S>) -> S {
         e = e + e;
     }
     let steps = tie::<S>().mul(size(d));
-    r + S::div_pow2(r, 6) + tie::<S>() + e + steps + steps
+    r + seam_margin(r) + e + steps + steps
 }
 
 /// Anything a ball can be cast against: a [`Scene`], or a slice of prepared triangles such as

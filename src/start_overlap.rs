@@ -13,8 +13,7 @@
 //! if any, is a fresh one. For a lone triangle (every feature active, a convex set) the distance
 //! to the triangle only grows once it has grown at the start, so a ball let go meets nothing.
 
-use crate::contact::off_line;
-use crate::scalar::tie;
+use crate::contact::{off_line, seam_margin};
 use crate::{Scalar, StandardTriangle, Vec3};
 
 /// The part of the path, as alpha from `from` to `to`, over which the ball is within `r` of a
@@ -42,18 +41,14 @@ impl<S: Scalar> Feature<S> {
             .is_none_or(|(u0, _, len)| u0 > S::ZERO && u0 < len)
     }
 
-    /// The alphas over which the centre is beside the feature.
-    fn bounds(&self) -> Option<(S, S)> {
-        let Some((u0, du, len)) = self.along else {
-            return Some((S::ZERO, S::ONE));
-        };
-        if du > S::ZERO {
-            Some((fraction(-u0, du), fraction(len - u0, du)))
-        } else if du < S::ZERO {
-            Some((fraction(u0 - len, -du), fraction(u0, -du)))
-        } else {
-            self.beside().then_some((S::ZERO, S::ONE))
+    /// The alphas over which the centre is beside the feature: `0 <= u0 + alpha du <= len`.
+    fn bounds(&self) -> (S, S) {
+        let mut b = (S::ZERO, S::ONE);
+        if let Some((u0, du, len)) = self.along {
+            clip(&mut b, -u0, -du);
+            clip(&mut b, u0 - len, du);
         }
+        b
     }
 }
 
@@ -125,7 +120,7 @@ impl<S: Scalar> StandardTriangle<S> {
         let mut spans = [None; 7];
         for (k, s) in spans.iter_mut().take(6).enumerate() {
             *s = self.feature(k, p0, d).and_then(|f| {
-                let mut s = span(f.q, f.m, r, f.bounds()?)?;
+                let mut s = span(f.q, f.m, r, f.bounds())?;
                 s.start &= f.beside();
                 Some(s)
             });
@@ -154,20 +149,9 @@ impl<S: Scalar> StandardTriangle<S> {
     /// as `cast` widens it) and below height `r`: within `r` of the face. A ball that starts
     /// there never reaches this stage, so the span only extends the overlapping stretch.
     fn face_span(&self, p0: Vec3<S>, d: Vec3<S>, r: S) -> Option<Span<S>> {
-        let (mut from, mut to) = (S::ZERO, S::ONE);
-        // Keeps the alphas at which `w0 + alpha dw <= 0`.
-        let mut clip = |w0: S, dw: S| {
-            if dw > S::ZERO {
-                let t = fraction(-w0, dw);
-                to = if t < to { t } else { to };
-            } else if dw < S::ZERO {
-                let t = fraction(w0, -dw);
-                from = if t > from { t } else { from };
-            } else if w0 > S::ZERO {
-                to = S::ZERO;
-            }
-        };
-        let margin = S::div_pow2(r, 6) + tie::<S>();
+        let mut b = (S::ZERO, S::ONE);
+        let mut clip = |w0: S, dw: S| clip(&mut b, w0, dw);
+        let margin = seam_margin(r);
         for i in 0..3 {
             let out = self.edge(i).out();
             let seam = if self.features.edge(i) {
@@ -188,6 +172,7 @@ impl<S: Scalar> StandardTriangle<S> {
         clip(p0.z - z1 - margin, d.z);
         clip(p0.y - r, d.y);
         clip(-p0.y, -d.y);
+        let (from, to) = b;
         (from < to).then_some(Span {
             from,
             to,
@@ -214,6 +199,19 @@ fn span<S: Scalar>(q: Vec3<S>, d: Vec3<S>, r: S, (lo, hi): (S, S)) -> Option<Spa
     let from = if lo > from { lo } else { from };
     let to = if hi < to { hi } else { to };
     (from < to).then_some(Span { from, to, start })
+}
+
+/// Narrows the alphas `(from, to)` to those at which `w0 + alpha dw <= 0`.
+fn clip<S: Scalar>((from, to): &mut (S, S), w0: S, dw: S) {
+    if dw > S::ZERO {
+        let t = fraction(-w0, dw);
+        *to = if t < *to { t } else { *to };
+    } else if dw < S::ZERO {
+        let t = fraction(w0, -dw);
+        *from = if t > *from { t } else { *from };
+    } else if w0 > S::ZERO {
+        *to = S::ZERO;
+    }
 }
 
 /// `n / d` clamped to `[0, 1]`, for `d > 0`, dividing only where the quotient is inside (so a
