@@ -237,6 +237,9 @@ macro_rules! per_scalar {
         #[test] fn push_out_of_a_corner_clears_both_faces() {
             super::push_out_of_a_corner_clears_both_faces::<$t>()
         }
+        #[test] fn push_out_of_a_v_valley_clears_both_slopes() {
+            super::push_out_of_a_v_valley_clears_both_slopes::<$t>()
+        }
         #[test] fn wrong_winding_is_found_from_a_point_above() {
             super::wrong_winding_is_found_from_a_point_above::<$t>()
         }
@@ -334,4 +337,62 @@ fn push_out_of_a_corner_clears_both_faces<S: Tolerance>() {
             Ok(())
         })
         .unwrap();
+}
+
+/// Embedded in a V valley of apex angle 20° to 150° (two slopes along z meeting at y = 0),
+/// anywhere above both slopes and overlapping at least one: one call with no motion leaves it
+/// overlapping neither by more than a skin and rounding. Pushing along the deepest slope's
+/// normal alone runs into the other slope in an acute valley, a little further each call.
+fn push_out_of_a_v_valley_clears_both_slopes<S: Tolerance>() {
+    let mut rng = common::Rng(0xACE7);
+    let r = 0.5;
+    let allowed = ballcast::slide::skin(S::from_f64(r), S::from_f64(10.0)).to_f64() + tol::<S>();
+    for apex in [20.0f64, 30.0, 40.0, 60.0, 90.0, 150.0] {
+        let (s, c) = (apex.to_radians() / 2.0).sin_cos();
+        // Each slope runs 10 up from the apex; its front faces into the valley.
+        let up = [[-s * 10.0, c * 10.0, 0.0], [s * 10.0, c * 10.0, 0.0]];
+        let along = [0.0, 0.0, 20.0];
+        let mut scene: Scene<S, 4> = Scene::new();
+        for (k, u) in up.iter().enumerate() {
+            let o = [0.0, 0.0, -10.0];
+            let (a, b) = if k == 0 { (*u, along) } else { (along, *u) };
+            let oa = common::add(o, a);
+            let ob = common::add(o, b);
+            let oab = common::add(oa, b);
+            for t in [[o, oa, oab], [o, oab, ob]] {
+                scene
+                    .push(Triangle::new(v(t[0]), v(t[1]), v(t[2])))
+                    .unwrap();
+            }
+        }
+        let normals = [[c, s, 0.0], [-c, s, 0.0]];
+        let mut tried = 0;
+        while tried < 200 {
+            let p = [
+                rng.range(-2.0, 2.0),
+                rng.range(0.0, 3.0),
+                rng.range(-2.0, 2.0),
+            ];
+            let d = normals.map(|n| common::dot(n, p));
+            if d.iter().any(|&d| d < 0.02) || d.iter().all(|&d| d >= r) {
+                continue;
+            }
+            tried += 1;
+            let centre = v::<S>(p);
+            let before = penetration(&scene, centre, S::from_f64(r)).unwrap();
+            assert!(
+                before.is_some(),
+                "{}: apex {apex}° at {p:?} overlaps",
+                S::NAME
+            );
+            let out = move_and_slide(&scene, centre, v([0.0; 3]), S::from_f64(r)).unwrap();
+            let after = penetration(&scene, out.position, S::from_f64(r)).unwrap();
+            let left = after.map_or(0.0, |p| p.depth.to_f64());
+            assert!(
+                left <= allowed,
+                "{}: apex {apex}° at {p:?} (distances {d:?}) left {left}",
+                S::NAME
+            );
+        }
+    }
 }

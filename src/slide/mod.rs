@@ -225,12 +225,15 @@ pub fn min_radius<S: Scalar>(extent: S) -> S {
 ///
 /// A ball that starts overlapping geometry by more than the skin is first pushed out
 /// ([`Slide::pushed_out`]): along the deepest overlap's normal
-/// ([`penetration`](crate::penetration::penetration)) to a skin from that triangle, at most
-/// [`MAX_SLIDES`] pushes (each may uncover the next), each swept like a motion so that it stops
-/// a skin short of other geometry rather than pushing into it. A ball spawned 0.2 inside a
-/// floor comes out in the one call. Overlaps are looked for only where the motion's first sweep
-/// meets something at once (alpha 0), so a call that starts clear costs no more than before; a
-/// ball that starts overlapping but moves away is left to leave. Shallower overlaps (rounding) are left to the motion: a
+/// ([`penetration`](crate::penetration::penetration)) to a skin from that triangle, or, where
+/// that would leave it in (or push it into) another triangle, the shortest push that clears
+/// both (out of a narrow valley along its bisector, say). At most [`MAX_SLIDES`] pushes (each
+/// may uncover the next), each at most `2 (radius + skin)` and swept like a motion, so that it
+/// stops a skin short of other geometry rather than pushing into it. A ball spawned 0.2 inside
+/// a floor, or overlapping both slopes of a 20° valley, comes out in the one call. Overlaps are
+/// looked for only where the motion's first sweep meets something at once (alpha 0), so a call
+/// that starts clear costs no more than before; a ball that starts overlapping but moves away
+/// is left to leave. Shallower overlaps (rounding) are left to the motion: a
 /// contact met at once lifts the ball by a skin.
 ///
 /// Guarantees, in every scalar: the motion's length never grows beyond the skins, so a slide
