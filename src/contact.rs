@@ -12,70 +12,7 @@ use crate::face::{contains, face_point};
 use crate::scalar::{largest, tie};
 use crate::{Contact, Hit, Scalar, StandardSweep, StandardTriangle, Sweep, Vec3};
 
-/// Which edges and vertices of a triangle take part in [`StandardTriangle::cast`]; the face
-/// always does. Inactive features model a mesh's interior: an edge shared with a coplanar
-/// neighbour, or one in a valley, is never the first thing a ball touches, and testing it only
-/// adds "ghost" bumps from rounding. [`Scene`](crate::Scene) computes these from adjacency.
-///
-/// ```
-/// use ballcast::Features;
-/// let f = Features::ALL.with_edge(1, false);
-/// assert!(f.edge(0) && !f.edge(1) && f.vertex(1));
-/// assert_eq!(Features::from_bits(f.bits()), f);
-/// ```
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
-#[cfg_attr(feature = "defmt", derive(defmt::Format))]
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub struct Features(u8);
-
-impl Features {
-    /// Every edge and vertex active: a lone triangle.
-    pub const ALL: Self = Self(0b11_1111);
-    /// Only the face: a triangle inside a flat mesh.
-    pub const FACE_ONLY: Self = Self(0);
-
-    /// From bits: bit `i` (0..3) is edge `i`, bit `3 + i` vertex `i`; other bits are ignored.
-    pub const fn from_bits(bits: u8) -> Self {
-        Self(bits & Self::ALL.0)
-    }
-    /// The bits, as taken by [`Features::from_bits`].
-    pub const fn bits(self) -> u8 {
-        self.0
-    }
-    /// Whether edge `i` (from vertex `i` to vertex `i + 1`) is active; false for `i > 2`.
-    pub const fn edge(self, i: usize) -> bool {
-        i < 3 && self.0 & (1 << i) != 0
-    }
-    /// Whether vertex `i` is active; false for `i > 2`.
-    pub const fn vertex(self, i: usize) -> bool {
-        i < 3 && self.0 & (8 << i) != 0
-    }
-    /// The same mask with edge `i` switched on or off (unchanged for `i > 2`).
-    pub const fn with_edge(self, i: usize, on: bool) -> Self {
-        if i > 2 {
-            self
-        } else {
-            self.with_bit(1 << i, on)
-        }
-    }
-    /// The same mask with vertex `i` switched on or off (unchanged for `i > 2`).
-    pub const fn with_vertex(self, i: usize, on: bool) -> Self {
-        if i > 2 {
-            self
-        } else {
-            self.with_bit(8 << i, on)
-        }
-    }
-    const fn with_bit(self, bit: u8, on: bool) -> Self {
-        Self(if on { self.0 | bit } else { self.0 & !bit })
-    }
-}
-
-impl Default for Features {
-    fn default() -> Self {
-        Self::ALL
-    }
-}
+pub use crate::features::Features;
 
 /// A contact in the standard frame: alpha, the offset from the touched point to the ball's
 /// centre (`None` for the face, whose normal is +y), the feature, and alpha unrounded, as a
@@ -88,33 +25,6 @@ type Touch<S> = (S, Option<Vec3<S>>, Contact, (S, S));
 type Timed<S> = ((S, Option<Vec3<S>>, Contact), (S, S));
 
 impl<S: Scalar> StandardTriangle<S> {
-    /// The same triangle with only the given edges and vertices taking part in [`cast`](Self::cast).
-    pub fn with_features(mut self, features: Features) -> Self {
-        self.features = features;
-        self
-    }
-
-    /// The edges and vertices that take part in [`cast`](Self::cast) (all, unless changed).
-    pub fn features(&self) -> Features {
-        self.features
-    }
-
-    /// The same triangle, one-sided (`false`, the default) or two-sided (`true`).
-    ///
-    /// One-sided, only a ball whose centre starts in front of the plane can touch it: the face
-    /// when the ball moves towards the front (velocity · front normal < 0), an edge or vertex
-    /// whatever the motion, with the centre in front at contact. Two-sided, the back behaves
-    /// like a front facing the other way, and the edges and vertices count on either side.
-    pub fn with_two_sided(mut self, two_sided: bool) -> Self {
-        self.two_sided = two_sided;
-        self
-    }
-
-    /// Whether the back face also stops balls.
-    pub fn is_two_sided(&self) -> bool {
-        self.two_sided
-    }
-
     /// The earliest contact of the sweep's ball with the triangle: its face (the course notes' test),
     /// its active edges and its active vertices.
     ///
@@ -350,34 +260,6 @@ impl<S: Scalar> StandardTriangle<S> {
         best.map(|((alpha, offset, contact), key)| (alpha, offset, contact, key))
     }
 
-    /// Whether `q'` lies inside the triangle once each inactive edge is moved out by
-    /// `r / 64 + 4 EPSILON`. An inactive edge is a seam with a coplanar or hiding neighbour;
-    /// rounding in two frames must not open a gap along it, so the faces overlap slightly there
-    /// (the scene merges the two contacts). Active edges keep the exact test.
-    #[inline]
-    fn within_seams(&self, xq: S, zq: S, r: S) -> bool {
-        self.features.bits() & 0b111 != 0b111 && self.widened_contains(xq, zq, r)
-    }
-
-    /// [`within_seams`](Self::within_seams) for a triangle with an inactive edge.
-    fn widened_contains(&self, xq: S, zq: S, r: S) -> bool {
-        let margin = seam_margin(r);
-        // Where both edges at a sharp corner are seams, their moved lines meet far beyond it:
-        // the triangle's box grown by the margin bounds the widening.
-        let ((lo, hi), z1) = (self.x_extent(), self.shape().1);
-        let boxed = lo - margin <= xq && xq <= hi + margin && -margin <= zq && zq <= z1 + margin;
-        let q = Vec3::new(xq, S::ZERO, zq);
-        boxed
-            && (0..3).all(|i| {
-                let w = S::dot_unit(q - self.corner(i), self.edge(i).out());
-                w <= if self.features.edge(i) {
-                    S::ZERO
-                } else {
-                    margin
-                }
-            })
-    }
-
     /// The triangle's extent along the standard frame's x axis.
     pub(crate) fn x_extent(&self) -> (S, S) {
         let (x1, _, x2) = self.shape();
@@ -498,12 +380,6 @@ fn first_touch<S: Scalar>(
     // Rounded to nearest, a fraction just below one can become one: that is no contact.
     let beta = S::div(t, len);
     (beta < S::ONE).then_some((beta, (t, len)))
-}
-
-/// How far a face is widened along an inactive edge (and beyond its box) for a ball of
-/// radius `r`: `r / 64 + 4 EPSILON`.
-pub(crate) fn seam_margin<S: Scalar>(r: S) -> S {
-    S::div_pow2(r, 6) + tie::<S>()
 }
 
 /// `q0 × dir`: the offset of a feature from a line through `q0` along the unit `dir`, whose

@@ -2,10 +2,10 @@
 //! edges computed from adjacency, and its earliest-contact query.
 
 use crate::adjacency::{deactivate, hides};
-use crate::contact::seam_margin;
 use crate::cover::{covered, interval};
 use crate::merge::{PLANES, earliest};
 use crate::scalar::{largest, tie};
+use crate::seam::seam_margin;
 use crate::{Contact, Error, Scalar, StandardTriangle, Sweep, Triangle, Vec3};
 use heapless::Vec;
 

@@ -13,7 +13,8 @@
 //! if any, is a fresh one. For a lone triangle (every feature active, a convex set) the distance
 //! to the triangle only grows once it has grown at the start, so a ball let go meets nothing.
 
-use crate::contact::{off_line, seam_margin};
+use crate::contact::off_line;
+use crate::seam::seam_margin;
 use crate::{Scalar, StandardTriangle, Vec3};
 
 /// The part of the path, as alpha from `from` to `to`, over which the ball is within `r` of a
