@@ -22,7 +22,7 @@ use crate::contact::unit;
 use crate::{Error, Geometry, Scalar, SceneHit, Sweep, Vec3, check};
 use heapless::Vec;
 use resolve::{resolve, settle};
-use rules::{Planes, add_planes, constrain, magnitude};
+use rules::{Planes, add_planes, constrain, holds, magnitude};
 
 /// At most this many sweeps per call: each contact costs one, and a ball pressed into a corner
 /// of three planes has nowhere left to go after three.
@@ -90,6 +90,14 @@ impl<S: Scalar> Slide<S> {
     /// character controllers of engines call a ball with such a contact *grounded* (Unity's
     /// `isGrounded`, Godot's `is_on_floor`).
     ///
+    /// A valley holds a ball too, though each of its slopes is too steep to stand on: a contact
+    /// also counts when one of its planes and a plane touched at the same time or earlier in
+    /// the call meet in a crease that holds the ball up (their normals lie either side of `up`)
+    /// and whose own slope is walkable (the steepest line of the pair's span, the direction
+    /// between the normals nearest `up`, is within the limit). Jolt's character asks the same
+    /// of its contacts before it calls steep ground a floor. Whether the two slopes are touched
+    /// at exactly the same moment, which depends on rounding, then no longer matters.
+    ///
     /// ```
     /// use ballcast::{Scene, Triangle, Vec3, move_and_slide};
     /// let v = Vec3::new;
@@ -109,11 +117,18 @@ impl<S: Scalar> Slide<S> {
         let up = check::point(up, S::LIMIT)?;
         let min_cos = check::within(min_cos, -S::ONE, S::ONE)?;
         let up = unit(up).ok_or(Error::ZeroVector)?;
-        Ok(self
-            .contacts
-            .iter()
-            .flatten()
-            .filter(|c| S::dot(c.hit.normal, up) >= min_cos)
+        let contacts = || self.contacts.iter().flatten();
+        let held = |j: usize, c: &SlideContact<S>| {
+            let mut earlier = contacts()
+                .take(j + 1)
+                .flat_map(|e| e.hit.planes.into_iter().flatten());
+            let mine = || c.hit.planes.into_iter().flatten();
+            earlier.any(|b| mine().any(|a| holds(a, b, up, min_cos)))
+        };
+        Ok(contacts()
+            .enumerate()
+            .filter(|&(j, c)| S::dot(c.hit.normal, up) >= min_cos || held(j, c))
+            .map(|(_, c)| c)
             .last())
     }
 }

@@ -102,3 +102,21 @@ fn cross_unit<S: Scalar>(a: Vec3<S>, b: Vec3<S>) -> Vec3<S> {
         d(a.x, a.y, b.y, b.x),
     )
 }
+
+/// Whether the crease of the planes with unit normals `a` and `b` holds a ball up and is
+/// walkable: `up`'s projection onto their span, `p = α a + β b`, has `α, β >= 0` (the normals
+/// lie either side of `up`) and `|p| >= min_cos` (`|p|` is the cosine of the steepest line
+/// between the normals). Solved over the Gram determinant `1 - (a · b)²` without dividing;
+/// normals within about 14° of parallel or opposed hold nothing of their own.
+pub(super) fn holds<S: Scalar>(a: Vec3<S>, b: Vec3<S>, up: Vec3<S>, min_cos: S) -> bool {
+    let k = S::dot(a, b);
+    let det = (S::ONE - k).mul(S::ONE + k);
+    let (au, bu) = (S::dot(a, up), S::dot(b, up));
+    let (alpha, beta) = (au - k.mul(bu), bu - k.mul(au));
+    // `|p|² det = au α + bu β`.
+    let reach = au.mul(alpha) + bu.mul(beta);
+    det >= S::div_pow2(S::ONE, 4)
+        && alpha >= S::ZERO
+        && beta >= S::ZERO
+        && (min_cos <= S::ZERO || reach >= min_cos.mul(min_cos).mul(det))
+}
