@@ -94,9 +94,11 @@ impl<S: Scalar> Slide<S> {
     /// also counts when one of its planes and a plane touched at the same time or earlier in
     /// the call meet in a crease that holds the ball up (their normals lie either side of `up`)
     /// and whose own slope is walkable (the steepest line of the pair's span, the direction
-    /// between the normals nearest `up`, is within the limit). Jolt's character asks the same
-    /// of its contacts before it calls steep ground a floor. Whether the two slopes are touched
-    /// at exactly the same moment, which depends on rounding, then no longer matters.
+    /// between the normals nearest `up`, is within the limit). Jolt's `CharacterVirtual` likewise
+    /// calls a character on several steep contacts supported when together they stop it sliding
+    /// down; here the valley's trough is held to the same slope limit as a single floor. Whether
+    /// the two slopes are touched at exactly the same moment, which depends on rounding, then no
+    /// longer matters.
     ///
     /// ```
     /// use ballcast::{Scene, Triangle, Vec3, move_and_slide};
