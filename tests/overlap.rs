@@ -240,6 +240,12 @@ macro_rules! per_scalar {
         #[test] fn push_out_of_a_v_valley_clears_both_slopes() {
             super::push_out_of_a_v_valley_clears_both_slopes::<$t>()
         }
+        #[test] fn push_out_of_a_floor_in_a_slot_narrower_than_the_ball() {
+            super::push_out_of_a_floor_in_a_slot_narrower_than_the_ball::<$t>()
+        }
+        #[test] fn push_out_past_a_third_overlap_in_a_terrain() {
+            super::push_out_past_a_third_overlap_in_a_terrain::<$t>()
+        }
         #[test] fn wrong_winding_is_found_from_a_point_above() {
             super::wrong_winding_is_found_from_a_point_above::<$t>()
         }
@@ -395,4 +401,87 @@ fn push_out_of_a_v_valley_clears_both_slopes<S: Tolerance>() {
             );
         }
     }
+}
+
+/// Pushed out of a floor between two walls closer than the ball's diameter (x = ±0.45, r 0.5):
+/// the push out of the floor meeting the nearer wall as well runs at once into the other
+/// wall, so the push straight up is taken instead; one call lifts the ball out of the floor,
+/// leaving only the overlap with the walls that no position avoids.
+fn push_out_of_a_floor_in_a_slot_narrower_than_the_ball<S: Tolerance>() {
+    let mut scene: Scene<S, 8> = floor::<S, 8>();
+    let h = 0.45;
+    let walls = [
+        [
+            [-h, -1.0, -10.0],
+            [-h, 6.0, -10.0],
+            [-h, 6.0, 10.0],
+            [-h, -1.0, 10.0],
+        ],
+        [
+            [h, -1.0, -10.0],
+            [h, -1.0, 10.0],
+            [h, 6.0, 10.0],
+            [h, 6.0, -10.0],
+        ],
+    ];
+    for w in walls {
+        scene
+            .push(Triangle::new(v(w[0]), v(w[1]), v(w[2])))
+            .unwrap();
+        scene
+            .push(Triangle::new(v(w[0]), v(w[2]), v(w[3])))
+            .unwrap();
+    }
+    let r = S::from_f64(0.5);
+    let floor: Vec<_> = (0..2).map(|i| *scene.triangle(i).unwrap()).collect();
+    for x in [0.0, -0.02] {
+        let out = move_and_slide(&scene, v([x, 0.1, 0.0]), v([0.0; 3]), r).unwrap();
+        let left = penetration(floor.as_slice(), out.position, r).unwrap();
+        assert_eq!(left, None, "{}: from x {x}, at {:?}", S::NAME, out.position);
+    }
+}
+
+/// Four triangles of a bumpy terrain around a ball 0.83 deep (one-sided, fronts up): the push
+/// meeting the deepest overlap and the one it fails most is stopped by a third; the deepest's
+/// own push gets through, and one call clears the ball.
+fn push_out_past_a_third_overlap_in_a_terrain<S: Tolerance>() {
+    let tris = [
+        [
+            [4.0, 0.132476806640625, 3.0],
+            [4.0, -0.551605224609375, 4.0],
+            [5.0, 0.607330322265625, 4.0],
+        ],
+        [
+            [4.0, -0.1515655517578125, 5.0],
+            [4.0, 4.57763671875e-5, 6.0],
+            [5.0, -0.2940826416015625, 5.0],
+        ],
+        [
+            [4.0, 4.57763671875e-5, 6.0],
+            [5.0, -0.1598358154296875, 6.0],
+            [5.0, -0.2940826416015625, 5.0],
+        ],
+        [
+            [5.0, 0.607330322265625, 4.0],
+            [5.0, -0.2940826416015625, 5.0],
+            [6.0, 0.4152679443359375, 4.0],
+        ],
+    ];
+    let mut scene: Scene<S, 4> = Scene::new();
+    for t in tris {
+        scene
+            .push(Triangle::new(v(t[0]), v(t[1]), v(t[2])))
+            .unwrap();
+    }
+    let r = S::from_f64(0.8587188720703125);
+    let c = v::<S>([4.6788482666015625, -0.2072601318359375, 5.0576934814453125]);
+    let before = penetration(&scene, c, r)
+        .unwrap()
+        .map_or(0.0, |p| p.depth.to_f64());
+    assert!(before > 0.8, "{}: starts {before} deep", S::NAME);
+    let out = move_and_slide(&scene, c, v([0.0; 3]), r).unwrap();
+    let left = penetration(&scene, out.position, r).unwrap();
+    let allowed = ballcast::slide::skin(r, S::from_f64(10.0)).to_f64() + tol::<S>();
+    let left = left.map_or(0.0, |p| p.depth.to_f64());
+    assert!(left <= allowed, "{}: left {left} deep", S::NAME);
 }

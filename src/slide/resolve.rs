@@ -6,10 +6,14 @@ use crate::penetration::{deepest, overlap};
 use crate::{Geometry, Scalar, SceneHit, Sweep, Vec3};
 
 /// Where a ball that starts overlapping `scene` by more than `skin` is moved before its
-/// motion, at most [`MAX_SLIDES`] pushes (each may uncover the next deepest). A push leaves the
-/// deepest overlap a skin clear ([`push_out`]; in a valley, both slopes at once), is never
-/// longer than twice `radius + skin`, and is swept like a motion so that it stops a skin short
-/// of anything it would run into. Never farther than `2 * MAX_SLIDES * (radius + skin)` in all.
+/// motion, at most [`MAX_SLIDES`] pushes (each may uncover the next deepest). Each round tries
+/// the joint push ([`push_out`]: the deepest overlap and the one that push would fail most,
+/// both slopes of a valley at once), then, if something stops it, the push along the deepest
+/// overlap's normal alone (a third overlap may lie against the joint push and not against
+/// that one). Each is swept like a motion, so that it stops a skin short of anything it would
+/// run into; where both are stopped, the one leaving the shallower overlap is kept. A push is
+/// never longer than twice `radius + skin`, and never farther than
+/// `2 * MAX_SLIDES * (radius + skin)` in all.
 #[inline(never)] // its frame is live only while it runs, not through the whole motion
 pub(super) fn resolve<S: Scalar, G: Geometry<S> + ?Sized>(
     scene: &G,
@@ -18,27 +22,51 @@ pub(super) fn resolve<S: Scalar, G: Geometry<S> + ?Sized>(
     skin: S,
     rounding: S,
 ) -> Vec3<S> {
-    for _ in 0..MAX_SLIDES {
+    'rounds: for _ in 0..MAX_SLIDES {
         let Some(p) = deepest(scene, centre, radius) else {
             break;
         };
         if p.depth <= skin {
             break;
         }
-        let push = push_out(scene, centre, (radius, skin), (p.normal, p.depth), rounding);
-        let Ok(sweep) = Sweep::new(centre, centre + push, radius) else {
-            break;
-        };
-        match scene.cast(&sweep) {
-            // Into something it does not yet overlap, or deeper into one it does: stop short.
-            Some(hit) if S::dot_sign(push, hit.normal).is_lt() => {
-                centre = settle(&hit, centre, push, skin, rounding);
+        let first = p.normal.scale(p.depth + skin);
+        let joint = push_out(
+            scene,
+            centre,
+            (radius, skin),
+            (p.normal, p.depth + skin),
+            rounding,
+        );
+        // The joint push; if something stops it, the deepest's own, which may get through.
+        let mut stops = [None, None];
+        for (k, push) in [joint, first].into_iter().enumerate() {
+            if k == 1 && push == joint {
                 break;
             }
-            // Clear, or met at once alongside an overlap the push does not deepen (another
-            // face of a corner): the next round sees what is left.
-            _ => centre = sweep.p1(),
+            let Ok(sweep) = Sweep::new(centre, centre + push, radius) else {
+                break;
+            };
+            match scene.cast(&sweep) {
+                // Into something it does not yet overlap, or deeper into one it does: stop short.
+                Some(hit) if S::dot_sign(push, hit.normal).is_lt() => {
+                    stops[k] = Some(settle(&hit, centre, push, skin, rounding));
+                }
+                // Clear, or met at once alongside an overlap the push does not deepen (another
+                // face of a corner): the next round sees what is left.
+                _ => {
+                    centre = sweep.p1();
+                    continue 'rounds;
+                }
+            }
         }
+        // Both stopped: where the overlap left is shallower, the joint push's on a tie.
+        let left = |c: Vec3<S>| deepest(scene, c, radius).map_or(S::ZERO, |p| p.depth);
+        centre = match stops {
+            [Some(a), Some(b)] if left(b) < left(a) => b,
+            [Some(a), _] => a,
+            _ => centre,
+        };
+        break;
     }
     centre
 }
@@ -58,10 +86,9 @@ fn push_out<S: Scalar, G: Geometry<S> + ?Sized>(
     scene: &G,
     c: Vec3<S>,
     (r, skin): (S, S),
-    (n1, depth): (Vec3<S>, S),
+    (n1, to1): (Vec3<S>, S),
     rounding: S,
 ) -> Vec3<S> {
-    let to1 = depth + skin;
     let first = n1.scale(to1);
     let Some((n2, to2)) = most_failed(scene, c, (r, skin), (first, to1), rounding) else {
         return first;
