@@ -261,7 +261,11 @@ pub fn min_radius<S: Scalar>(extent: S) -> S {
 /// [`Error::NaN`] or [`Error::OutOfRange`] when `position`, `displacement`, the target or
 /// `radius` is outside `±`[`Scalar::LIMIT`], [`Error::NegativeRadius`], and
 /// [`Error::RadiusTooSmall`] below [`min_radius`] at the larger of the start's and target's
-/// coordinates.
+/// coordinates. A slide whose sweep would end outside `±LIMIT` is refused with
+/// [`Error::OutOfRange`] as well (a push out of an overlap that would is not made, and the
+/// target after the push is checked again). The position returned stands a
+/// skin off what it touched, so near the edge of the range it can lie up to a skin beyond
+/// `±LIMIT`, and the next call refuses it: keep the world a skin inside the range.
 ///
 /// ```
 /// use ballcast::{Scene, Triangle, Vec3, move_and_slide, slide::skin};
