@@ -246,6 +246,9 @@ macro_rules! per_scalar {
         #[test] fn push_out_past_a_third_overlap_in_a_terrain() {
             super::push_out_past_a_third_overlap_in_a_terrain::<$t>()
         }
+        #[test] fn push_out_of_a_pit_of_three_steep_faces() {
+            super::push_out_of_a_pit_of_three_steep_faces::<$t>()
+        }
         #[test] fn wrong_winding_is_found_from_a_point_above() {
             super::wrong_winding_is_found_from_a_point_above::<$t>()
         }
@@ -484,4 +487,63 @@ fn push_out_past_a_third_overlap_in_a_terrain<S: Tolerance>() {
     let allowed = ballcast::slide::skin(r, S::from_f64(10.0)).to_f64() + tol::<S>();
     let left = left.map_or(0.0, |p| p.depth.to_f64());
     assert!(left <= allowed, "{}: left {left} deep", S::NAME);
+}
+
+/// Embedded at the bottom of a pit of three faces tilted 50° to 70° from level, meeting at the
+/// origin: one call with no motion clears all three. The push out of two of them runs into
+/// the third, and pushing out of one at a time took up to 190 calls.
+fn push_out_of_a_pit_of_three_steep_faces<S: Tolerance>() {
+    let mut rng = common::Rng(0x717);
+    let r = 0.5;
+    let allowed = ballcast::slide::skin(S::from_f64(r), S::from_f64(10.0)).to_f64() + tol::<S>();
+    for tilt in [50.0f64, 60.0, 70.0] {
+        let (s, c) = tilt.to_radians().sin_cos();
+        let normals: Vec<[f64; 3]> = (0..3)
+            .map(|k| {
+                let a = f64::from(k) * 2.0 * std::f64::consts::PI / 3.0;
+                [-s * a.cos(), c, -s * a.sin()]
+            })
+            .collect();
+        let mut scene: Scene<S, 4> = Scene::new();
+        for n in &normals {
+            // A triangle of radius 10 about the origin in the plane, wound to face along `n`.
+            let a = common::scale(common::cross(*n, [0.0, 1.0, 0.0]), 1.0 / s);
+            let b = common::cross(*n, a);
+            let at = |u: f64, w: f64| common::add(common::scale(a, u), common::scale(b, w));
+            let t = [at(10.0, 0.0), at(-5.0, 8.66), at(-5.0, -8.66)];
+            let front = common::cross(common::sub(t[1], t[0]), common::sub(t[2], t[0]));
+            let t = if common::dot(front, *n) > 0.0 {
+                t
+            } else {
+                [t[0], t[2], t[1]]
+            };
+            scene
+                .push(Triangle::new(v(t[0]), v(t[1]), v(t[2])))
+                .unwrap();
+        }
+        let mut tried = 0;
+        while tried < 100 {
+            let p = [
+                rng.range(-0.3, 0.3),
+                rng.range(0.0, 1.5),
+                rng.range(-0.3, 0.3),
+            ];
+            let d = normals
+                .iter()
+                .map(|n| common::dot(*n, p))
+                .collect::<Vec<_>>();
+            if d.iter().any(|&d| d < 0.02) || d.iter().filter(|&&d| d < r).count() < 3 {
+                continue;
+            }
+            tried += 1;
+            let out = move_and_slide(&scene, v::<S>(p), v([0.0; 3]), S::from_f64(r)).unwrap();
+            let after = penetration(&scene, out.position, S::from_f64(r)).unwrap();
+            let left = after.map_or(0.0, |p| p.depth.to_f64());
+            assert!(
+                left <= allowed,
+                "{}: tilt {tilt}° at {p:?} (distances {d:?}) left {left}",
+                S::NAME
+            );
+        }
+    }
 }

@@ -15,6 +15,7 @@
 //! Every product and quotient rounds to nearest through the [`Scalar`] trait, so a resting ball
 //! pushed into a floor does not creep along it.
 
+mod push;
 mod resolve;
 mod rules;
 
@@ -243,11 +244,12 @@ pub fn min_radius<S: Scalar>(extent: S) -> S {
 /// A ball that starts overlapping geometry by more than the skin is first pushed out
 /// ([`Slide::pushed_out`]): along the deepest overlap's normal
 /// ([`penetration`](crate::penetration::penetration)) to a skin from that triangle, or, where
-/// that would leave it in (or push it into) another triangle, the shortest push that clears
-/// both (out of a narrow valley along its bisector, say). At most [`MAX_SLIDES`] pushes (each
+/// that would leave it in (or push it into) other faces, the shortest push that clears up to
+/// three (out of a narrow valley along its bisector, out of a pit). At most [`MAX_SLIDES`] pushes (each
 /// may uncover the next), each at most `2 (radius + skin)` and swept like a motion, so that it
 /// stops a skin short of other geometry rather than pushing into it. A ball spawned 0.2 inside
-/// a floor, or overlapping both slopes of a 20° valley, comes out in the one call. Overlaps are
+/// a floor, overlapping both slopes of a 20° valley or the three faces of a steep pit, comes
+/// out in the one call. Overlaps are
 /// looked for only where the motion's first sweep meets something at once (alpha 0), so a call
 /// that starts clear costs no more than before; a ball that starts overlapping but moves away
 /// is left to leave. Shallower overlaps (rounding) are left to the motion: a
