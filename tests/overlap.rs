@@ -9,6 +9,13 @@ use ballcast::{Contact, Geometry, Scalar, Scene, Triangle, move_and_slide, penet
 use common::{Tolerance, back, v};
 use fixed::types::{I16F16, I32F32};
 
+/// Pushes the quad `c` as two triangles sharing the diagonal `c[0]`–`c[2]`, facing as
+/// `(c[1] - c[0]) × (c[2] - c[0])`.
+fn quad<S: Scalar, const N: usize>(s: &mut Scene<S, N>, c: [[f64; 3]; 4]) {
+    s.push(Triangle::new(v(c[0]), v(c[1]), v(c[2]))).unwrap();
+    s.push(Triangle::new(v(c[0]), v(c[2]), v(c[3]))).unwrap();
+}
+
 /// A 20 × 20 floor at y = 0 facing +y, two triangles sharing the diagonal.
 fn floor<S: Scalar, const N: usize>() -> Scene<S, N> {
     let mut s = Scene::new();
@@ -18,8 +25,7 @@ fn floor<S: Scalar, const N: usize>() -> Scene<S, N> {
         [10.0, 0.0, 10.0],
         [10.0, 0.0, -10.0],
     ];
-    s.push(Triangle::new(v(c[0]), v(c[1]), v(c[2]))).unwrap();
-    s.push(Triangle::new(v(c[0]), v(c[2]), v(c[3]))).unwrap();
+    quad(&mut s, c);
     s
 }
 
@@ -320,12 +326,7 @@ fn push_out_of_a_corner_clears_both_faces<S: Tolerance>() {
         [0.0, 10.0, 10.0],
         [0.0, -10.0, 10.0],
     ];
-    scene
-        .push(Triangle::new(v(w[0]), v(w[1]), v(w[2])))
-        .unwrap();
-    scene
-        .push(Triangle::new(v(w[0]), v(w[2]), v(w[3])))
-        .unwrap();
+    quad(&mut scene, w);
     let r = S::from_f64(0.5);
     let cases = (0.05..1.0f64, 0.05..1.0f64, -5.0..5.0f64);
     TestRunner::new(Config::with_cases(200))
@@ -365,14 +366,8 @@ fn push_out_of_a_v_valley_clears_both_slopes<S: Tolerance>() {
         for (k, u) in up.iter().enumerate() {
             let o = [0.0, 0.0, -10.0];
             let (a, b) = if k == 0 { (*u, along) } else { (along, *u) };
-            let oa = common::add(o, a);
-            let ob = common::add(o, b);
-            let oab = common::add(oa, b);
-            for t in [[o, oa, oab], [o, oab, ob]] {
-                scene
-                    .push(Triangle::new(v(t[0]), v(t[1]), v(t[2])))
-                    .unwrap();
-            }
+            let (oa, ob) = (common::add(o, a), common::add(o, b));
+            quad(&mut scene, [o, oa, common::add(oa, b), ob]);
         }
         let normals = [[c, s, 0.0], [-c, s, 0.0]];
         let mut tried = 0;
@@ -428,12 +423,7 @@ fn push_out_of_a_floor_in_a_slot_narrower_than_the_ball<S: Tolerance>() {
         ],
     ];
     for w in walls {
-        scene
-            .push(Triangle::new(v(w[0]), v(w[1]), v(w[2])))
-            .unwrap();
-        scene
-            .push(Triangle::new(v(w[0]), v(w[2]), v(w[3])))
-            .unwrap();
+        quad(&mut scene, w);
     }
     let r = S::from_f64(0.5);
     let floor: Vec<_> = (0..2).map(|i| *scene.triangle(i).unwrap()).collect();
