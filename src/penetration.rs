@@ -101,6 +101,17 @@ pub(crate) fn overlap<S: Scalar>(
     r: S,
     index: usize,
 ) -> Option<Penetration<S>> {
+    nearest(t, c, r, index).map(|(p, _)| p)
+}
+
+/// [`overlap`], and whether the centre lies over the face itself (not only nearest an
+/// inactive edge or vertex, for which the face's plane stands in).
+pub(crate) fn nearest<S: Scalar>(
+    t: &StandardTriangle<S>,
+    c: Vec3<S>,
+    r: S,
+    index: usize,
+) -> Option<(Penetration<S>, bool)> {
     // The triangle lies within its two edges at v0 of its origin: a few comparisons reject most
     // triangles of a scan before any product.
     let (e, o) = (t.edges(), t.origin());
@@ -133,18 +144,19 @@ pub(crate) fn overlap<S: Scalar>(
     let inside = (t.edges().iter().enumerate())
         .all(|(i, e)| S::dot_unit(flat - t.corner(i), e.out()) <= S::ZERO);
     // The face region: out along the normal on the centre's side.
-    let face = || {
+    let face = |over: bool| {
         let n = if behind { -t.normal() } else { t.normal() };
-        Some(Penetration {
+        let p = Penetration {
             normal: n,
             depth: r - q.y.abs(),
             point: c - n.scale(q.y.abs()),
             index,
             contact: Contact::Face,
-        })
+        };
+        Some((p, over))
     };
     if inside {
-        return face();
+        return face(true);
     }
     // The nearest point of the nearest edge segment (its ends are the vertices).
     let mut near: Option<(S, Vec3<S>, Contact)> = None;
@@ -176,16 +188,17 @@ pub(crate) fn overlap<S: Scalar>(
         Contact::Face => true,
     };
     if !active {
-        return face();
+        return face(false);
     }
     let normal = unit(t.world_direction(q - p)).unwrap_or(t.normal());
-    Some(Penetration {
+    let p = Penetration {
         normal,
         depth: r - d,
         point: c - normal.scale(d),
         index,
         contact,
-    })
+    };
+    Some((p, false))
 }
 
 /// Every triangle of a mesh's parts with its input index: a linear scan, for parts whose tree

@@ -304,31 +304,6 @@ fn pressing_into_a_wide_corner_stays_grounded<S: Tolerance>() {
     }
 }
 
-/// Two slopes each `steep` degrees from level meeting in a trough along z, the trough rising
-/// at `rise` degrees: slopes 40 long up from the trough, 40 along it, fronts inside.
-fn valley<S: Scalar>(steep: f64, rise: f64) -> Scene<S, 8> {
-    let (s, c) = steep.to_radians().sin_cos();
-    let (sr, cr) = rise.to_radians().sin_cos();
-    // Tilt about x so that +z rises by `rise`.
-    let tilt = |p: [f64; 3]| v::<S>([p[0], p[1] * cr + p[2] * sr, p[2] * cr - p[1] * sr]);
-    let mut level = Scene::new();
-    for side in [-1.0, 1.0] {
-        let up = [side * c * 40.0, s * 40.0, 0.0];
-        let (o, far) = ([0.0, 0.0, -20.0], [0.0, 0.0, 20.0]);
-        let (oa, ob) = (common::add(o, up), far);
-        let oab = common::add(up, far);
-        // Front normal `(b - o) × (a - o)` for the left slope, the other way for the right.
-        let (a, b) = if side < 0.0 { (oa, ob) } else { (ob, oa) };
-        level
-            .push(Triangle::new(tilt(o), tilt(a), tilt(oab)))
-            .unwrap();
-        level
-            .push(Triangle::new(tilt(o), tilt(oab), tilt(b)))
-            .unwrap();
-    }
-    level
-}
-
 /// The character loop resting at the bottom of a level valley whose slopes are each too steep
 /// to stand on (60° and 80°): the valley holds it, so it is grounded on every frame once it has
 /// landed, in every scalar. It was grounded only on frames where rounding made it touch both
@@ -342,7 +317,7 @@ fn resting_in_a_steep_valley_is_grounded<S: Tolerance>() {
     );
     let walkable = S::from_f64(std::f64::consts::FRAC_1_SQRT_2);
     for (steep, rise, holds) in [(60.0, 0.0, true), (80.0, 0.0, true), (60.0, 60.0, false)] {
-        let level = valley::<S>(steep, rise);
+        let level = common::valley::<S>(steep, rise);
         let (mut p, mut vel) = (v::<S>([0.3, 3.0, 0.0]), v::<S>([0.0; 3]));
         let mut grounded_frames = 0;
         for frame in 0..240 {

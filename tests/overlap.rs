@@ -255,6 +255,9 @@ macro_rules! per_scalar {
         #[test] fn push_out_of_a_pit_of_three_steep_faces() {
             super::push_out_of_a_pit_of_three_steep_faces::<$t>()
         }
+        #[test] fn push_out_of_a_stair_nosing_is_short() {
+            super::push_out_of_a_stair_nosing_is_short::<$t>()
+        }
         #[test] fn wrong_winding_is_found_from_a_point_above() {
             super::wrong_winding_is_found_from_a_point_above::<$t>()
         }
@@ -536,4 +539,50 @@ fn push_out_of_a_pit_of_three_steep_faces<S: Tolerance>() {
             );
         }
     }
+}
+
+/// Overlapping a stair's nosing by 0.11 from above and in front: pushed up out of it, about
+/// 0.13, not along a riser's plane as well. Beside the riser, next to the inactive diagonal of
+/// its quad, the riser's whole plane stood in for its nosing, and the push met that too
+/// (0.41 long, 0.39 of it back along -x).
+fn push_out_of_a_stair_nosing_is_short<S: Tolerance>() {
+    let mut scene: Scene<S, 16> = Scene::new();
+    let (w, rise) = (0.4, 0.25);
+    quad(
+        &mut scene,
+        [
+            [-5.0, 0.0, -5.0],
+            [-5.0, 0.0, 5.0],
+            [0.0, 0.0, 5.0],
+            [0.0, 0.0, -5.0],
+        ],
+    );
+    for k in 0..2 {
+        let (x, y) = (w * f64::from(k), rise * f64::from(k));
+        let (x1, y1) = (x + w, y + rise);
+        quad(
+            &mut scene,
+            [[x, y, -5.0], [x, y, 5.0], [x, y1, 5.0], [x, y1, -5.0]],
+        );
+        quad(
+            &mut scene,
+            [[x, y1, -5.0], [x, y1, 5.0], [x1, y1, 5.0], [x1, y1, -5.0]],
+        );
+    }
+    let r = S::from_f64(0.499);
+    let c = v::<S>([-0.1113, 0.6238, 0.3132]);
+    let before = penetration(&scene, c, r)
+        .unwrap()
+        .map_or(0.0, |p| p.depth.to_f64());
+    assert!(before > 0.1, "{}: starts {before} deep", S::NAME);
+    let out = move_and_slide(&scene, c, v([0.0, -9.81 / 3600.0, 0.0]), r).unwrap();
+    let pushed = back(out.pushed_out);
+    let len = common::norm(pushed);
+    assert!(
+        len < 0.2 && pushed[0].abs() < 0.05,
+        "{}: pushed {pushed:?}",
+        S::NAME
+    );
+    let left = penetration(&scene, out.position, r).unwrap();
+    assert_eq!(left, None, "{}: at {:?}", S::NAME, out.position);
 }

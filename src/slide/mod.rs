@@ -46,6 +46,9 @@ pub struct Slide<S> {
     pub contacts: [Option<SlideContact<S>>; MAX_SLIDES],
 }
 
+/// A floor contact and the normal of the floor it stands for (see [`Slide::floor_normal`]).
+type Ground<'a, S> = (&'a SlideContact<S>, Vec3<S>);
+
 /// A contact met by [`move_and_slide`], with where and when it happened.
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
@@ -117,6 +120,24 @@ impl<S: Scalar> Slide<S> {
     /// `±`[`Scalar::LIMIT`] or `min_cos` outside `[-1, 1]`; [`Error::ZeroVector`] for an `up`
     /// of zero (in the scalar).
     pub fn floor(&self, up: Vec3<S>, min_cos: S) -> Result<Option<&SlideContact<S>>, Error> {
+        Ok(self.ground(up, min_cos)?.map(|(c, _)| c))
+    }
+
+    /// The normal of the floor [`floor`](Self::floor) finds: that contact's normal, or, where
+    /// a valley holds the ball, the direction between its two slopes' normals nearest `up`
+    /// (level valley: `up` itself). What a character presses into and walks along (README,
+    /// the walking recipe): pressed along one steep slope's normal, a ball resting in a valley
+    /// touched only that slope and lost the floor every other frame. A ball walked across the
+    /// valley into one slope still climbs it a little (the slide has no notion of a slope too
+    /// steep to climb) and can lose the floor for a frame before it falls back.
+    ///
+    /// Errors: as [`floor`](Self::floor).
+    pub fn floor_normal(&self, up: Vec3<S>, min_cos: S) -> Result<Option<Vec3<S>>, Error> {
+        Ok(self.ground(up, min_cos)?.map(|(_, n)| n))
+    }
+
+    /// [`floor`](Self::floor) with its normal.
+    fn ground(&self, up: Vec3<S>, min_cos: S) -> Result<Option<Ground<'_, S>>, Error> {
         let up = check::point(up, S::LIMIT)?;
         let min_cos = check::within(min_cos, -S::ONE, S::ONE)?;
         let up = unit(up).ok_or(Error::ZeroVector)?;
@@ -126,12 +147,19 @@ impl<S: Scalar> Slide<S> {
                 .take(j + 1)
                 .flat_map(|e| e.hit.planes.into_iter().flatten());
             let mine = || c.hit.planes.into_iter().flatten();
-            earlier.any(|b| mine().any(|a| holds(a, b, up, min_cos)))
+            earlier.find_map(|b| mine().find_map(|a| holds(a, b, up, min_cos)))
         };
         Ok(contacts()
             .enumerate()
-            .filter(|&(j, c)| S::dot(c.hit.normal, up) >= min_cos || held(j, c))
-            .map(|(_, c)| c)
+            .filter_map(|(j, c)| {
+                let walkable = S::dot(c.hit.normal, up) >= min_cos;
+                let n = if walkable {
+                    Some(c.hit.normal)
+                } else {
+                    held(j, c)
+                };
+                n.map(|n| (c, n))
+            })
             .last())
     }
 }

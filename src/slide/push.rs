@@ -7,13 +7,14 @@
 //! the push along its normal; if that fails a face by more than rounding, the push meeting
 //! both exactly (in a valley narrower than a right angle, along its bisector); if that fails a
 //! third (a pit), the push meeting all three, where each normal has a positive weight in it.
-//! Edges and vertices take no part: for them the same demand is only a bound (their distance
-//! grows at least that fast), and meeting it can send the ball far along a slot between two
-//! edges that the push along the deepest normal clears; the sweep of the push still stops
-//! short of them. Pushes are at most `2 (r + skin)` long, their direction kept.
+//! Only faces the centre lies over take part: for an edge or vertex the same demand is only a
+//! bound (its distance grows at least that fast), and meeting it can send the ball far along
+//! a slot between two edges that the push along the deepest normal clears; beside a face, next
+//! to an inactive edge, its whole plane would stand in for the edge (a stair's riser for its
+//! nosing). The sweep of the push still stops short of them. Pushes are at most `2 (r + skin)` long, their direction kept.
 
-use crate::penetration::overlap;
-use crate::{Contact, Geometry, Scalar, Vec3};
+use crate::penetration::nearest;
+use crate::{Geometry, Scalar, Vec3};
 
 use super::rules::cross_unit;
 
@@ -111,9 +112,10 @@ fn most_failed<S: Scalar, G: Geometry<S> + ?Sized>(
     let reach = Vec3::new(grown, grown, grown);
     let mut worst: Option<(S, usize, Vec3<S>, S)> = None;
     scene.visit(c - reach, c + reach, &mut |index, t| {
-        // Faces only: an edge's or vertex's demand is a bound, and a push that meets it
-        // exactly can run far along a slot between two edges the deepest's push would clear.
-        let Some(p) = overlap(t, c, grown, index).filter(|p| p.contact == Contact::Face) else {
+        // Over a face only: an edge's or vertex's demand is a bound, and a push that meets it
+        // exactly can run far along a slot between two edges the deepest's push would clear;
+        // next to an inactive edge, the face's whole plane would stand in for the edge.
+        let Some((p, true)) = nearest(t, c, grown, index) else {
             return;
         };
         // `p.depth` is `grown - distance`.

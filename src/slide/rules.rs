@@ -103,20 +103,23 @@ pub(super) fn cross_unit<S: Scalar>(a: Vec3<S>, b: Vec3<S>) -> Vec3<S> {
     )
 }
 
-/// Whether the crease of the planes with unit normals `a` and `b` holds a ball up and is
-/// walkable: `up`'s projection onto their span, `p = α a + β b`, has `α, β >= 0` (the normals
-/// lie either side of `up`) and `|p| >= min_cos` (`|p|` is the cosine of the steepest line
-/// between the normals). Solved over the Gram determinant `1 - (a · b)²` without dividing;
-/// normals within about 14° of parallel or opposed hold nothing of their own.
-pub(super) fn holds<S: Scalar>(a: Vec3<S>, b: Vec3<S>, up: Vec3<S>, min_cos: S) -> bool {
+/// The support of the crease of the planes with unit normals `a` and `b`, if it holds a ball up
+/// and is walkable: `up`'s projection onto their span, `p = α a + β b`, has `α, β >= 0` (the
+/// normals lie either side of `up`) and `|p| >= min_cos` (`|p|` is the cosine of the steepest
+/// line between the normals). Solved over the Gram determinant `1 - (a · b)²` without dividing;
+/// the support returned is `p` as a unit vector, the crease's own "floor normal". Normals within
+/// about 14° of parallel or opposed hold nothing of their own.
+pub(super) fn holds<S: Scalar>(a: Vec3<S>, b: Vec3<S>, up: Vec3<S>, min_cos: S) -> Option<Vec3<S>> {
     let k = S::dot(a, b);
     let det = (S::ONE - k).mul(S::ONE + k);
     let (au, bu) = (S::dot(a, up), S::dot(b, up));
     let (alpha, beta) = (au - k.mul(bu), bu - k.mul(au));
     // `|p|² det = au α + bu β`.
     let reach = au.mul(alpha) + bu.mul(beta);
-    det >= S::div_pow2(S::ONE, 4)
+    let held = det >= S::div_pow2(S::ONE, 4)
         && alpha >= S::ZERO
         && beta >= S::ZERO
-        && (min_cos <= S::ZERO || reach >= min_cos.mul(min_cos).mul(det))
+        && (min_cos <= S::ZERO || reach >= min_cos.mul(min_cos).mul(det));
+    // `p det = α a + β b`, of the same direction.
+    held.then(|| unit(a.scale(alpha) + b.scale(beta))).flatten()
 }

@@ -370,3 +370,28 @@ pub fn slope<S: Scalar>(n: [f64; 3]) -> Scene<S, 8> {
     s.push(Triangle::new(v(p0), v(p2), v(p3))).unwrap();
     s
 }
+
+/// Two slopes each `steep` degrees from level meeting in a trough along z, the trough rising
+/// at `rise` degrees: slopes 40 long up from the trough, 40 along it, fronts inside.
+pub fn valley<S: Scalar>(steep: f64, rise: f64) -> Scene<S, 8> {
+    let (s, c) = steep.to_radians().sin_cos();
+    let (sr, cr) = rise.to_radians().sin_cos();
+    // Tilt about x so that +z rises by `rise`.
+    let tilt = |p: [f64; 3]| v::<S>([p[0], p[1] * cr + p[2] * sr, p[2] * cr - p[1] * sr]);
+    let mut level = Scene::new();
+    for side in [-1.0, 1.0] {
+        let up = [side * c * 40.0, s * 40.0, 0.0];
+        let (o, far) = ([0.0, 0.0, -20.0], [0.0, 0.0, 20.0]);
+        let (oa, ob) = (add(o, up), far);
+        let oab = add(up, far);
+        // Front normal `(b - o) × (a - o)` for the left slope, the other way for the right.
+        let (a, b) = if side < 0.0 { (oa, ob) } else { (ob, oa) };
+        level
+            .push(Triangle::new(tilt(o), tilt(a), tilt(oab)))
+            .unwrap();
+        level
+            .push(Triangle::new(tilt(o), tilt(oab), tilt(b)))
+            .unwrap();
+    }
+    level
+}
