@@ -271,30 +271,28 @@ pub fn min_radius<S: Scalar>(extent: S) -> S {
 ///
 /// A ball that starts overlapping geometry by more than the skin is first pushed out
 /// ([`Slide::pushed_out`]): along the deepest overlap's normal
-/// ([`penetration`](crate::penetration::penetration)) to a skin from that triangle, or, where
-/// that would leave it in (or push it into) other faces, the shortest push that clears up to
-/// three (out of a narrow valley along its bisector, out of a pit). At most [`MAX_SLIDES`] pushes (each
-/// may uncover the next), each at most `2 (radius + skin)` and swept like a motion, so that it
-/// stops a skin short of other geometry rather than pushing into it. A ball spawned 0.2 inside
-/// a floor, overlapping both slopes of a 20° valley or the three faces of a steep pit, comes
-/// out in the one call. Overlaps are
-/// looked for only where the motion's first sweep meets something at once (alpha 0), so a call
-/// that starts clear costs no more than before; a ball that starts overlapping but moves away
-/// is left to leave. Shallower overlaps (rounding) are left to the motion: a
-/// contact met at once lifts the ball by a skin.
+/// ([`penetration`](crate::penetration::penetration)) to a skin from that triangle, or, where that
+/// would leave it in (or push it into) other faces, the shortest push that clears up to three (out
+/// of a narrow valley along its bisector, out of a pit). At most [`MAX_SLIDES`] pushes (each may
+/// uncover the next), each at most `2 (radius + skin)` and swept like a motion, so that it stops a
+/// skin short of other geometry rather than pushing into it. A ball spawned 0.2 inside a floor,
+/// overlapping both slopes of a 20° valley or the three faces of a steep pit, comes out in the one
+/// call. Overlaps are looked for only where the motion's first sweep meets something at once (alpha
+/// 0), so a call that starts clear costs no more than before; a ball that starts overlapping but
+/// moves away is left to leave. Shallower overlaps (rounding) are left to the motion: a contact met
+/// at once lifts the ball by a skin.
 ///
 /// Guarantees, in every scalar: the motion's length never grows beyond the skins, so a slide
 /// cannot gain speed; it never runs against `displacement` apart from the skins; a ball that
 /// starts overlapping geometry is not carried further in.
 ///
-/// Errors, checked before any arithmetic so fixed-point cannot overflow:
-/// [`Error::NaN`] or [`Error::OutOfRange`] when `position`, `displacement`, the target or
-/// `radius` is outside `±`[`Scalar::LIMIT`], [`Error::NegativeRadius`], and
-/// [`Error::RadiusTooSmall`] below [`min_radius`] at the larger of the start's and target's
-/// coordinates. A slide whose sweep would end outside `±LIMIT` is refused with
-/// [`Error::OutOfRange`] as well (a push out of an overlap that would is not made, and the
-/// target after the push is checked again). The position returned stands a
-/// skin off what it touched, so near the edge of the range it can lie up to a skin beyond
+/// Errors, checked before any arithmetic so fixed-point cannot overflow: [`Error::NaN`] or
+/// [`Error::OutOfRange`] when `position`, `displacement`, the target or `radius` is outside
+/// `±`[`Scalar::LIMIT`], [`Error::NegativeRadius`], and [`Error::RadiusTooSmall`] below
+/// [`min_radius`] at the larger of the start's and target's coordinates. A slide whose sweep would
+/// end outside `±LIMIT` is refused with [`Error::OutOfRange`] as well (a push out of an overlap
+/// that would is not made, and the target after the push is checked again). The position returned
+/// stands a skin off what it touched, so near the edge of the range it can lie up to a skin beyond
 /// `±LIMIT`, and the next call refuses it: keep the world a skin inside the range.
 ///
 /// ```
