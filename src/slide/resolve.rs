@@ -84,12 +84,12 @@ pub(super) fn settle<S: Scalar>(
 ) -> Vec3<S> {
     let (alpha, lift) = stand_off(hit, rest, skin, rounding);
     // From the contact's own position (a few steps of `S` off, where alpha's rounding times
-    // the path would be more), backed off along the path; or not moved at all.
+    // the path would be more), backed off along the path; or not moved along it at all.
     if alpha == hit.alpha {
         hit.position + lift
     } else if alpha > S::ZERO {
         hit.position - rest.scale(hit.alpha - alpha)
     } else {
-        from
+        from + lift
     }
 }

@@ -15,8 +15,9 @@ pub(super) type Planes<S> = Vec<Vec3<S>, { 2 * PLANES }>;
 /// into a corner settles at a skin from both walls instead of being levered from one to the
 /// other. What is left of the travel after backing off, if no more than `rounding` (the
 /// rounding of a position), is rounding too: a resting ball does not move at all, so float
-/// positions do not walk by an ulp a call. One met at once (already touching or overlapping) is
-/// lifted by a skin instead.
+/// positions do not walk by an ulp a call. One that started within a skin of the plane stays
+/// where it is, lifted back to a skin if its motion only grazes the plane. One met at once
+/// (already touching or overlapping) is lifted by a skin instead.
 pub(super) fn stand_off<S: Scalar>(
     hit: &SceneHit<S>,
     rest: Vec3<S>,
@@ -24,15 +25,25 @@ pub(super) fn stand_off<S: Scalar>(
     rounding: S,
 ) -> (S, Vec3<S>) {
     let into = S::dot(rest, hit.normal);
+    let zero = Vec3::ZERO;
     if hit.alpha > S::ZERO && into < S::ZERO {
         let back = S::div(skin, -into);
-        let alpha = if back < hit.alpha {
-            hit.alpha - back
-        } else {
-            S::ZERO
-        };
+        if back >= hit.alpha {
+            // Started within a skin, it cannot back off along its path: it stays. A motion
+            // that grazes the plane (all of it would come less than half a skin closer) is
+            // lifted back to a skin, from where all of it clears the plane: left where it is,
+            // rounding that runs its slide into the plane would stop it at once, call after
+            // call.
+            let grazes = -into < S::div(skin, S::ONE + S::ONE);
+            let lift = if grazes {
+                hit.normal.scale(skin - hit.alpha.mul(-into))
+            } else {
+                zero
+            };
+            return (S::ZERO, lift);
+        }
+        let alpha = hit.alpha - back;
         let settled = magnitude(rest).mul(alpha) <= rounding;
-        let zero = Vec3::ZERO;
         return (if settled { S::ZERO } else { alpha }, zero);
     }
     (hit.alpha, hit.normal.scale(skin))
