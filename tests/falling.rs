@@ -1,21 +1,22 @@
-//! Falling with the plain character loop (gravity, `move_and_slide`, `Slide::clip` of the
+//! Falling with the plain character loop (gravity, `Slider::slide`, `Slider::clip` of the
 //! velocity) down a slope too steep to stand on, onto the floor below. Every property in every
 //! scalar; expected values worked by hand.
 
 mod common;
 
-use ballcast::{Triangle, Vec3, move_and_slide};
+use ballcast::{Triangle, Vec3, slide::Slider};
 use common::{Tolerance, v};
 use fixed::types::{I16F16, I32F32};
 
 /// A ball (r = 0.5) dropped 0.02 from a wall leaning at 80°–89.5° (front normal
 /// `(-sin a, cos a, 0)`, through the origin) above a floor at y = -5: it meets the wall on the
 /// way down, slides down it and lands on the floor (centre at y = -4.5 less a skin) within
-/// 3 s. In `I16F16`, at 88° it hovered at y = -1.50 for good: it came to rest
+/// 3 s, held back by slopes steeper than 45° ([`Slider::with_max_slope`]) or not. In `I16F16`, at 88° it hovered at y = -1.50 for good: it came to rest
 /// closer to the wall than a skin, and its slide down the wall, which rounding made run into the
 /// wall by less than a step, was stopped at once on every later call.
 fn sliding_down_a_near_vertical_wall_reaches_the_floor<S: Tolerance>() {
     let (dt, r) = (S::from_f64(1.0 / 60.0), S::from_f64(0.5));
+    let walkable = S::from_f64(std::f64::consts::FRAC_1_SQRT_2);
     for angle in [80.0, 85.0, 87.0, 88.0, 88.5, 89.0, 89.5] {
         let a = f64::to_radians(angle);
         let mut level = common::slope::<S>([-a.sin(), a.cos(), 0.0]);
@@ -25,20 +26,24 @@ fn sliding_down_a_near_vertical_wall_reaches_the_floor<S: Tolerance>() {
         level.push(Triangle::new(p, s, t)).unwrap();
         // At y = 3 the wall is at x = 3 cot a: start 0.52 from the wall's plane there.
         let x = 3.0 * a.cos() / a.sin() - 0.52 / a.sin();
-        let (mut pos, mut vel) = (v::<S>([x, 3.0, 0.0]), Vec3::ZERO);
-        let landed = (0..300).position(|_| {
-            vel += v::<S>([0.0, -9.81, 0.0]) * dt;
-            let out = move_and_slide(&level, pos, vel * dt, r).unwrap();
-            (pos, vel) = (out.position, out.clip(vel).unwrap());
-            (pos.y.to_f64() + 4.5).abs() < 0.01
-        });
-        // Free fall alone takes 1.24 s (74 frames) from y = 3 to y = -4.5.
-        assert!(
-            landed.is_some_and(|frame| frame < 180),
-            "{}: {angle}° wall, landed {landed:?}, at {:?}",
-            S::NAME,
-            common::back(pos)
-        );
+        let free = Slider::new(r).unwrap();
+        let held = free.with_max_slope(v([0.0, 1.0, 0.0]), walkable).unwrap();
+        for ball in [free, held] {
+            let (mut pos, mut vel) = (v::<S>([x, 3.0, 0.0]), Vec3::ZERO);
+            let landed = (0..300).position(|_| {
+                vel += v::<S>([0.0, -9.81, 0.0]) * dt;
+                let out = ball.slide(&level, pos, vel * dt).unwrap();
+                (pos, vel) = (out.position, ball.clip(&out, vel).unwrap());
+                (pos.y.to_f64() + 4.5).abs() < 0.01
+            });
+            // Free fall alone takes 1.24 s (74 frames) from y = 3 to y = -4.5.
+            assert!(
+                landed.is_some_and(|frame| frame < 180),
+                "{}: {angle}° wall, {ball:?}: landed {landed:?}, at {:?}",
+                S::NAME,
+                common::back(pos)
+            );
+        }
     }
 }
 

@@ -120,10 +120,15 @@ fn clip_refuses_any_bad_velocity<S: Scalar>() {
     let s = scene::<S>();
     let out = move_and_slide(&s, v([0.0, 1.0, 0.0]), v([0.0, -1.0, 0.0]), S::ONE).unwrap();
     holds(point::<S>(), true, |u| (u.1, out.clip(v(u.0)).is_err()));
+    let ball = Slider::new(S::ONE).unwrap();
+    let ball = ball.with_max_slope(v([0.0, 1.0, 0.0]), S::ZERO).unwrap();
+    holds(point::<S>(), true, |u| {
+        (u.1, ball.clip(&out, v(u.0)).is_err())
+    });
 }
 
-/// `floor` takes a direction `up` (components within the safe range, not all zero in the
-/// scalar) and a cosine within `[-1, 1]`.
+/// `floor` and `Slider::with_max_slope` take a direction `up` (components within the safe
+/// range, not all zero in the scalar) and a cosine within `[-1, 1]`.
 fn floor_refuses_any_bad_argument<S: Scalar>() {
     let s = scene::<S>();
     let out = move_and_slide(&s, v([0.0, 1.0, 0.0]), v([0.0, -1.0, 0.0]), S::ONE).unwrap();
@@ -143,10 +148,16 @@ fn floor_refuses_any_bad_argument<S: Scalar>() {
         1 => Just((-3.0, true)),
     ];
     let args = (component.clone(), component.clone(), component, cosine);
+    let ball = Slider::new(S::ONE).unwrap();
     holds(args, true, |(x, y, z, c)| {
-        let got = out.floor(v([x.0, y.0, z.0]), S::from_f64(c.0));
+        let (up, min_cos) = (v([x.0, y.0, z.0]), S::from_f64(c.0));
         let zero = [x.0, y.0, z.0].iter().all(|&a| S::from_f64(a) == S::ZERO);
-        (x.1 || y.1 || z.1 || c.1 || zero, got.is_err())
+        let floor = out.floor(up, min_cos).is_err();
+        // The slope limit takes the same arguments, with the same contract.
+        let limit = ball.with_max_slope(up, min_cos).is_err();
+        let bad = x.1 || y.1 || z.1 || c.1 || zero;
+        // Refused by both if bad; by either if good (then `holds` fails).
+        (bad, if bad { floor && limit } else { floor || limit })
     });
 }
 

@@ -18,12 +18,14 @@
 mod push;
 mod resolve;
 mod rules;
+mod slider;
 
 use crate::contact::unit;
 use crate::{Error, Geometry, Scalar, SceneHit, Sweep, Vec3, check};
 use heapless::Vec;
 use resolve::{resolve, settle};
 use rules::{Planes, add_planes, constrain, holds, magnitude};
+pub use slider::Slider;
 
 /// At most this many sweeps per call: each contact costs one, and a ball pressed into a corner
 /// of three planes has nowhere left to go after three.
@@ -72,16 +74,27 @@ pub struct SlideContact<S> {
 impl<S: Scalar> Slide<S> {
     /// Constrains `velocity` by every plane the move touched, with the same rules as the move
     /// itself: what a caller does to its velocity afterwards. Never lengthens it by more than
-    /// rounding, and never turns it against itself.
+    /// rounding, and never turns it against itself. A ball held back by steep slopes clips with
+    /// [`Slider::clip`].
     ///
     /// Errors: [`Error::NaN`] or [`Error::OutOfRange`] for a velocity component beyond
     /// `±`[`Scalar::LIMIT`].
     pub fn clip(&self, velocity: Vec3<S>) -> Result<Vec3<S>, Error> {
+        self.clip_within(velocity, None)
+    }
+
+    /// [`clip`](Self::clip), also held back by the vertical walls of slopes steeper than a limit
+    /// (see [`Slider::with_max_slope`]).
+    pub(super) fn clip_within(
+        &self,
+        velocity: Vec3<S>,
+        limit: Option<(Vec3<S>, S)>,
+    ) -> Result<Vec3<S>, Error> {
         let v = check::point(velocity, S::LIMIT)?;
         let mut planes: Planes<S> = Vec::new();
         let zero = Vec3::ZERO;
         for c in self.contacts.iter().flatten() {
-            if !add_planes(&mut planes, &c.hit) {
+            if !add_planes(&mut planes, &c.hit, limit) {
                 return Ok(zero);
             }
         }
@@ -128,8 +141,8 @@ impl<S: Scalar> Slide<S> {
     /// (level valley: `up` itself). What a character presses into and walks along (README,
     /// the walking recipe): pressed along one steep slope's normal, a ball resting in a valley
     /// touched only that slope and lost the floor every other frame. A ball walked across the
-    /// valley into one slope still climbs it a little (the slide has no notion of a slope too
-    /// steep to climb) and can lose the floor for a frame before it falls back.
+    /// valley into one slope climbs it a little and can lose the floor for a few frames, unless
+    /// it is held back by slopes too steep to stand on ([`Slider::with_max_slope`]).
     ///
     /// Errors: as [`floor`](Self::floor).
     pub fn floor_normal(&self, up: Vec3<S>, min_cos: S) -> Result<Option<Vec3<S>>, Error> {
@@ -161,76 +174,6 @@ impl<S: Scalar> Slide<S> {
                 n.map(|n| (c, n))
             })
             .last())
-    }
-}
-
-/// A ball's settings for [`Slider::slide`]: its radius and, optionally, its own skin.
-///
-/// ```
-/// use ballcast::{Scene, Triangle, Vec3, slide::Slider};
-/// let v = Vec3::new;
-/// let mut s: Scene<f32, 2> = Scene::new();
-/// s.push(Triangle::new(v(-9.0, 0.0, -9.0), v(-9.0, 0.0, 9.0), v(9.0, 0.0, 0.0)))?;
-/// let ball = Slider::new(0.5)?.with_skin(0.01)?;
-/// let out = ball.slide(&s, v(0.0, 1.0, 0.0), v(0.0, -1.0, 0.0))?;
-/// assert!((out.position.y - 0.51).abs() < 1e-6);
-/// # Ok::<(), ballcast::Error>(())
-/// ```
-#[cfg_attr(feature = "defmt", derive(defmt::Format))]
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Slider<S> {
-    radius: S,
-    skin: Option<S>,
-}
-
-impl<S: Scalar> Slider<S> {
-    /// A ball of `radius` with the default [`skin`].
-    ///
-    /// Errors: [`Error::NaN`], [`Error::OutOfRange`], [`Error::NegativeRadius`].
-    pub fn new(radius: S) -> Result<Self, Error> {
-        Ok(Self {
-            radius: check::radius(radius)?,
-            skin: None,
-        })
-    }
-
-    /// The same ball keeping a gap of `skin` from what it touches, for a ground probe sized to
-    /// match, say. It is never less than the rounding term of the default [`skin`] (twice the
-    /// rounding of a height at the ball's coordinates), which keeps the response exact.
-    ///
-    /// Errors: [`Error::NaN`], or [`Error::OutOfRange`] for a skin below zero or above
-    /// the radius.
-    pub fn with_skin(self, skin: S) -> Result<Self, Error> {
-        let skin = check::within(skin, S::ZERO, self.radius)?;
-        Ok(Self {
-            skin: Some(skin),
-            ..self
-        })
-    }
-
-    /// The radius.
-    pub fn radius(&self) -> S {
-        self.radius
-    }
-
-    /// The skin used for centres within `±extent`.
-    pub fn skin(&self, extent: S) -> S {
-        let floor = skin(S::ZERO, extent);
-        match self.skin {
-            Some(s) if s > floor => s,
-            Some(_) => floor,
-            None => skin(self.radius, extent),
-        }
-    }
-
-    /// [`move_and_slide`] with this ball.
-    pub fn slide<G: Geometry<S> + ?Sized>(
-        &self,
-        scene: &G,
-        position: Vec3<S>,
-        displacement: Vec3<S>,
-    ) -> Result<Slide<S>, Error> {
-        run(self, scene, position, displacement)
     }
 }
 
@@ -387,7 +330,7 @@ fn run<S: Scalar, G: Geometry<S> + ?Sized>(
         let alpha = rules::stand_off(&hit, rest, skin, rounding).0;
         out.position = settle(&hit, out.position, rest, skin, rounding);
         let left = rest.scale(S::ONE - alpha);
-        rest = if add_planes(&mut planes, &hit) {
+        rest = if add_planes(&mut planes, &hit, ball.max_slope) {
             constrain(left, &planes, displacement)
         } else {
             zero

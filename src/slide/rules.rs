@@ -54,13 +54,36 @@ pub(super) fn magnitude<S: Scalar>(p: Vec3<S>) -> S {
     crate::scalar::largest(p.x.abs(), p.y.abs(), p.z.abs())
 }
 
-/// Adds a contact's planes to those already touched, each distinct plane once; false if one
-/// found no room, in which case the caller must not move on (it cannot respect that plane).
-pub(super) fn add_planes<S: Scalar>(planes: &mut Planes<S>, hit: &SceneHit<S>) -> bool {
-    hit.planes
-        .iter()
-        .flatten()
-        .all(|n| planes.iter().any(|p| same_plane(*p, *n)) || planes.push(*n).is_ok())
+/// Adds a contact's planes to those already touched, each distinct plane once, and, with a
+/// slope limit `(up, min_cos)` (`up` a unit vector), the vertical wall each too-steep plane
+/// also stands for ([`steep_wall`]); false if one found no room, in which case the caller must
+/// not move on (it cannot respect that plane).
+pub(super) fn add_planes<S: Scalar>(
+    planes: &mut Planes<S>,
+    hit: &SceneHit<S>,
+    limit: Option<(Vec3<S>, S)>,
+) -> bool {
+    let normals = || hit.planes.iter().flatten().copied();
+    let walls = limit
+        .into_iter()
+        .flat_map(|limit| normals().filter_map(move |n| steep_wall(n, limit)));
+    normals()
+        .chain(walls)
+        .all(|n| planes.iter().any(|p| same_plane(*p, n)) || planes.push(n).is_ok())
+}
+
+/// The vertical wall behind a slope too steep to stand on: for a unit normal `n` that points
+/// up (`n · up > 0`) but less than `min_cos`, its horizontal part as a unit vector. A motion
+/// kept out of both cannot be carried up the slope by running into it, while a fall onto the
+/// slope, which does not run into the wall, still slides down it (Jolt's `CharacterVirtual`
+/// adds the same second constraint beyond its maximum slope angle).
+pub(super) fn steep_wall<S: Scalar>(n: Vec3<S>, (up, min_cos): (Vec3<S>, S)) -> Option<Vec3<S>> {
+    let d = S::dot(n, up);
+    if d > S::ZERO && d < min_cos {
+        unit(n - up.scale(d))
+    } else {
+        None
+    }
 }
 
 /// `v` constrained by every plane (unit normals): unchanged if it moves into none; else the

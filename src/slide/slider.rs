@@ -1,0 +1,125 @@
+//! A ball's settings: its radius, its skin and the steepest slope it can be carried up.
+
+use super::{Slide, run, skin};
+use crate::contact::unit;
+use crate::{Error, Geometry, Scalar, Vec3, check};
+
+/// A ball's settings for [`Slider::slide`]: its radius and, optionally, its own skin and a
+/// slope limit beyond which slopes hold it back like walls.
+///
+/// ```
+/// use ballcast::{Scene, Triangle, Vec3, slide::Slider};
+/// let v = Vec3::new;
+/// let mut s: Scene<f32, 2> = Scene::new();
+/// s.push(Triangle::new(v(-9.0, 0.0, -9.0), v(-9.0, 0.0, 9.0), v(9.0, 0.0, 0.0)))?;
+/// let ball = Slider::new(0.5)?.with_skin(0.01)?;
+/// let out = ball.slide(&s, v(0.0, 1.0, 0.0), v(0.0, -1.0, 0.0))?;
+/// assert!((out.position.y - 0.51).abs() < 1e-6);
+/// # Ok::<(), ballcast::Error>(())
+/// ```
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Slider<S> {
+    pub(super) radius: S,
+    skin: Option<S>,
+    /// `up` as a unit vector and the cosine of the steepest slope the ball can be carried up.
+    pub(super) max_slope: Option<(Vec3<S>, S)>,
+}
+
+impl<S: Scalar> Slider<S> {
+    /// A ball of `radius` with the default [`skin`] and no slope limit.
+    ///
+    /// Errors: [`Error::NaN`], [`Error::OutOfRange`], [`Error::NegativeRadius`].
+    pub fn new(radius: S) -> Result<Self, Error> {
+        Ok(Self {
+            radius: check::radius(radius)?,
+            skin: None,
+            max_slope: None,
+        })
+    }
+
+    /// The same ball keeping a gap of `skin` from what it touches, for a ground probe sized to
+    /// match, say. It is never less than the rounding term of the default [`skin`] (twice the
+    /// rounding of a height at the ball's coordinates), which keeps the response exact.
+    ///
+    /// Errors: [`Error::NaN`], or [`Error::OutOfRange`] for a skin below zero or above
+    /// the radius.
+    pub fn with_skin(self, skin: S) -> Result<Self, Error> {
+        let skin = check::within(skin, S::ZERO, self.radius)?;
+        Ok(Self {
+            skin: Some(skin),
+            ..self
+        })
+    }
+
+    /// The same ball held back by slopes too steep to stand on: a contact whose normal `n`
+    /// points up (`n · up > 0`, `up` of any length) but is steeper than the limit
+    /// (`n · up < min_cos`, as for [`Slide::floor`]) also constrains the rest of the motion
+    /// like a vertical wall through the contact (normal: `n`'s horizontal part). Walking or
+    /// sliding into such a slope no longer carries the ball up it, while a fall onto it still
+    /// slides down. Jolt's `CharacterVirtual` adds the same second constraint beyond its
+    /// maximum slope angle, and Godot's `CharacterBody3D` calls it not sliding up steep slopes.
+    /// Use [`Slider::clip`] to constrain a velocity the same way.
+    ///
+    /// ```
+    /// use ballcast::{Scene, Triangle, Vec3, slide::Slider};
+    /// let v = Vec3::new;
+    /// let mut s: Scene<f32, 2> = Scene::new();
+    /// // A 60° slope rising towards +x from x = 0.
+    /// let (c, t) = (0.5f32, 3f32.sqrt());
+    /// s.push(Triangle::new(v(0.0, 0.0, -9.0), v(0.0, 0.0, 9.0), v(9.0 * c, 9.0 * t * c, 0.0)))?;
+    /// let (start, walk) = (v(-0.5, 0.5, 0.0), v(1.0, 0.0, 0.0));
+    /// let free = Slider::new(0.5)?.slide(&s, start, walk)?;
+    /// assert!(free.position.y > 0.8); // walked into the slope, carried up it
+    /// let held = Slider::new(0.5)?.with_max_slope(v(0.0, 1.0, 0.0), 0.7071)?;
+    /// let out = held.slide(&s, start, walk)?;
+    /// assert_eq!(out.position.y, 0.5); // stopped against it
+    /// # Ok::<(), ballcast::Error>(())
+    /// ```
+    ///
+    /// Errors: [`Error::NaN`]; [`Error::OutOfRange`] for a component of `up` beyond
+    /// `±`[`Scalar::LIMIT`] or `min_cos` outside `[-1, 1]`; [`Error::ZeroVector`] for an `up`
+    /// of zero (in the scalar).
+    pub fn with_max_slope(self, up: Vec3<S>, min_cos: S) -> Result<Self, Error> {
+        let up = check::point(up, S::LIMIT)?;
+        let min_cos = check::within(min_cos, -S::ONE, S::ONE)?;
+        let up = unit(up).ok_or(Error::ZeroVector)?;
+        Ok(Self {
+            max_slope: Some((up, min_cos)),
+            ..self
+        })
+    }
+
+    /// The radius.
+    pub fn radius(&self) -> S {
+        self.radius
+    }
+
+    /// The skin used for centres within `±extent`.
+    pub fn skin(&self, extent: S) -> S {
+        let floor = skin(S::ZERO, extent);
+        match self.skin {
+            Some(s) if s > floor => s,
+            Some(_) => floor,
+            None => skin(self.radius, extent),
+        }
+    }
+
+    /// [`move_and_slide`](super::move_and_slide) with this ball.
+    pub fn slide<G: Geometry<S> + ?Sized>(
+        &self,
+        scene: &G,
+        position: Vec3<S>,
+        displacement: Vec3<S>,
+    ) -> Result<Slide<S>, Error> {
+        run(self, scene, position, displacement)
+    }
+
+    /// [`Slide::clip`] of `velocity` by what `slide` (a move of this ball) touched, held back
+    /// by the steep slopes' walls as the move was (see [`with_max_slope`](Self::with_max_slope)).
+    ///
+    /// Errors: as [`Slide::clip`].
+    pub fn clip(&self, slide: &Slide<S>, velocity: Vec3<S>) -> Result<Vec3<S>, Error> {
+        slide.clip_within(velocity, self.max_slope)
+    }
+}
