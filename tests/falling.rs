@@ -1,10 +1,10 @@
 //! Falling with the plain character loop (gravity, `Slider::slide`, `Slider::clip` of the
-//! velocity) down a slope too steep to stand on, onto the floor below. Every property in every
-//! scalar; expected values worked by hand.
+//! velocity) down a slope too steep to stand on, onto the floor below or into a narrow valley
+//! that holds the ball. Every property in every scalar; expected values worked by hand.
 
 mod common;
 
-use ballcast::{Triangle, Vec3, slide::Slider};
+use ballcast::{Triangle, Vec3, move_and_slide, slide::Slider};
 use common::{Tolerance, v};
 use fixed::types::{I16F16, I32F32};
 
@@ -47,12 +47,53 @@ fn sliding_down_a_near_vertical_wall_reaches_the_floor<S: Tolerance>() {
     }
 }
 
+/// Dropped into a level valley of 82°–89° slopes, the ball wedges where the slopes are a ball
+/// apart (centre at `r / cos(slope)`), and the valley holds it: it is grounded, in every scalar.
+/// Whether it was depended on rounding: the valley's crease was judged only for slopes up to
+/// about 83° (normals at least 14° from opposed), steeper ones only where rounding merged the
+/// two contacts into one level normal, so
+/// from 84° to 88° `f32` and `f64` were grounded on none of the frames and the fixed-point
+/// scalars on all. (Resting a skin off both slopes, the ball can drop a frame's fall without
+/// touching either, as its gap closes by only `cos(slope)` of the fall: a few frames may pass
+/// ungrounded.)
+fn wedged_in_a_narrow_valley_is_grounded<S: Tolerance>() {
+    let (dt, r, up) = (
+        S::from_f64(1.0 / 60.0),
+        S::from_f64(0.5),
+        v::<S>([0.0, 1.0, 0.0]),
+    );
+    let walkable = S::from_f64(std::f64::consts::FRAC_1_SQRT_2);
+    for steep in [82.0, 84.0, 85.0, 86.0, 87.0, 88.0, 89.0] {
+        let level = common::valley::<S>(steep, 0.0);
+        let wedged = 0.5 / f64::to_radians(steep).cos();
+        let (mut pos, mut vel) = (v::<S>([0.0, wedged + 2.0, 0.0]), Vec3::ZERO);
+        let mut grounded = 0;
+        for frame in 0..240 {
+            vel += v::<S>([0.0, -9.81, 0.0]) * dt;
+            let out = move_and_slide(&level, pos, vel * dt, r).unwrap();
+            (pos, vel) = (out.position, out.clip(vel).unwrap());
+            let floor = out.floor(up, walkable).unwrap();
+            grounded += usize::from(frame >= 120 && floor.is_some());
+        }
+        let y = pos.y.to_f64();
+        assert!(
+            grounded >= 115 && (y - wedged).abs() < 0.01,
+            "{}: {steep}° valley: grounded on {grounded} of 120 frames, at y {y} (wedged {wedged})",
+            S::NAME
+        );
+    }
+}
+
 macro_rules! per_scalar {
     ($($m:ident: $t:ty),*) => {$(mod $m {
         use super::*;
         #[test]
         fn sliding_down_a_near_vertical_wall() {
             sliding_down_a_near_vertical_wall_reaches_the_floor::<$t>();
+        }
+        #[test]
+        fn wedged_in_a_narrow_valley() {
+            wedged_in_a_narrow_valley_is_grounded::<$t>();
         }
     })*};
 }

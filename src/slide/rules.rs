@@ -16,8 +16,9 @@ pub(super) type Planes<S> = Vec<Vec3<S>, { 2 * PLANES }>;
 /// other. What is left of the travel after backing off, if no more than `rounding` (the
 /// rounding of a position), is rounding too: a resting ball does not move at all, so float
 /// positions do not walk by an ulp a call. One that started within a skin of the plane stays
-/// where it is, lifted back to a skin if its motion only grazes the plane. One met at once
-/// (already touching or overlapping) is lifted by a skin instead.
+/// where it is (lifted by its motion's approach, a few steps, if the motion runs along the
+/// plane as rounded). One met at once (already touching or overlapping) is lifted by a skin
+/// instead.
 pub(super) fn stand_off<S: Scalar>(
     hit: &SceneHit<S>,
     rest: Vec3<S>,
@@ -27,20 +28,17 @@ pub(super) fn stand_off<S: Scalar>(
     let into = S::dot(rest, hit.normal);
     let zero = Vec3::ZERO;
     if hit.alpha > S::ZERO && into < S::ZERO {
+        // Along the plane as rounded (it comes closer by no more than the rounding of a height,
+        // as `constrain` leaves a slide) yet met: it started closer than that. Lifted by its
+        // approach, all of it clears the plane; left where it is, it would be met again at
+        // once, call after call.
+        if into >= -S::height_error(magnitude(rest)) {
+            return (S::ZERO, hit.normal.scale(-into));
+        }
         let back = S::div(skin, -into);
         if back >= hit.alpha {
-            // Started within a skin, it cannot back off along its path: it stays. A motion
-            // that grazes the plane (all of it would come less than half a skin closer) is
-            // lifted back to a skin, from where all of it clears the plane: left where it is,
-            // rounding that runs its slide into the plane would stop it at once, call after
-            // call.
-            let grazes = -into < S::div(skin, S::ONE + S::ONE);
-            let lift = if grazes {
-                hit.normal.scale(skin - hit.alpha.mul(-into))
-            } else {
-                zero
-            };
-            return (S::ZERO, lift);
+            // Started within a skin: it cannot back off along its path, so it stays.
+            return (S::ZERO, zero);
         }
         let alpha = hit.alpha - back;
         let settled = magnitude(rest).mul(alpha) <= rounding;
@@ -141,8 +139,9 @@ pub(super) fn cross_unit<S: Scalar>(a: Vec3<S>, b: Vec3<S>) -> Vec3<S> {
 /// and is walkable: `up`'s projection onto their span, `p = α a + β b`, has `α, β >= 0` (the
 /// normals lie either side of `up`) and `|p| >= min_cos` (`|p|` is the cosine of the steepest
 /// line between the normals). Solved over the Gram determinant `1 - (a · b)²` without dividing;
-/// the support returned is `p` as a unit vector, the crease's own "floor normal". Normals within
-/// about 14° of parallel or opposed hold nothing of their own.
+/// the support returned is `p` as a unit vector, the crease's own "floor normal". Weights within
+/// eight steps of zero hold nothing: up runs along the crease (two walls), or the normals are
+/// parallel.
 pub(super) fn holds<S: Scalar>(a: Vec3<S>, b: Vec3<S>, up: Vec3<S>, min_cos: S) -> Option<Vec3<S>> {
     let k = S::dot(a, b);
     let det = (S::ONE - k).mul(S::ONE + k);
@@ -150,9 +149,11 @@ pub(super) fn holds<S: Scalar>(a: Vec3<S>, b: Vec3<S>, up: Vec3<S>, min_cos: S) 
     let (alpha, beta) = (au - k.mul(bu), bu - k.mul(au));
     // `|p|² det = au α + bu β`.
     let reach = au.mul(alpha) + bu.mul(beta);
-    let held = det >= S::div_pow2(S::ONE, 4)
-        && alpha >= S::ZERO
-        && beta >= S::ZERO
+    // Each weight carries the rounding of the unit normals and of three products, a few
+    // steps: weights within that of zero (up along the crease, or nearly so) hold nothing.
+    let steps = crate::scalar::tie::<S>();
+    let held = alpha >= steps + steps
+        && beta >= steps + steps
         && (min_cos <= S::ZERO || reach >= min_cos.mul(min_cos).mul(det));
     // `p det = α a + β b`, of the same direction.
     held.then(|| unit(a.scale(alpha) + b.scale(beta))).flatten()
