@@ -328,7 +328,7 @@ fn run<S: Scalar, G: Geometry<S> + ?Sized>(
             time: elapsed,
         });
         let alpha = rules::stand_off(&hit, rest, skin, rounding).0;
-        out.position = settle(&hit, out.position, rest, skin, rounding);
+        out.position = settle(scene, &hit, out.position, rest, (radius, skin), rounding);
         let left = rest.scale(S::ONE - alpha);
         rest = if add_planes(&mut planes, &hit, ball.max_slope) {
             constrain(left, &planes, displacement)

@@ -50,7 +50,7 @@ pub(super) fn resolve<S: Scalar, G: Geometry<S> + ?Sized>(
             match scene.cast(&sweep) {
                 // Into something it does not yet overlap, or deeper into one it does: stop short.
                 Some(hit) if S::dot_sign(push, hit.normal).is_lt() => {
-                    stops[k] = Some(settle(&hit, centre, push, skin, rounding));
+                    stops[k] = Some(settle(scene, &hit, centre, push, (radius, skin), rounding));
                 }
                 // Clear, or met at once alongside an overlap the push does not deepen (another
                 // face of a corner): the next round sees what is left.
@@ -73,13 +73,14 @@ pub(super) fn resolve<S: Scalar, G: Geometry<S> + ?Sized>(
     centre
 }
 
-/// Where a ball at `from` moving by `rest` comes to rest after meeting `hit`: a skin short of
-/// it ([`stand_off`]).
-pub(super) fn settle<S: Scalar>(
+/// Where a ball at `from` moving by `rest` comes to rest after meeting `hit` in `scene`: a skin
+/// short of it ([`stand_off`]).
+pub(super) fn settle<S: Scalar, G: Geometry<S> + ?Sized>(
+    scene: &G,
     hit: &SceneHit<S>,
     from: Vec3<S>,
     rest: Vec3<S>,
-    skin: S,
+    (radius, skin): (S, S),
     rounding: S,
 ) -> Vec3<S> {
     let (alpha, lift) = stand_off(hit, rest, skin, rounding);
@@ -90,6 +91,10 @@ pub(super) fn settle<S: Scalar>(
     } else if alpha > S::ZERO {
         hit.position - rest.scale(hit.alpha - alpha)
     } else {
-        from + lift
+        // The lift of a slide along the plane as rounded, a few steps, is swept like a motion:
+        // in a corner narrower than 90° it points partly into the other wall.
+        let clear = lift == Vec3::ZERO
+            || Sweep::new(from, from + lift, radius).is_ok_and(|s| scene.cast(&s).is_none());
+        if clear { from + lift } else { from }
     }
 }
