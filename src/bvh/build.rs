@@ -58,8 +58,9 @@ pub const fn nodes_for(n: usize) -> usize {
     total
 }
 
-/// One triangle during the build: its box in cells (three words), its index (fourth word, low
-/// half) and its [`seam_class`](super::seam_class) (fourth word, high half).
+/// One triangle during the build: its box's minimum in cells and its index (first two words,
+/// two halves each), its box's maximum and its [`seam_class`](super::seam_class) (last two): four
+/// lanes of minima, four of maxima, so a union is lane by lane.
 pub(crate) type Item = [u64; 4];
 
 /// Packs a box, an index and a seam class into an [`Item`].
@@ -67,20 +68,21 @@ pub(crate) fn item((lo, hi): Cells, index: usize, class: u32) -> Item {
     let w = |a: i32, b: i32| (a as u32 as u64) | ((b as u32 as u64) << 32);
     [
         w(lo[0], lo[1]),
-        w(lo[2], hi[0]),
-        w(hi[1], hi[2]),
-        index as u32 as u64 | (class as u64) << 32,
+        w(lo[2], index as u32 as i32),
+        w(hi[0], hi[1]),
+        w(hi[2], class as i32),
     ]
+}
+
+/// The two lanes of a word of an [`Item`].
+fn lanes(w: u64) -> [i32; 2] {
+    [w as u32 as i32, (w >> 32) as u32 as i32]
 }
 
 /// The box of an [`Item`].
 pub(crate) fn item_box(it: &Item) -> Cells {
-    let lo = |w: u64| w as u32 as i32;
-    let hi = |w: u64| (w >> 32) as u32 as i32;
-    (
-        [lo(it[0]), hi(it[0]), lo(it[1])],
-        [hi(it[1]), lo(it[2]), hi(it[2])],
-    )
+    let ([a, b], [c, _], [d, e], [f, _]) = (lanes(it[0]), lanes(it[1]), lanes(it[2]), lanes(it[3]));
+    ([a, b, c], [d, e, f])
 }
 
 /// Bits of a key holding an item's index.
@@ -93,19 +95,24 @@ pub(crate) fn key_index(key: u64) -> usize {
     (key & INDEX) as usize
 }
 
-/// The union of the boxes of the items `keys` refer to, and their largest seam class.
+/// The union of the boxes of the items `keys` refer to, and their largest seam class: lane by
+/// lane, the minima's (the index's lane unused) and the maxima's (the class's lane the class).
+#[inline(never)]
 fn union(keys: &[u64], items: &[Item]) -> (Cells, u32) {
-    let mut b = ([i32::MAX; 3], [i32::MIN; 3]);
-    let mut class = 0;
+    let (mut lo, mut hi) = ([i32::MAX; 4], [i32::MIN; 4]);
     for it in keys.iter().filter_map(|&k| items.get(key_index(k))) {
-        let (lo, hi) = item_box(it);
-        for a in 0..3 {
-            b.0[a] = b.0[a].min(lo[a]);
-            b.1[a] = b.1[a].max(hi[a]);
+        let ([a, b], [c, d]) = (lanes(it[0]), lanes(it[1]));
+        let ([e, f], [g, h]) = (lanes(it[2]), lanes(it[3]));
+        let (l, u) = ([a, b, c, d], [e, f, g, h]);
+        for k in 0..4 {
+            lo[k] = lo[k].min(l[k]);
+            hi[k] = hi[k].max(u[k]);
         }
-        class = class.max((it[3] >> 32) as u32);
     }
-    (b, class)
+    (
+        ([lo[0], lo[1], lo[2]], [hi[0], hi[1], hi[2]]),
+        hi[3].max(0) as u32,
+    )
 }
 
 /// Bits per axis of a key's quantized centre.
