@@ -9,7 +9,7 @@
 //! (`Jolt/Geometry/ActiveEdges.h`), decided here by exact comparisons in the scalar.
 
 use crate::merge::same_plane;
-use crate::{Scalar, StandardTriangle, Triangle, Vec3};
+use crate::{Features, Scalar, StandardTriangle, Triangle, Vec3};
 use core::cmp::Ordering;
 
 /// Whether, across an edge shared by triangles `a` and `b` (whose vertex off the edge is `apex`),
@@ -29,9 +29,11 @@ pub(crate) fn hides<S: Scalar>(
 
 /// Switches off `edge` of `tri`; a vertex stays active while either of its edges through it is.
 pub(crate) fn deactivate<S: Scalar>(tri: &mut StandardTriangle<S>, edge: usize) {
-    let f = tri.features().with_edge(edge, false);
-    let f = (0..3).fold(f, |f, v| f.with_vertex(v, f.edge(v) || f.edge((v + 2) % 3)));
-    *tri = tri.with_features(f);
+    // Edge bits 0..3, vertex bits 3..6: vertex `v` is on while edge `v` or edge `v + 2` is.
+    let off = if edge < 3 { 1 << edge } else { 0 };
+    let e = tri.features().bits() & 0b111 & !off;
+    let v = (e | e << 1 | e >> 2) & 0b111;
+    *tri = tri.with_features(Features::from_bits(e | v << 3));
 }
 
 /// Bits of a record holding `triangle * 3 + edge`: room for 2^28 triangles.
@@ -84,7 +86,7 @@ pub(crate) fn link_all<S: Scalar>(
     }
     let records = &mut records[..used];
     // Records are made in slot order, so a stable sort on the hash and direction sorts them fully.
-    let in_temp = crate::radix::sort(records, temp, SLOT_BITS, SLOT_BITS + 1 + HASH_BITS);
+    let in_temp = crate::radix::sort::<SLOT_BITS, { SLOT_BITS + 1 + HASH_BITS }>(records, temp);
     let Some(temp) = temp.get_mut(..used) else {
         return;
     };
@@ -182,24 +184,30 @@ fn link<S: Scalar>(
     let (Some(ta), Some(tb)) = (source(a), source(b)) else {
         return false;
     };
-    // Vertex k of a source, read in place (no copy of the three).
-    let at = |t: &Triangle<S>, k: usize| match k % 3 {
-        0 => t.v0,
-        1 => t.v1,
-        _ => t.v2,
-    };
-    if a == b || at(ta, i) != at(tb, j + 1) || at(ta, i + 1) != at(tb, j) {
+    // The vertex after `k < 3`, around the triangle; vertex `k` of a source, read in place.
+    let next = |k: usize| if k < 2 { k + 1 } else { 0 };
+    fn at<S: Scalar>(t: &Triangle<S>, k: usize) -> &Vec3<S> {
+        match k {
+            0 => &t.v0,
+            1 => &t.v1,
+            _ => &t.v2,
+        }
+    }
+    let (va, vb) = (|k| at(ta, k), |k| at(tb, k));
+    let (i1, j1) = (next(i), next(j));
+    let (i2, j2) = (next(i1), next(j1));
+    if a == b || va(i) != vb(j1) || va(i1) != vb(j) {
         return false;
     }
     let (Some(pa), Some(pb)) = (triangles.get(a), triangles.get(b)) else {
         return false;
     };
-    if hides(pa, pb, at(tb, j + 2)) {
+    if hides(pa, pb, *vb(j2)) {
         deactivate(&mut triangles[a], i);
         deactivate(&mut triangles[b], j);
     }
     // A triangle's exact reverse (its back, as a two-sided floor is made) is no partner.
-    at(ta, i + 2) != at(tb, j + 2)
+    va(i2) != vb(j2)
 }
 
 /// Orders points by x, then y, then z (validated, so never NaN).

@@ -4,13 +4,14 @@
 /// Most digits a sort takes: 32 bits of key.
 const DIGITS: usize = 4;
 
-/// Sorts `keys` by bits `from..to` (stable: keys equal there keep their order; at most 32 bits,
-/// those beyond `from + 32` are not looked at), using `temp` (at least as long as `keys`) as
+/// Sorts `keys` by bits `FROM..TO` (stable: keys equal there keep their order; at most 32 bits,
+/// those beyond `FROM + 32` are not looked at), using `temp` (at least as long as `keys`) as
 /// the other buffer, and returns whether the sorted keys ended in `temp` (its first
 /// `keys.len()` words) rather than in `keys`. Digits of 8 bits (the last one narrower where the
 /// width is not a multiple of 8), counted together in one pass; a digit on which every key
 /// agrees costs no move.
-pub(crate) fn sort(keys: &mut [u64], temp: &mut [u64], from: u32, to: u32) -> bool {
+pub(crate) fn sort<const FROM: u32, const TO: u32>(keys: &mut [u64], temp: &mut [u64]) -> bool {
+    let (from, to) = (FROM, TO);
     let n = keys.len();
     let Some(temp) = temp.get_mut(..n) else {
         return false;
@@ -62,15 +63,16 @@ mod tests {
     fn sorts_like_the_standard_sort_on_the_chosen_bits() {
         // Few distinct values (stability matters, one digit moves), then two and three digits.
         for modulus in [37, 40_000, 1 << 24] {
-            sort_matches(modulus, 40, 64);
+            sort_matches::<40, 64>(modulus);
             // Bits above `to` do not count: a width that is not a multiple of 8.
-            sort_matches(modulus, 40, 53);
+            sort_matches::<40, 53>(modulus);
         }
     }
 
     /// Keys of `(x % modulus) << 40 | index`, sorted on bits `from..to`, against the standard
     /// stable sort on the same bits.
-    fn sort_matches(modulus: u64, from: u32, to: u32) {
+    fn sort_matches<const FROM: u32, const TO: u32>(modulus: u64) {
+        let (from, to) = (FROM, TO);
         let mut x = 0x9E37_79B9_7F4A_7C15u64;
         let mut keys: Vec<u64> = (0..5000)
             .map(|i| {
@@ -84,7 +86,7 @@ mod tests {
         let mut want = keys.clone();
         want.sort_by_key(|k| (k >> from) & ((1u64 << (to - from)) - 1)); // stable
         let mut temp = vec![0; keys.len()];
-        let in_temp = super::sort(&mut keys, &mut temp, from, to);
+        let in_temp = super::sort::<FROM, TO>(&mut keys, &mut temp);
         assert_eq!(
             if in_temp { &temp } else { &keys },
             &want,
