@@ -107,15 +107,19 @@ pub(crate) fn link_all<S: Scalar>(
         while end < records.len() && records[end] >> (SLOT_BITS + 1) == key {
             end += 1;
         }
-        let run = &records[start..end];
+        let run = records.get(start..end).unwrap_or_default();
+        let forward = |r: u64| (r >> SLOT_BITS) & 1 == 1;
         // Backward records (direction bit 0) sort before forward ones within a run.
-        let split = run.partition_point(|r| (r >> SLOT_BITS) & 1 == 0);
-        if let ([x], [y]) = run.split_at(split) {
-            let (a, b) = (slot(*x).min(slot(*y)), slot(*x).max(slot(*y)));
+        if let &[x, y] = run
+            && !forward(x)
+            && forward(y)
+        {
+            let (a, b) = (slot(x).min(slot(y)), slot(x).max(slot(y)));
             if let Some(e) = earlier.get_mut(b) {
                 *e = a as u64 + 1;
             }
         } else {
+            let split = run.partition_point(|&r| !forward(r));
             for &x in &run[..split] {
                 for &y in &run[split..] {
                     if link(sources, order, triangles, slot(x), slot(y)) {
