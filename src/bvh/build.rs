@@ -95,24 +95,27 @@ pub(crate) fn key_index(key: u64) -> usize {
     (key & INDEX) as usize
 }
 
-/// The union of the boxes of the items `keys` refer to, and their largest seam class: lane by
-/// lane, the minima's (the index's lane unused) and the maxima's (the class's lane the class).
+/// The union of the boxes of the items `keys` refer to, lane by lane (the index's and the
+/// class's lanes left out: classes are set once the tree is built).
 #[inline(never)]
-fn union(keys: &[u64], items: &[Item]) -> (Cells, u32) {
-    let (mut lo, mut hi) = ([i32::MAX; 4], [i32::MIN; 4]);
+fn union(keys: &[u64], items: &[Item]) -> Cells {
+    let (mut lo, mut hi) = ([i32::MAX; 3], [i32::MIN; 3]);
     for it in keys.iter().filter_map(|&k| items.get(key_index(k))) {
-        let ([a, b], [c, d]) = (lanes(it[0]), lanes(it[1]));
-        let ([e, f], [g, h]) = (lanes(it[2]), lanes(it[3]));
-        let (l, u) = ([a, b, c, d], [e, f, g, h]);
-        for k in 0..4 {
+        let ([a, b], [c, _]) = (lanes(it[0]), lanes(it[1]));
+        let ([e, f], [g, _]) = (lanes(it[2]), lanes(it[3]));
+        let (l, u) = ([a, b, c], [e, f, g]);
+        for k in 0..3 {
             lo[k] = lo[k].min(l[k]);
             hi[k] = hi[k].max(u[k]);
         }
     }
-    (
-        ([lo[0], lo[1], lo[2]], [hi[0], hi[1], hi[2]]),
-        hi[3].max(0) as u32,
-    )
+    (lo, hi)
+}
+
+/// The seam class of the item in slot `s` once the keys are in leaf order.
+fn class_at(keys: &[u64], items: &[Item], s: usize) -> u32 {
+    let it = keys.get(s).and_then(|&k| items.get(key_index(k)));
+    it.map_or(0, |it| lanes(it[3])[1].max(0) as u32)
 }
 
 /// Bits per axis of a key's quantized centre.
@@ -237,7 +240,7 @@ pub(crate) fn build(
                 continue;
             }
             let part = &mut range[s..e];
-            let ((clo, chi), class) = union(part, items);
+            let (clo, chi) = union(part, items);
             let k = node.count as usize;
             let mut dlo = [0; 3];
             let mut dhi = [0; 3];
@@ -251,18 +254,16 @@ pub(crate) fn build(
                 dlo[ax] = lo[ax] + ((qlo as i32) << sh);
                 dhi[ax] = lo[ax] + ((qhi as i32) << sh);
             }
-            let class = class.min(MAX_CLASS) << CLASS_SHIFT;
             if part.len() <= LEAF {
                 part.sort_unstable_by_key(|&k| k & INDEX);
-                node.children[k] =
-                    LEAF_FLAG | class | ((first + s) as u32) << 2 | (part.len() - 1) as u32;
+                node.children[k] = LEAF_FLAG | ((first + s) as u32) << 2 | (part.len() - 1) as u32;
             } else {
                 let child = next;
                 next += 1;
                 if child >= nodes.len() {
                     return Err(BuildError::Nodes(needed));
                 }
-                node.children[k] = class | child as u32;
+                node.children[k] = child as u32;
                 if work
                     .push((child, first + s, e - s, (dlo, dhi), depth + 1, top))
                     .is_err()
@@ -274,6 +275,8 @@ pub(crate) fn build(
         }
         nodes[at] = node;
     }
+    // Every child comes after its parent: the seam classes bottom-up.
+    set_classes(&mut nodes[..next], |s| class_at(keys, items, s));
     Ok(next)
 }
 
