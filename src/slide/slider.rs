@@ -61,6 +61,10 @@ impl<S: Scalar> Slider<S> {
     /// maximum slope angle, and Godot's `CharacterBody3D` calls it not sliding up steep slopes.
     /// Use [`Slider::clip`] to constrain a velocity the same way.
     ///
+    /// A step's edge is such a slope where the ball rounds it: a riser higher than
+    /// `radius * (1 - min_cos)` (0.29 r for 45°) stops a ball it would otherwise lift onto the
+    /// step. There is no step-up rule here; an engine's character adds one on top.
+    ///
     /// ```
     /// use ballcast::{Scene, Triangle, Vec3, slide::Slider};
     /// let v = Vec3::new;
