@@ -151,9 +151,7 @@ impl<S: Scalar> Slide<S> {
 
     /// [`floor`](Self::floor) with its normal.
     fn ground(&self, up: Vec3<S>, min_cos: S) -> Result<Option<Ground<'_, S>>, Error> {
-        let up = check::point(up, S::LIMIT)?;
-        let min_cos = check::within(min_cos, -S::ONE, S::ONE)?;
-        let up = unit(up).ok_or(Error::ZeroVector)?;
+        let (up, min_cos) = slope_limit(up, min_cos)?;
         let contacts = || self.contacts.iter().flatten();
         let held = |j: usize, c: &SlideContact<S>| {
             let mut earlier = contacts()
@@ -175,6 +173,14 @@ impl<S: Scalar> Slide<S> {
             })
             .last())
     }
+}
+
+/// A slope limit checked: `up` (components within `±LIMIT`, not zero in the scalar) as a unit
+/// vector, and `min_cos` within `[-1, 1]`.
+fn slope_limit<S: Scalar>(up: Vec3<S>, min_cos: S) -> Result<(Vec3<S>, S), Error> {
+    let up = check::point(up, S::LIMIT)?;
+    let min_cos = check::within(min_cos, -S::ONE, S::ONE)?;
+    Ok((unit(up).ok_or(Error::ZeroVector)?, min_cos))
 }
 
 /// The gap kept between a ball of `radius` and what it touched, for centres within `±extent`:

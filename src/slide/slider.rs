@@ -1,7 +1,6 @@
 //! A ball's settings: its radius, its skin and the steepest slope it can be carried up.
 
-use super::{Slide, run, skin};
-use crate::contact::unit;
+use super::{Slide, run, skin, slope_limit};
 use crate::{Error, Geometry, Scalar, Vec3, check};
 
 /// A ball's settings for [`Slider::slide`]: its radius and, optionally, its own skin and a
@@ -85,11 +84,8 @@ impl<S: Scalar> Slider<S> {
     /// `±`[`Scalar::LIMIT`] or `min_cos` outside `[-1, 1]`; [`Error::ZeroVector`] for an `up`
     /// of zero (in the scalar).
     pub fn with_max_slope(self, up: Vec3<S>, min_cos: S) -> Result<Self, Error> {
-        let up = check::point(up, S::LIMIT)?;
-        let min_cos = check::within(min_cos, -S::ONE, S::ONE)?;
-        let up = unit(up).ok_or(Error::ZeroVector)?;
         Ok(Self {
-            max_slope: Some((up, min_cos)),
+            max_slope: Some(slope_limit(up, min_cos)?),
             ..self
         })
     }
