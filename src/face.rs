@@ -107,8 +107,11 @@ impl<S: Scalar> StandardTriangle<S> {
     /// A float height carries rounding in proportion to the point's distance from the triangle's
     /// origin (the difference, the products and the normal's own rounding), and a path's ends
     /// may lie far from it. So for floats the centre found is checked once more: its own height,
-    /// measured where the contact is, and the path moved by the remaining difference over
-    /// `den` (`den < 0`: the path comes down). Fixed-point rounds heights by the same absolute step anywhere, and keeps the first.
+    /// measured where the contact is, and the centre moved along the plane's normal by the
+    /// remaining difference. Not along the path: for a path that runs nearly along the plane
+    /// that would carry the centre far from alpha's point, past geometry that may lie just
+    /// beyond it. Fixed-point rounds heights by the same absolute step anywhere, and keeps the
+    /// first.
     pub(crate) fn face_position(
         &self,
         p0: Vec3<S>,
@@ -121,15 +124,9 @@ impl<S: Scalar> StandardTriangle<S> {
         if !S::PRECISION.relative || num == S::ZERO {
             return at;
         }
-        let h = S::dot_unit(at - self.origin(), self.up());
-        let fix = r - if back { -h } else { h };
-        // Only a correction that keeps the centre on the path (the fraction `(num + fix) / den`
-        // within `[0, 1]`): a resting ball's tiny step cannot be carried past its end.
-        let k = num + fix;
-        if k > S::ZERO || k < den {
-            return at;
-        }
-        // The correction is a small fraction of the path: one rounded factor is enough for it.
-        at + d.scale(S::div(fix, den))
+        let up = self.up();
+        let h = S::dot_unit(at - self.origin(), up);
+        let fix = if back { -r - h } else { r - h };
+        at + up.map(|u| S::mul_unit(fix, u))
     }
 }

@@ -35,8 +35,9 @@ pub struct Hit<S> {
     /// The ball's centre at first contact, `p0 + alpha (p1 - p0)` computed from alpha before
     /// it is rounded: its error is a few steps of `S`, not alpha's step times the path. For a
     /// float's face contact the centre's height is measured once more where it is and the
-    /// centre moved along the path to height `r`, so the rounding of the path's far ends does
-    /// not reach it either (it may then differ from alpha's point by what alpha carries of it).
+    /// centre moved along the plane's normal to height `r`, so the rounding of the path's far
+    /// ends does not reach it either: it lies at alpha's point, off it along the normal by what
+    /// alpha carries of that rounding, never along the path.
     pub position: Vec3<S>,
     /// Unit contact normal in world orientation, pointing towards the ball's centre.
     pub normal: Vec3<S>,

@@ -12,8 +12,8 @@ use fixed::types::{I16F16, I32F32};
 use lockstep::{Bits, Fnv, Outcome, simulate};
 
 /// The pinned outcomes: hash, contacts, escapes.
-const F64: Outcome = pinned(0x1644_abf4_3739_4b28, 8381);
-const F32: Outcome = pinned(0x7795_caad_c2c7_6dd2, 8381);
+const F64: Outcome = pinned(0x5f9f_e12f_00d9_bd87, 8381);
+const F32: Outcome = pinned(0xf94f_6eef_2ddb_3b60, 8381);
 const I32F32_RUN: Outcome = pinned(0x1f8d_e7eb_e80e_7ab3, 8421);
 const I16F16_RUN: Outcome = pinned(0x93a3_04b3_e021_cca7, 8376);
 

@@ -374,10 +374,20 @@ pub fn slope<S: Scalar>(n: [f64; 3]) -> Scene<S, 8> {
 /// Two slopes each `steep` degrees from level meeting in a trough along z, the trough rising
 /// at `rise` degrees: slopes 40 long up from the trough, 40 along it, fronts inside.
 pub fn valley<S: Scalar>(steep: f64, rise: f64) -> Scene<S, 8> {
+    valley_at(steep, rise, [0.0; 3])
+}
+
+/// [`valley`] with its trough's centre moved from the origin to `at`.
+pub fn valley_at<S: Scalar>(steep: f64, rise: f64, at: P) -> Scene<S, 8> {
     let (s, c) = steep.to_radians().sin_cos();
     let (sr, cr) = rise.to_radians().sin_cos();
-    // Tilt about x so that +z rises by `rise`.
-    let tilt = |p: [f64; 3]| v::<S>([p[0], p[1] * cr + p[2] * sr, p[2] * cr - p[1] * sr]);
+    // Tilt about x so that +z rises by `rise`, then move to `at`.
+    let tilt = |p: [f64; 3]| {
+        v::<S>(add(
+            at,
+            [p[0], p[1] * cr + p[2] * sr, p[2] * cr - p[1] * sr],
+        ))
+    };
     let mut level = Scene::new();
     for side in [-1.0, 1.0] {
         let up = [side * c * 40.0, s * 40.0, 0.0];
