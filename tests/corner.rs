@@ -3,7 +3,7 @@
 
 mod common;
 
-use ballcast::{Scene, Triangle, move_and_slide, slide::skin};
+use ballcast::{Scene, Triangle, Vec3, move_and_slide, slide::skin};
 use common::{P, Tolerance, add, back, distance_to_triangle, scale, v};
 use fixed::types::{I16F16, I32F32};
 
@@ -24,16 +24,24 @@ fn corner(theta: f64, len: f64) -> Vec<[P; 3]> {
     .concat()
 }
 
-/// Corners of 20°–60°, balls of r = 0.02 and 0.05 resting on the floor in the corner, pushed
-/// level into it by 0.2 or 0.45 skin a call, off the bisector (inside the walls' normal cone,
-/// so the ball must stay): over 1 500 calls it never overlaps a wall by more than four skins
-/// (rounding lets `I16F16` overlap the 20° corner's walls by a skin at times). A
-/// slide along one wall as rounded, met because the ball started within rounding of it, was
+/// Corners of 20°–60°, balls of r = 0.005–0.05 resting on the floor in the corner, pushed
+/// level into it by 0.1–1 skin a call, off the bisector (inside the walls' normal cone, so the
+/// ball must stay): over 1 500 calls it never overlaps a wall by more than a quarter of a skin.
+/// A slide along one wall as rounded, met because the ball started within rounding of it, was
 /// lifted off that wall without a sweep, into the other wall: in `I16F16` the ball passed
-/// through it (an overlap of r/2 and more).
+/// through it (an overlap of r/2 and more). Later the skin's lift off a wall met at once, also
+/// made without a sweep, pushed `I16F16` balls into the other wall by up to 0.15 r.
 fn pushed_into_an_acute_corner_stays_out_of_the_walls<S: Tolerance>() {
+    let cases = [
+        (0.005, 0.1, -0.6),
+        (0.02, 0.45, 0.6),
+        (0.02, 0.2, -0.6),
+        (0.02, 1.0, 0.0),
+        (0.05, 0.45, -0.6),
+        (0.05, 0.2, -0.6),
+    ];
     for degrees in [20.0f64, 30.0, 45.0, 60.0] {
-        for (r, skins, uneven) in [(0.02, 0.45, 0.6), (0.02, 0.2, -0.6), (0.05, 0.45, -0.6)] {
+        for (r, skins, uneven) in cases {
             let theta = degrees.to_radians();
             let tris = corner(theta, 6.0 * r / 0.5);
             let mut scene: Scene<S, 6> = Scene::new();
@@ -61,7 +69,7 @@ fn pushed_into_an_acute_corner_stays_out_of_the_walls<S: Tolerance>() {
                     .map(|t| r - distance_to_triangle(back(p), *t))
                     .fold(f64::MIN, f64::max);
                 assert!(
-                    deepest <= 4.0 * skin,
+                    deepest <= skin / 4.0,
                     "{}: {degrees}° corner, r {r}, push {skins} skin: call {call} overlaps a \
                      wall by {deepest:.3e} (skin {skin:.3e}) at {:?}",
                     S::NAME,
@@ -72,9 +80,119 @@ fn pushed_into_an_acute_corner_stays_out_of_the_walls<S: Tolerance>() {
     }
 }
 
+/// A ball of r = 0.02 falling into a slot between two walls a quarter of a skin farther apart
+/// than it is wide (on each side), running along it: it reaches the floor (centre r above it
+/// within two steps) within 60 frames and runs on. Where a lift off one wall meets the other,
+/// the ball stops half way: stopped where it was instead, it stayed within rounding of a wall,
+/// met it at once on every sweep, and hung in the slot for good (`I16F16`).
+fn falling_into_a_slot_reaches_the_floor<S: Tolerance>() {
+    let (r, dt) = (0.02, 1.0 / 60.0);
+    let rs = S::from_f64(r);
+    let w = r + skin(rs, S::from_f64(4.0)).to_f64() / 4.0;
+    let quad = |o: P, a: P, b: P| {
+        [
+            [o, add(o, a), add(add(o, a), b)],
+            [o, add(add(o, a), b), add(o, b)],
+        ]
+    };
+    let tris = [
+        quad([-3.2, -0.8, -w], [6.4, 0.0, 0.0], [0.0, 1.6, 0.0]),
+        quad([-3.2, -0.8, w], [0.0, 1.6, 0.0], [6.4, 0.0, 0.0]),
+        quad([-3.2, -0.4, -0.16], [0.0, 0.0, 0.32], [6.4, 0.0, 0.0]),
+    ]
+    .concat();
+    let mut scene: Scene<S, 6> = Scene::new();
+    for t in &tris {
+        scene
+            .push(Triangle::new(v(t[0]), v(t[1]), v(t[2])))
+            .unwrap();
+    }
+    let (mut p, mut vy) = (v::<S>([-1.2, 0.0, 0.0]), 0.0);
+    let mut landed = None;
+    for frame in 0..120 {
+        vy -= 9.81 * dt;
+        let d = v::<S>([0.08 * dt, vy * dt, 0.0008 * dt]);
+        let out = move_and_slide(&scene, p, d, rs).unwrap();
+        vy = out.clip(d).unwrap().y.to_f64() / dt;
+        p = out.position;
+        if landed.is_none()
+            && (back(p)[1] - (r - 0.4)).abs()
+                <= 2.0 * S::spacing(1.0) + skin(rs, S::from_f64(4.0)).to_f64()
+        {
+            landed = Some(frame);
+        }
+    }
+    assert!(
+        landed.is_some_and(|f| f < 60) && back(p)[0] > -1.2 + 0.08 * 1.5,
+        "{}: landed {landed:?}, at {:?}",
+        S::NAME,
+        back(p)
+    );
+}
+
+/// A ball of r = 0.02 walking along the foot of a wall that leans over the floor at 110°
+/// (a 70° corner), nearly along it (5° into it) at 0.08 units/s for 4 s, pressed into the floor
+/// each frame as in the README's recipe: it covers at least 90 % of the way. Where a lift off
+/// the wall, which points down into the floor, met the floor at once, the ball stopped where it
+/// was: it stayed within rounding of the wall, met it at once on every sweep, and stuck
+/// (`I16F16`, after 0.04). The lift now slides along the floor.
+fn walking_along_the_foot_of_an_overhang_does_not_stick<S: Tolerance>() {
+    let (r, dt, g) = (0.02, S::from_f64(1.0 / 60.0), S::from_f64(9.81));
+    let rs = S::from_f64(r);
+    let a = 110f64.to_radians();
+    let (n, along) = ([-a.sin(), a.cos(), 0.0], [0.0, 0.0, 1.0]);
+    let across = common::cross(n, along);
+    let wall = |i: f64, j: f64| add(scale(across, 1.6 * i), scale(along, 1.6 * j));
+    let f = |x: f64, z: f64| [x, 0.0, z];
+    let tris = [
+        // Fronts along `n`: (b - a) × (c - a) turns from `along` to `across`.
+        [wall(-1.0, -1.0), wall(1.0, 1.0), wall(1.0, -1.0)],
+        [wall(-1.0, -1.0), wall(-1.0, 1.0), wall(1.0, 1.0)],
+        [f(-3.2, -3.2), f(-3.2, 3.2), f(0.5, 3.2)],
+        [f(-3.2, -3.2), f(0.5, 3.2), f(0.5, -3.2)],
+    ];
+    let mut scene: Scene<S, 4> = Scene::new();
+    for t in &tris {
+        scene
+            .push(Triangle::new(v(t[0]), v(t[1]), v(t[2])))
+            .unwrap();
+    }
+    let (up, walkable) = (v::<S>([0.0, 1.0, 0.0]), S::from_f64(0.5f64.sqrt()));
+    let wish = v::<S>(scale(
+        [5f64.to_radians().sin(), 0.0, 5f64.to_radians().cos()],
+        0.08,
+    ));
+    let start = [-r - 0.024, r * 1.001, -0.4];
+    let (mut p, mut floor) = (v::<S>(start), Some(up));
+    for _ in 0..240 {
+        let n = floor.unwrap_or(up);
+        let press = move_and_slide(&scene, p, Vec3::ZERO - n * g.mul(dt).mul(dt), rs).unwrap();
+        let w = wish - n * wish.dot(n);
+        let walk = move_and_slide(&scene, press.position, w * dt, rs).unwrap();
+        floor = walk.floor_normal(up, walkable).unwrap();
+        floor = floor.or(press.floor_normal(up, walkable).unwrap());
+        p = walk.position;
+    }
+    let covered = back(p)[2] - start[2];
+    assert!(
+        covered >= 0.9 * 0.08 * 4.0 * 5f64.to_radians().cos(),
+        "{}: covered {covered} of 0.32, at {:?}",
+        S::NAME,
+        back(p)
+    );
+}
+
 macro_rules! per_scalar {
     ($($m:ident: $t:ty),*) => {$(mod $m {
         use super::*;
+        #[test]
+        fn falling_into_a_slot() {
+            falling_into_a_slot_reaches_the_floor::<$t>();
+        }
+        #[test]
+        fn walking_along_the_foot_of_an_overhang() {
+            walking_along_the_foot_of_an_overhang_does_not_stick::<$t>();
+        }
         #[test]
         fn pushed_into_an_acute_corner() {
             pushed_into_an_acute_corner_stays_out_of_the_walls::<$t>();

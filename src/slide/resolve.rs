@@ -74,7 +74,8 @@ pub(super) fn resolve<S: Scalar, G: Geometry<S> + ?Sized>(
 }
 
 /// Where a ball at `from` moving by `rest` comes to rest after meeting `hit` in `scene`: a skin
-/// short of it ([`stand_off`]).
+/// short of it ([`stand_off`]). Every lift off a plane is swept like a motion: in a corner
+/// narrower than 90° it points partly into the other wall.
 pub(super) fn settle<S: Scalar, G: Geometry<S> + ?Sized>(
     scene: &G,
     hit: &SceneHit<S>,
@@ -86,15 +87,52 @@ pub(super) fn settle<S: Scalar, G: Geometry<S> + ?Sized>(
     let (alpha, lift) = stand_off(hit, rest, skin, rounding);
     // From the contact's own position (a few steps of `S` off, where alpha's rounding times
     // the path would be more), backed off along the path; or not moved along it at all.
-    if alpha == hit.alpha {
-        hit.position + lift
+    let (at, lift) = if alpha == hit.alpha {
+        (hit.position, lift)
     } else if alpha > S::ZERO {
-        hit.position - rest.scale(hit.alpha - alpha)
+        return hit.position - rest.scale(hit.alpha - alpha);
     } else {
-        // The lift of a slide along the plane as rounded, a few steps, is swept like a motion:
-        // in a corner narrower than 90° it points partly into the other wall.
-        let clear = lift == Vec3::ZERO
-            || Sweep::new(from, from + lift, radius).is_ok_and(|s| scene.cast(&s).is_none());
-        if clear { from + lift } else { from }
+        (from, lift)
+    };
+    lift_from(scene, at, lift, (radius, skin), rounding)
+}
+
+/// Where a ball at `at` ends after a lift (off a plane, a skin or a few steps) that is swept
+/// like a motion: in a corner narrower than 90° it points partly into the other wall. Stopped
+/// by another plane, it stands a skin short of it along the lift, or, where that is less than
+/// half the way (a slot or corner too narrow for a skin on both sides), half way; met by one
+/// at once (a ball resting in the corner), the lift slides along it, once.
+fn lift_from<S: Scalar, G: Geometry<S> + ?Sized>(
+    scene: &G,
+    at: Vec3<S>,
+    mut lift: Vec3<S>,
+    (radius, skin): (S, S),
+    rounding: S,
+) -> Vec3<S> {
+    for _ in 0..2 {
+        if lift == Vec3::ZERO {
+            return at;
+        }
+        let Ok(sweep) = Sweep::new(at, at + lift, radius) else {
+            return at;
+        };
+        let Some(next) = scene.cast(&sweep) else {
+            return at + lift;
+        };
+        if next.alpha > S::ZERO {
+            let half = at + (next.position - at).map(|c| S::div_pow2(c, 1));
+            return match stand_off(&next, lift, skin, rounding) {
+                (a, _) if a < next.alpha && a > S::div_pow2(next.alpha, 1) => {
+                    next.position - lift.scale(next.alpha - a)
+                }
+                _ => half,
+            };
+        }
+        let into = S::dot(lift, next.normal);
+        if into >= S::ZERO {
+            return at;
+        }
+        lift -= next.normal.scale(into);
     }
+    at
 }
