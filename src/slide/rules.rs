@@ -85,12 +85,14 @@ pub(super) fn steep_wall<S: Scalar>(n: Vec3<S>, (up, min_cos): (Vec3<S>, S)) -> 
 }
 
 /// `v` constrained by every plane (unit normals): unchanged if it moves into none; else the
-/// first of: `v` without its part into one plane, along the crease of two, that moves into
+/// longest of: `v` without its part into one plane, along the crease of two, that moves into
 /// no other plane (beyond rounding), runs along `primal` (the sign of their product taken
 /// exactly) and is larger than the rounding of the normals times `v` (in fixed point, plus
-/// two steps); else zero. A candidate that runs against `primal` does not end the search: in a
-/// corner wider than a right angle, sliding along one wall leads back out of the corner, while
-/// the crease of the two walls leads down to the floor.
+/// two steps); else zero. The longest is the motion closest to `v` that runs into none of the
+/// planes (with one or two of them in the way), whatever order they were touched in. A
+/// candidate that runs against `primal` is passed over: in a corner wider than a right angle,
+/// sliding along one wall leads back out of the corner, while the crease of the two walls leads
+/// down to the floor.
 pub(super) fn constrain<S: Scalar>(v: Vec3<S>, planes: &[Vec3<S>], primal: Vec3<S>) -> Vec3<S> {
     let zero = Vec3::ZERO;
     let slack = -S::height_error(magnitude(v));
@@ -121,7 +123,20 @@ pub(super) fn constrain<S: Scalar>(v: Vec3<S>, planes: &[Vec3<S>], primal: Vec3<
             .filter_map(|b| unit(cross_unit(*a, *b)));
         lines.map(|c| c.scale(S::dot(v, c)))
     });
-    slides.chain(creases).find(keep).unwrap_or(zero)
+    // Of those kept, the one that removes least: each is a projection of `v`, so `v · w` is
+    // `|w|²`, and the largest is the closest motion to `v` that runs into no plane.
+    let longest = |best: Option<(S, Vec3<S>)>, w: Vec3<S>| {
+        let d = S::dot(v, w);
+        match best {
+            Some((b, _)) if b >= d => best,
+            _ => Some((d, w)),
+        }
+    };
+    slides
+        .chain(creases)
+        .filter(keep)
+        .fold(None, longest)
+        .map_or(zero, |(_, w)| w)
 }
 
 /// The cross product of two unit vectors, each component rounded once.

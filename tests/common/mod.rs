@@ -353,6 +353,15 @@ impl Case {
 
 /// A 16 × 16 plane through the origin with front normal `n`, two triangles.
 pub fn slope<S: Scalar>(n: [f64; 3]) -> Scene<S, 8> {
+    let mut s = Scene::new();
+    for t in plane(n) {
+        s.push(Triangle::new(v(t[0]), v(t[1]), v(t[2]))).unwrap();
+    }
+    s
+}
+
+/// The two triangles of [`slope`].
+pub fn plane(n: [f64; 3]) -> [[P; 3]; 2] {
     // Two directions in the plane: a = n × z (or n × x), b = n × a, both unit.
     let helper = if n[2].abs() < 0.9 {
         [0.0, 0.0, 1.0]
@@ -364,11 +373,8 @@ pub fn slope<S: Scalar>(n: [f64; 3]) -> Scene<S, 8> {
     let b = cross(n, a);
     let p = |i: f64, j: f64| add(scale(a, 8.0 * i), scale(b, 8.0 * j));
     let (p0, p1, p2, p3) = (p(-1.0, -1.0), p(1.0, -1.0), p(1.0, 1.0), p(-1.0, 1.0));
-    let mut s = Scene::new();
     // Counter-clockwise seen from n: (p1 - p0) × (p2 - p0) points along a × b = n.
-    s.push(Triangle::new(v(p0), v(p1), v(p2))).unwrap();
-    s.push(Triangle::new(v(p0), v(p2), v(p3))).unwrap();
-    s
+    [[p0, p1, p2], [p0, p2, p3]]
 }
 
 /// Two slopes each `steep` degrees from level meeting in a trough along z, the trough rising
