@@ -74,8 +74,7 @@ pub(super) fn resolve<S: Scalar, G: Geometry<S> + ?Sized>(
 }
 
 /// Where a ball at `from` moving by `rest` comes to rest after meeting `hit` in `scene`: a skin
-/// short of it ([`stand_off`]). Every lift off a plane is swept like a motion: in a corner
-/// narrower than 90° it points partly into the other wall.
+/// short of it ([`stand_off`]), a lift off it swept ([`lift_from`]).
 pub(super) fn settle<S: Scalar, G: Geometry<S> + ?Sized>(
     scene: &G,
     hit: &SceneHit<S>,
