@@ -124,19 +124,16 @@ pub(super) fn constrain<S: Scalar>(v: Vec3<S>, planes: &[Vec3<S>], primal: Vec3<
         lines.map(|c| c.scale(S::dot(v, c)))
     });
     // Of those kept, the one that removes least: each is a projection of `v`, so `v · w` is
-    // `|w|²`, and the largest is the closest motion to `v` that runs into no plane.
-    let longest = |best: Option<(S, Vec3<S>)>, w: Vec3<S>| {
+    // `|w|²`, and the largest is the closest motion to `v` that runs into no plane. Only one
+    // longer than the best so far is checked against the planes (the first on a tie).
+    let mut best: Option<(S, Vec3<S>)> = None;
+    for w in slides.chain(creases) {
         let d = S::dot(v, w);
-        match best {
-            Some((b, _)) if b >= d => best,
-            _ => Some((d, w)),
+        if best.is_none_or(|(b, _)| d > b) && keep(&w) {
+            best = Some((d, w));
         }
-    };
-    slides
-        .chain(creases)
-        .filter(keep)
-        .fold(None, longest)
-        .map_or(zero, |(_, w)| w)
+    }
+    best.map_or(zero, |(_, w)| w)
 }
 
 /// The cross product of two unit vectors, each component rounded once.
