@@ -3,17 +3,30 @@
 
 mod common;
 
-use ballcast::{Scene, Triangle, Vec3, move_and_slide, slide::skin};
+use ballcast::{Scalar, Scene, Triangle, Vec3, move_and_slide, slide::skin};
 use common::{P, Tolerance, add, back, distance_to_triangle, scale, v};
 use fixed::types::{I16F16, I32F32};
+
+/// Two triangles covering the parallelogram `o, o + a, o + a + b, o + b`, front `a × b`.
+fn quad(o: P, a: P, b: P) -> [[P; 3]; 2] {
+    let (oa, oab) = (add(o, a), add(add(o, a), b));
+    [[o, oa, oab], [o, oab, add(o, b)]]
+}
+
+/// A scene of the triangles `tris`, in the scalar.
+fn scene<S: Scalar, const N: usize>(tris: &[[P; 3]]) -> Scene<S, N> {
+    let mut scene = Scene::new();
+    for t in tris {
+        scene
+            .push(Triangle::new(v(t[0]), v(t[1]), v(t[2])))
+            .unwrap();
+    }
+    scene
+}
 
 /// The corner: walls from the origin along +x and along `(cos θ, 0, sin θ)`, `len` long and
 /// tall, fronts inside the wedge, on a floor at y = 0 under the whole corner.
 fn corner(theta: f64, len: f64) -> Vec<[P; 3]> {
-    let quad = |o: P, a: P, b: P| {
-        let (oa, oab) = (add(o, a), add(add(o, a), b));
-        [[o, oa, oab], [o, oab, add(o, b)]]
-    };
     let (up, u2) = ([0.0, len, 0.0], [theta.cos(), 0.0, theta.sin()]);
     let f = [-len, 0.0, -len];
     [
@@ -44,12 +57,7 @@ fn pushed_into_an_acute_corner_stays_out_of_the_walls<S: Tolerance>() {
         for (r, skins, uneven) in cases {
             let theta = degrees.to_radians();
             let tris = corner(theta, 6.0 * r / 0.5);
-            let mut scene: Scene<S, 6> = Scene::new();
-            for t in &tris {
-                scene
-                    .push(Triangle::new(v(t[0]), v(t[1]), v(t[2])))
-                    .unwrap();
-            }
+            let scene: Scene<S, 6> = scene(&tris);
             let half = theta / 2.0;
             let bisector = [half.cos(), 0.0, half.sin()];
             let start = add(
@@ -89,24 +97,13 @@ fn falling_into_a_slot_reaches_the_floor<S: Tolerance>() {
     let (r, dt) = (0.02, 1.0 / 60.0);
     let rs = S::from_f64(r);
     let w = r + skin(rs, S::from_f64(4.0)).to_f64() / 4.0;
-    let quad = |o: P, a: P, b: P| {
-        [
-            [o, add(o, a), add(add(o, a), b)],
-            [o, add(add(o, a), b), add(o, b)],
-        ]
-    };
     let tris = [
         quad([-3.2, -0.8, -w], [6.4, 0.0, 0.0], [0.0, 1.6, 0.0]),
         quad([-3.2, -0.8, w], [0.0, 1.6, 0.0], [6.4, 0.0, 0.0]),
         quad([-3.2, -0.4, -0.16], [0.0, 0.0, 0.32], [6.4, 0.0, 0.0]),
     ]
     .concat();
-    let mut scene: Scene<S, 6> = Scene::new();
-    for t in &tris {
-        scene
-            .push(Triangle::new(v(t[0]), v(t[1]), v(t[2])))
-            .unwrap();
-    }
+    let scene: Scene<S, 6> = scene(&tris);
     let (mut p, mut vy) = (v::<S>([-1.2, 0.0, 0.0]), 0.0);
     let mut landed = None;
     for frame in 0..120 {
@@ -151,12 +148,7 @@ fn walking_along_the_foot_of_an_overhang_does_not_stick<S: Tolerance>() {
         [f(-3.2, -3.2), f(-3.2, 3.2), f(0.5, 3.2)],
         [f(-3.2, -3.2), f(0.5, 3.2), f(0.5, -3.2)],
     ];
-    let mut scene: Scene<S, 4> = Scene::new();
-    for t in &tris {
-        scene
-            .push(Triangle::new(v(t[0]), v(t[1]), v(t[2])))
-            .unwrap();
-    }
+    let scene: Scene<S, 4> = scene(&tris);
     let (up, walkable) = (v::<S>([0.0, 1.0, 0.0]), S::from_f64(0.5f64.sqrt()));
     let wish = v::<S>(scale(
         [5f64.to_radians().sin(), 0.0, 5f64.to_radians().cos()],
