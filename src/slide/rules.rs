@@ -18,7 +18,7 @@ pub(super) type Planes<S> = Vec<Vec3<S>, { 2 * PLANES }>;
 /// positions do not walk by an ulp a call. One that started within a skin of the plane stays
 /// where it is (lifted by its motion's approach, a few steps, if the motion runs along the
 /// plane as rounded). One met at once (already touching or overlapping) is lifted by a skin
-/// instead, or in fixed point, if its motion runs along the plane as rounded, by its approach.
+/// instead.
 pub(super) fn stand_off<S: Scalar>(
     hit: &SceneHit<S>,
     rest: Vec3<S>,
@@ -27,18 +27,14 @@ pub(super) fn stand_off<S: Scalar>(
 ) -> (S, Vec3<S>) {
     let into = S::dot(rest, hit.normal);
     let zero = Vec3::ZERO;
-    // Along the plane as rounded: it comes closer by no more than the rounding of a height (as
-    // `constrain` leaves a slide, or, in `I16F16`, a press into a floor of a few steps a call).
-    let along = into < S::ZERO && into >= -S::height_error(magnitude(rest));
-    // Lifted by its approach, all of it clears the plane. Met after setting off, it started
-    // closer than that: left where it is, it would be met again at once, call after call. Met
-    // at once in fixed point, where moving a point is exact, it ends as high as it started,
-    // while a skin's lift would leave a slowly pressed ball off the floor for many calls.
-    // Floats round a moved point, so there a ball met at once takes the skin (below).
-    if along && (hit.alpha > S::ZERO || !S::PRECISION.relative) {
-        return (S::ZERO, hit.normal.scale(-into));
-    }
     if hit.alpha > S::ZERO && into < S::ZERO {
+        // Along the plane as rounded (it comes closer by no more than the rounding of a height,
+        // as `constrain` leaves a slide) yet met: it started closer than that. Lifted by its
+        // approach, all of it clears the plane; left where it is, it would be met again at
+        // once, call after call.
+        if into >= -S::height_error(magnitude(rest)) {
+            return (S::ZERO, hit.normal.scale(-into));
+        }
         let back = S::div(skin, -into);
         if back >= hit.alpha {
             // Started within a skin: it cannot back off along its path, so it stays.
