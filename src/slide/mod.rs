@@ -19,6 +19,7 @@ mod push;
 mod resolve;
 mod rules;
 mod slider;
+mod step;
 
 use crate::contact::unit;
 use crate::{Error, Geometry, Scalar, SceneHit, Sweep, Vec3, check};

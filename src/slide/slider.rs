@@ -63,7 +63,7 @@ impl<S: Scalar> Slider<S> {
     ///
     /// A step's edge is such a slope where the ball rounds it: a riser higher than
     /// `radius * (1 - min_cos)` (0.29 r for 45°) stops a ball it would otherwise lift onto the
-    /// step. There is no step-up rule here; an engine's character adds one on top.
+    /// step. A grounded ball's walk climbs such ledges with [`step_slide`](Self::step_slide).
     ///
     /// ```
     /// use ballcast::{Scene, Triangle, Vec3, slide::Slider};

@@ -1,0 +1,186 @@
+//! Stepping up: a walk stopped by a low ledge climbs onto it, as Quake's player movement does
+//! (`PM_StepSlideMove` in Quake III, `PM_GroundMove` in QuakeWorld): the move is tried as it
+//! is, and again lifted by the step's height, across, and lowered back, and the one that got
+//! farther along the walk is kept.
+
+use super::resolve::settle;
+use super::rules::magnitude;
+use super::{MAX_SLIDES, Slide, SlideContact, Slider, slope_limit};
+use crate::{Error, Geometry, Scalar, Sweep, Vec3, check};
+
+impl<S: Scalar> Slider<S> {
+    /// [`slide`](Self::slide) for a walk on the ground that steps up onto ledges no higher than
+    /// `height`. Where the move as it is touched something too steep to stand on (a riser, a
+    /// wall: `normal · up < min_cos`, as for [`Slide::floor`]), the step is tried: the ball is
+    /// slid up along `up` by `height` (less under a ceiling), then by `displacement`, then back
+    /// down by what it rose and two skins. The stepped move is kept if it ends on a floor more
+    /// than two skins higher than it started, and got farther along the walk (the part of
+    /// `displacement` across `up`) than the move as it is; else, and wherever a part of it is
+    /// refused (near the edge of the range), the move as it is is returned.
+    ///
+    /// A ball is round: stopped at a riser, it must be carried some way over the edge before
+    /// the edge holds it up as a floor (its contact normal within the slope limit). The move
+    /// across is therefore carried at least that far along the walk: for a ledge as high as the
+    /// ball rose (at most `r`), `sqrt(h (2r - h)) - r sqrt(1 - min_cos²)` and two skins (0.16 r
+    /// for `h = r / 2` and 45°; nothing for ledges up to `r (1 - min_cos)`, which the walk
+    /// climbs by itself). A step can so carry the ball farther than `displacement`, once per
+    /// ledge, as Jolt's `WalkStairs` steps forward by at least a minimum distance.
+    ///
+    /// The lowering stops at the first thing below, a skin short of it (a slide would carry a
+    /// ball landed on a walkable part of an edge down it, off the ledge). A stepped move's
+    /// contacts are the last of the move across and the landing, each `time` a fraction of its
+    /// own part; `blocked` is what the move across was denied. The ledge's own height is not measured: a ledge lower than `height`
+    /// with a floor beyond it is climbed, and one higher stops the ball as a wall would. Use it
+    /// for the walk of a grounded ball (the README's recipe), not for a fall: stepping while
+    /// falling past a ledge would catch the ball on it. Quake steps 18 units for a player 32
+    /// wide; about half the radius suits a ball.
+    ///
+    /// ```
+    /// use ballcast::{Scene, Triangle, Vec3, slide::Slider};
+    /// let v = Vec3::new;
+    /// let mut s: Scene<f32, 6> = Scene::new();
+    /// // A floor at y = 0 up to x = 1, a riser 0.2 high, and a floor at y = 0.2 beyond it.
+    /// s.push(Triangle::new(v(-9.0, 0.0, -9.0), v(-9.0, 0.0, 9.0), v(1.0, 0.0, 9.0)))?;
+    /// s.push(Triangle::new(v(-9.0, 0.0, -9.0), v(1.0, 0.0, 9.0), v(1.0, 0.0, -9.0)))?;
+    /// s.push(Triangle::new(v(1.0, 0.0, -9.0), v(1.0, 0.0, 9.0), v(1.0, 0.2, 9.0)))?;
+    /// s.push(Triangle::new(v(1.0, 0.0, -9.0), v(1.0, 0.2, 9.0), v(1.0, 0.2, -9.0)))?;
+    /// s.push(Triangle::new(v(1.0, 0.2, -9.0), v(1.0, 0.2, 9.0), v(9.0, 0.2, 9.0)))?;
+    /// s.push(Triangle::new(v(1.0, 0.2, -9.0), v(9.0, 0.2, 9.0), v(9.0, 0.2, -9.0)))?;
+    /// let (up, walkable) = (v(0.0, 1.0, 0.0), 0.7071);
+    /// let ball = Slider::new(0.5)?.with_max_slope(up, walkable)?;
+    /// let (at, walk) = (v(0.4, 0.5005, 0.0), v(0.3, 0.0, 0.0));
+    /// assert!(ball.slide(&s, at, walk)?.position.x < 0.6); // stopped by the riser
+    /// let out = ball.step_slide(&s, at, walk, up, walkable, 0.25)?;
+    /// // Up on the ledge's edge, which holds it as a floor: the next walk rolls it over.
+    /// assert!(out.position.x > 0.69 && out.position.y > 0.59);
+    /// assert!(out.floor(up, walkable)?.is_some());
+    /// # Ok::<(), ballcast::Error>(())
+    /// ```
+    ///
+    /// Errors: as [`slide`](Self::slide) (for the move as it is) and [`Slide::floor`];
+    /// [`Error::NaN`] or [`Error::OutOfRange`] for a `height` below zero or beyond
+    /// `±`[`Scalar::LIMIT`].
+    pub fn step_slide<G: Geometry<S> + ?Sized>(
+        &self,
+        scene: &G,
+        position: Vec3<S>,
+        displacement: Vec3<S>,
+        up: Vec3<S>,
+        min_cos: S,
+        height: S,
+    ) -> Result<Slide<S>, Error> {
+        let (up_unit, cos) = slope_limit(up, min_cos)?;
+        let height = check::within(height, S::ZERO, S::LIMIT)?;
+        let plain = self.slide(scene, position, displacement)?;
+        let steep = |s: &Slide<S>| {
+            let mut contacts = s.contacts.iter().flatten();
+            contacts.any(|c| S::dot(c.hit.normal, up_unit) < cos)
+        };
+        if !steep(&plain) || height == S::ZERO {
+            return Ok(plain);
+        }
+        Ok(self
+            .stepped(
+                scene,
+                position + plain.pushed_out,
+                displacement,
+                up_unit,
+                cos,
+                height,
+            )
+            .filter(|out| {
+                // Farther along the walk's part across `up`, from where both started.
+                let start = position + plain.pushed_out;
+                let across = |p: Vec3<S>| {
+                    let d = p - start;
+                    d - up_unit.scale(S::dot(d, up_unit))
+                };
+                let wish = across(start + displacement);
+                S::dot(across(out.position), wish) > S::dot(across(plain.position), wish)
+            })
+            .map_or(plain, |out| Slide {
+                pushed_out: plain.pushed_out,
+                ..out
+            }))
+    }
+
+    /// The move lifted by up to `height` along `up` (a unit vector), across (carried at least
+    /// [`landing`] and two skins along the walk), and lowered by what it rose and two skins onto
+    /// a floor; `None` if it lands on none, or if a part is refused or cannot rise by more than
+    /// a skin.
+    fn stepped<G: Geometry<S> + ?Sized>(
+        &self,
+        scene: &G,
+        start: Vec3<S>,
+        displacement: Vec3<S>,
+        up: Vec3<S>,
+        min_cos: S,
+        height: S,
+    ) -> Option<Slide<S>> {
+        let skin = self.skin(magnitude(start));
+        let raised = self.slide(scene, start, up.scale(height)).ok()?;
+        let rise = S::dot(raised.position - start, up);
+        if rise <= skin {
+            return None;
+        }
+        let walk = displacement - up.scale(S::dot(displacement, up));
+        let (len, dir) = S::direction(walk)?;
+        let short = landing(self.radius, rise, min_cos) + skin + skin - len;
+        let forward = if short > S::ZERO {
+            displacement + dir.map(S::unit_to_scalar).scale(short)
+        } else {
+            displacement
+        };
+        let across = self.slide(scene, raised.position, forward).ok()?;
+        // Lowered onto the first thing below, a skin short of it as a slide stops: a slide
+        // would carry on down a walkable edge, back off the ledge.
+        let (r, from) = (self.radius, across.position);
+        let drop = Vec3::ZERO - up.scale(rise + skin + skin);
+        let hit = scene.cast(&Sweep::new(from, from + drop, r).ok()?)?;
+        if S::dot(hit.normal, up) < min_cos {
+            return None;
+        }
+        let rounding = S::height_error(magnitude(from));
+        let position = settle(scene, &hit, from, drop, (r, skin), rounding);
+        // On a ledge, not back where it started (or beside it, carried along a wall by the
+        // extra forward step).
+        if S::dot(position - start, up) <= skin + skin {
+            return None;
+        }
+        let landed = SlideContact {
+            hit,
+            point: hit.position - hit.normal.scale(r),
+            time: hit.alpha,
+        };
+        // The move across's last contacts, then the landing.
+        let mut contacts = [None; MAX_SLIDES];
+        let before = across.contacts.iter().flatten();
+        let skip = before.clone().count().saturating_sub(MAX_SLIDES - 1);
+        let all = before.skip(skip).copied().chain([landed]);
+        for (slot, c) in contacts.iter_mut().zip(all) {
+            *slot = Some(c);
+        }
+        Some(Slide {
+            position,
+            pushed_out: Vec3::ZERO,
+            blocked: across.blocked,
+            contacts,
+        })
+    }
+}
+
+/// How far past a ledge's edge a ball of radius `r` must be carried after rising by `rise` to
+/// come down on a walkable part of it: stopped at the riser of a ledge `h = min(rise, r)` high,
+/// its centre stands `sqrt(h (2r - h))` short of the edge across the riser, and the edge holds
+/// it up as a floor (contact normal within the limit `min_cos` of `up`) only within
+/// `r sqrt(1 - min_cos²)` of it. Zero where the first is the smaller (ledges up to
+/// `r (1 - min_cos)`, which the walk climbs by itself). Jolt's `WalkStairs` likewise steps
+/// forward at least a minimum distance, so that a short step still clears the edge.
+fn landing<S: Scalar>(r: S, rise: S, min_cos: S) -> S {
+    let h = if rise < r { rise } else { r };
+    let z = S::ZERO;
+    let at_riser = S::chord(r, Vec3::new(r - h, z, z)).unwrap_or(z);
+    let cos = if min_cos > z { min_cos } else { z };
+    let held = S::chord(r, Vec3::new(r.mul(cos), z, z)).unwrap_or(z);
+    if at_riser > held { at_riser - held } else { z }
+}

@@ -1,0 +1,230 @@
+//! Stepping up onto ledges with `Slider::step_slide`, in the README's walking recipe (press into
+//! the floor, walk along it, the ground probe when no move touched a floor): ledges lower than
+//! the step are climbed, higher ones stop the ball, a ceiling too low for the step stops it, and
+//! walks that meet no ledge (along a wall, on a floor) are the plain slide's, bit for bit. Every
+//! property in every scalar; expected values worked by hand.
+
+mod common;
+
+use ballcast::{Error, Geometry, Scalar, Scene, Triangle, Vec3, slide::Slider};
+use common::{P, Tolerance, back, v};
+use fixed::types::{I16F16, I32F32};
+
+/// Two triangles covering the parallelogram `o, o + a, o + a + b, o + b`, front `a × b`.
+fn quad<S: Scalar>(o: P, a: P, b: P) -> [Triangle<S>; 2] {
+    let (oa, ob) = (common::add(o, a), common::add(o, b));
+    let oab = common::add(oa, b);
+    [
+        Triangle::new(v(o), v(oa), v(oab)),
+        Triangle::new(v(o), v(oab), v(ob)),
+    ]
+}
+
+/// A floor at y = 0 up to x = 1, a riser `h` high facing −x, the ledge's floor at y = `h`
+/// beyond it, and, if `ceiling`, a ceiling facing down at that height over the whole level.
+fn ledge<S: Scalar>(h: f64, ceiling: Option<f64>) -> Scene<S, 8> {
+    let mut s = Scene::new();
+    let quads = [
+        quad([-9.0, 0.0, -9.0], [0.0, 0.0, 18.0], [10.0, 0.0, 0.0]),
+        quad([1.0, 0.0, -9.0], [0.0, 0.0, 18.0], [0.0, h, 0.0]),
+        quad([1.0, h, -9.0], [0.0, 0.0, 18.0], [8.0, 0.0, 0.0]),
+    ];
+    for t in quads.into_iter().flatten() {
+        s.push(t).unwrap();
+    }
+    if let Some(y) = ceiling {
+        for t in quad([-9.0, y, -9.0], [18.0, 0.0, 0.0], [0.0, 0.0, 18.0]) {
+            s.push(t).unwrap();
+        }
+    }
+    s
+}
+
+/// The README's recipe at 60 Hz for r = 0.5, slopes up to 45° walkable and held back by
+/// steeper ones, walking at `wish`, with steps of `step` (none if zero), for `frames` frames
+/// from `start`; calls `each(position, grounded)` after every frame.
+fn walk<S: Scalar, G: Geometry<S>>(
+    level: &G,
+    start: P,
+    wish: P,
+    step: f64,
+    frames: usize,
+    mut each: impl FnMut(Vec3<S>, bool),
+) -> Vec3<S> {
+    let (dt, g) = (S::from_f64(1.0 / 60.0), S::from_f64(9.81));
+    let (up, walkable) = (v::<S>([0.0, 1.0, 0.0]), S::from_f64(0.5f64.sqrt()));
+    let ball = Slider::new(S::from_f64(0.5)).unwrap();
+    let ball = ball.with_max_slope(up, walkable).unwrap();
+    let (wish, step) = (v::<S>(wish), S::from_f64(step));
+    let (mut p, mut vel, mut floor) = (v::<S>(start), Vec3::ZERO, None);
+    for _ in 0..frames {
+        let out = match floor {
+            Some(n) => {
+                let press = Vec3::ZERO - n * g.mul(dt).mul(dt);
+                let pressed = ball.slide(level, p, press).unwrap();
+                vel = wish - n * wish.dot(n);
+                let out = ball
+                    .step_slide(level, pressed.position, vel * dt, up, walkable, step)
+                    .unwrap();
+                floor = out.floor_normal(up, walkable).unwrap();
+                floor = floor.or(pressed.floor_normal(up, walkable).unwrap());
+                out
+            }
+            None => {
+                vel += v::<S>([0.0, -9.81, 0.0]) * dt;
+                let out = ball.slide(level, p, vel * dt).unwrap();
+                floor = out.floor_normal(up, walkable).unwrap();
+                out
+            }
+        };
+        p = out.position;
+        vel = ball.clip(&out, vel).unwrap();
+        if floor.is_none() {
+            floor = ball.probe_floor(level, p, up, walkable).unwrap();
+        }
+        each(p, floor.is_some());
+    }
+    p
+}
+
+/// Walking at 2 units/s onto ledges 0.1–0.25 high with a step of 0.25 (half the radius): after
+/// 3 s the ball is on the ledge, resting a skin above it, and it never went below the floors
+/// nor into the riser. With the slope limit and no step, the riser of a ledge higher than
+/// `r (1 - cos 45°)` = 0.146 stops it: 0.2 and 0.25 are climbed only by stepping.
+fn climbs_ledges_lower_than_the_step<S: Tolerance>() {
+    for h in [0.1, 0.2, 0.25] {
+        let level = ledge::<S>(h, None);
+        let end = walk(
+            &level,
+            [-0.5, 0.6, 0.0],
+            [2.0, 0.0, 0.0],
+            0.25,
+            180,
+            |p, _| {
+                // Clear of the lower floor, of the riser (the segment x = 1, 0 <= y <= h) and,
+                // over the ledge, of its floor, all within rounding.
+                let [x, y, _] = back(p);
+                let riser = ((1.0 - x).powi(2) + (y - y.clamp(0.0, h)).powi(2)).sqrt();
+                let clear = if x < 1.0 { riser } else { y - h };
+                assert!(
+                    y >= 0.5 - 1e-3 && clear >= 0.5 - 1e-3,
+                    "{}: ledge {h}: inside the level at {:?}",
+                    S::NAME,
+                    back(p)
+                );
+            },
+        );
+        let [x, y, _] = back(end);
+        assert!(
+            x > 4.0 && (y - (h + 0.5)).abs() < 2e-3,
+            "{}: ledge {h}: ended at {:?}",
+            S::NAME,
+            back(end)
+        );
+        if h > 0.15 {
+            let held = walk(
+                &level,
+                [-0.5, 0.6, 0.0],
+                [2.0, 0.0, 0.0],
+                0.0,
+                180,
+                |_, _| {},
+            );
+            assert!(back(held)[0] < 0.61, "{}: ledge {h}: {held:?}", S::NAME);
+        }
+    }
+}
+
+/// A ledge of 0.3 with a step of 0.25 stops the ball at its riser, grounded on the lower floor
+/// (the stepped move lands on the edge at a contact too steep to stand on, and is dropped).
+/// So does a ledge of 0.2 under a ceiling 1.1 high: the ball rises only 0.1 below it, less than
+/// the ledge.
+fn stopped_by_a_ledge_higher_than_the_step_or_under_a_ceiling<S: Tolerance>() {
+    for (h, ceiling) in [(0.3, None), (0.2, Some(1.1))] {
+        let level = ledge::<S>(h, ceiling);
+        let mut grounded = 0;
+        let end = walk(
+            &level,
+            [-0.5, 0.6, 0.0],
+            [2.0, 0.0, 0.0],
+            0.25,
+            180,
+            |_, g| {
+                grounded += g as usize;
+            },
+        );
+        let [x, y, _] = back(end);
+        assert!(
+            x < 0.61 && (y - 0.5).abs() < 2e-3 && grounded >= 170,
+            "{}: ledge {h}, ceiling {ceiling:?}: ended at {:?}, grounded {grounded}",
+            S::NAME,
+            back(end)
+        );
+    }
+}
+
+/// Where no ledge is met, `step_slide` is `slide`, bit for bit: on a floor, walking along a
+/// wall taller than the step (the stepped move comes back down where it started, so it is
+/// dropped, though its forward step is longer than the walk), and into it.
+fn without_a_ledge_it_is_the_plain_slide<S: Tolerance>() {
+    let mut level: Scene<S, 4> = Scene::new();
+    let quads = [
+        quad([-9.0, 0.0, -9.0], [0.0, 0.0, 18.0], [18.0, 0.0, 0.0]),
+        quad([1.0, 0.0, -9.0], [0.0, 0.0, 18.0], [0.0, 3.0, 0.0]),
+    ];
+    for t in quads.into_iter().flatten() {
+        level.push(t).unwrap();
+    }
+    let (up, walkable) = (v::<S>([0.0, 1.0, 0.0]), S::from_f64(0.5f64.sqrt()));
+    let ball = Slider::new(S::from_f64(0.5)).unwrap();
+    let step = S::from_f64(0.25);
+    for (start, walk) in [
+        ([-2.0, 0.5005, 0.0], [0.03, 0.0, 0.02]),
+        ([0.4995, 0.5005, 0.0], [0.001, 0.0, 0.03]),
+        ([0.4995, 0.5005, 0.0], [0.02, 0.0, 0.0]),
+        ([0.3, 0.5005, 0.0], [0.3, 0.0, 0.1]),
+    ] {
+        let (p, d) = (v::<S>(start), v::<S>(walk));
+        let plain = ball.slide(&level, p, d).unwrap();
+        let stepped = ball.step_slide(&level, p, d, up, walkable, step).unwrap();
+        assert_eq!(plain, stepped, "{}: from {start:?} by {walk:?}", S::NAME);
+    }
+}
+
+/// Bad step heights are errors: below zero, NaN.
+fn bad_steps_are_errors<S: Tolerance>() {
+    let level = ledge::<S>(0.2, None);
+    let (up, walkable) = (v::<S>([0.0, 1.0, 0.0]), S::from_f64(0.5f64.sqrt()));
+    let ball = Slider::new(S::from_f64(0.5)).unwrap();
+    let (p, d) = (v::<S>([0.0, 0.6, 0.0]), v::<S>([0.1, 0.0, 0.0]));
+    let negative = ball.step_slide(&level, p, d, up, walkable, S::from_f64(-0.1));
+    assert!(
+        matches!(negative, Err(Error::OutOfRange { .. })),
+        "{negative:?}"
+    );
+    let zero_up = ball.step_slide(&level, p, d, Vec3::ZERO, walkable, S::ONE);
+    assert_eq!(zero_up, Err(Error::ZeroVector));
+}
+
+macro_rules! per_scalar {
+    ($($m:ident: $t:ty),*) => {$(mod $m {
+        #[allow(unused_imports)]
+        use super::*;
+        #[test]
+        fn climbs_ledges_lower_than_the_step() {
+            super::climbs_ledges_lower_than_the_step::<$t>();
+        }
+        #[test]
+        fn stopped_by_a_ledge_higher_than_the_step_or_under_a_ceiling() {
+            super::stopped_by_a_ledge_higher_than_the_step_or_under_a_ceiling::<$t>();
+        }
+        #[test]
+        fn without_a_ledge_it_is_the_plain_slide() {
+            super::without_a_ledge_it_is_the_plain_slide::<$t>();
+        }
+        #[test]
+        fn bad_steps_are_errors() { super::bad_steps_are_errors::<$t>(); }
+    })*};
+}
+
+per_scalar!(f64_: f64, f32_: f32, i32f32: I32F32, i16f16: I16F16);
