@@ -156,7 +156,7 @@ pub use penetration::{Penetration, penetration};
 pub use plan::{Precision, ScalarType, Verdict, choose, plan};
 pub use scalar::Scalar;
 pub use scene::{Geometry, Scene, SceneHit};
-pub use slide::{MAX_SLIDES, Slide, SlideContact, Slider, move_and_slide};
+pub use slide::{Floor, MAX_SLIDES, Slide, SlideContact, Slider, move_and_slide};
 pub use sweep::{StandardSweep, Sweep};
 pub use triangle::{Edge, Parts, StandardTriangle, Triangle};
 pub use vec3::Vec3;

@@ -163,7 +163,7 @@ fn pushed_into_a_wedge_under_an_overhang_stays_grounded<S: Tolerance>() {
                 p = out.position;
                 let floor = match out.floor_normal(up, walkable).unwrap() {
                     Some(n) => Some(n),
-                    None => ball.probe_floor(&scene, p, up, walkable).unwrap(),
+                    None => (ball.probe_floor(&scene, p, up, walkable).unwrap()).map(|f| f.normal),
                 };
                 assert!(
                     call < 1500 || floor == Some(up),

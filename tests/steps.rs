@@ -58,6 +58,7 @@ fn walk<S: Scalar, G: Geometry<S>>(
     let (wish, step) = (v::<S>(wish), S::from_f64(step));
     let (mut p, mut vel, mut floor) = (v::<S>(start), Vec3::ZERO, None);
     for _ in 0..frames {
+        let walked = floor.is_some();
         let out = match floor {
             Some(n) => {
                 let press = Vec3::ZERO - n * g.mul(dt).mul(dt);
@@ -79,8 +80,11 @@ fn walk<S: Scalar, G: Geometry<S>>(
         };
         p = out.position;
         vel = ball.clip(&out, vel).unwrap();
-        if floor.is_none() {
-            floor = ball.probe_floor(level, p, up, walkable).unwrap();
+        if floor.is_none()
+            && let Some(f) = ball.probe_floor(level, p, up, walkable).unwrap()
+            && (walked || vel.dot(f.normal) <= S::ZERO)
+        {
+            (floor, p) = (Some(f.normal), f.position);
         }
         each(p, floor.is_some());
     }

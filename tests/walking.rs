@@ -17,11 +17,22 @@ type State<S> = (Vec3<S>, Vec3<S>, Option<Vec3<S>>);
 /// the ball held back by steeper slopes if `held`.
 fn frame<S: Scalar, G: Geometry<S>>(
     level: &G,
-    (p, vel, floor): State<S>,
+    state: State<S>,
     wish: Vec3<S>,
     held: bool,
 ) -> State<S> {
-    let (dt, g) = (S::from_f64(1.0 / 60.0), S::from_f64(9.81));
+    frame_at(level, state, wish, held, 60.0)
+}
+
+/// [`frame`] at `hz` frames a second.
+fn frame_at<S: Scalar, G: Geometry<S>>(
+    level: &G,
+    (p, vel, floor): State<S>,
+    wish: Vec3<S>,
+    held: bool,
+    hz: f64,
+) -> State<S> {
+    let (dt, g) = (S::from_f64(1.0 / hz), S::from_f64(9.81));
     let (up, walkable) = (v::<S>([0.0, 1.0, 0.0]), S::from_f64(0.5f64.sqrt()));
     let ball = Slider::new(S::from_f64(0.5)).unwrap();
     let ball = if held {
@@ -29,6 +40,7 @@ fn frame<S: Scalar, G: Geometry<S>>(
     } else {
         ball
     };
+    let walked = floor.is_some();
     let (p, vel, floor) = match floor {
         Some(n) => {
             // Pressed into the floor first, along its own normal (so it does not slide), then
@@ -49,12 +61,15 @@ fn frame<S: Scalar, G: Geometry<S>>(
             (out.position, ball.clip(&out, vel).unwrap(), floor)
         }
     };
-    // The ground probe, when neither move touched a floor.
-    let floor = match floor {
-        Some(n) => Some(n),
-        None => ball.probe_floor(level, p, up, walkable).unwrap(),
-    };
-    (p, vel, floor)
+    // The ground probe, when neither move touched a floor: grounded and snapped down onto the
+    // floor it finds, unless the ball was in the air and moves away from it (a jump).
+    match floor {
+        None => match ball.probe_floor(level, p, up, walkable).unwrap() {
+            Some(f) if walked || vel.dot(f.normal) <= S::ZERO => (f.position, vel, Some(f.normal)),
+            _ => (p, vel, None),
+        },
+        _ => (p, vel, floor),
+    }
 }
 
 /// Standing on a 30° slope for 10 s. Gravity added to the velocity slides a frictionless ball
@@ -219,9 +234,10 @@ fn running_on_a_floor_at_480_hz_stays_grounded<S: Tolerance>() {
             let out = ball.slide(&level, p, vel * dt).unwrap();
             p = out.position;
             vel = ball.clip(&out, vel).unwrap();
+            let probe = || ball.probe_floor(&level, p, up, walkable).unwrap();
             let grounded = match out.floor_normal(up, walkable).unwrap() {
                 Some(n) => Some(n),
-                None => ball.probe_floor(&level, p, up, walkable).unwrap(),
+                None => probe().map(|f| f.normal).filter(|&n| vel.dot(n) <= S::ZERO),
             };
             if frame_no == jump {
                 // A jump at 1 unit/s clears two skins within a frame or two and lands after
@@ -247,6 +263,56 @@ fn running_on_a_floor_at_480_hz_stays_grounded<S: Tolerance>() {
     }
 }
 
+/// The recipe at 1920 Hz, where gravity's press `g dt²` (2.7e-6) rounds to nothing in
+/// `I16F16`: walking down and across a 10° slope, the ball is grounded on every frame after it
+/// lands. Without the floor snap (the probe's position), the ball drifted up to two skins off
+/// the slope and the probe found it on about two frames in three.
+fn walking_on_a_slope_at_1920_hz_stays_grounded<S: Tolerance>() {
+    let t = 10f64.to_radians();
+    let n = [t.sin(), t.cos(), 0.0];
+    let scene = common::slope::<S>(n);
+    let mut state = (
+        v::<S>(common::scale(n, 0.5005)),
+        Vec3::ZERO,
+        Some(v::<S>(n)),
+    );
+    for frame_no in 0..1920 {
+        state = frame_at(&scene, state, v::<S>([1.8, 0.0, 0.4]), true, 1920.0);
+        assert!(
+            state.2.is_some(),
+            "{}: frame {frame_no} in the air at {:?}",
+            S::NAME,
+            common::back(state.0)
+        );
+    }
+}
+
+/// A jump at 1 unit/s from a floor at 1920 Hz in the recipe rises to v² / 2g = 0.051. The
+/// ground probe, asked on its first frames, finds the floor within two skins: taken as ground,
+/// the recipe's walk replaced the jump's velocity, and the ball rose 0.001.
+fn a_jump_at_1920_hz_leaves_the_floor<S: Tolerance>() {
+    let scene = common::slope::<S>([0.0, 1.0, 0.0]);
+    let up = v::<S>([0.0, 1.0, 0.0]);
+    let mut state = (v::<S>([0.0, 0.5, 0.0]), Vec3::ZERO, Some(up));
+    for _ in 0..100 {
+        state = frame_at(&scene, state, Vec3::ZERO, false, 1920.0);
+    }
+    let rest = state.0.y.to_f64();
+    state = (state.0, up, None);
+    let mut peak = rest;
+    for _ in 0..400 {
+        state = frame_at(&scene, state, Vec3::ZERO, false, 1920.0);
+        peak = peak.max(state.0.y.to_f64());
+    }
+    let rise = peak - rest;
+    assert!(
+        (rise - 0.051).abs() < 0.005 && state.2.is_some(),
+        "{}: rose {rise}, grounded at the end: {}",
+        S::NAME,
+        state.2.is_some()
+    );
+}
+
 macro_rules! per_scalar {
     ($($m:ident: $t:ty),*) => {$(mod $m {
         #[allow(unused_imports)]
@@ -266,6 +332,14 @@ macro_rules! per_scalar {
         #[test]
         fn running_on_a_floor_at_480_hz_stays_grounded() {
             super::running_on_a_floor_at_480_hz_stays_grounded::<$t>()
+        }
+        #[test]
+        fn walking_on_a_slope_at_1920_hz_stays_grounded() {
+            super::walking_on_a_slope_at_1920_hz_stays_grounded::<$t>()
+        }
+        #[test]
+        fn a_jump_at_1920_hz_leaves_the_floor() {
+            super::a_jump_at_1920_hz_leaves_the_floor::<$t>()
         }
         #[test]
         fn walking_across_a_steep_valley_held_by_the_slope_limit() {

@@ -14,6 +14,10 @@
 //!
 //! Every product and quotient rounds to nearest through the [`Scalar`] trait, so a resting ball
 //! pushed into a floor does not creep along it.
+//!
+//! For a character on top of these rules: [`Slide::floor`] (grounded by the move's contacts),
+//! [`Slider::probe_floor`] (a ground probe for a ball resting within a skin of its floor) and
+//! [`Slider::step_slide`] (a walk that steps up onto low ledges).
 
 mod push;
 mod resolve;
@@ -51,6 +55,19 @@ pub struct Slide<S> {
 
 /// A floor contact and the normal of the floor it stands for (see [`Slide::floor_normal`]).
 type Ground<'a, S> = (&'a SlideContact<S>, Vec3<S>);
+
+/// The floor a ground probe found ([`Slider::probe_floor`]): a plain `Copy` struct.
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+#[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", serde(bound = "S: crate::Scalar"))]
+pub struct Floor<S> {
+    /// Its normal, as [`Slide::floor_normal`] gives it (a valley's: between its two slopes).
+    pub normal: Vec3<S>,
+    /// Where the probe's slide down ended: the ball's centre moved onto the floor, a skin off
+    /// it, or where it was if it was closer (a game's floor snap).
+    pub position: Vec3<S>,
+}
 
 /// A contact met by [`move_and_slide`], with where and when it happened.
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]

@@ -1,7 +1,7 @@
 //! A ball's settings: its radius, its skin and the steepest slope it can be carried up.
 
 use super::rules::magnitude;
-use super::{Slide, run, skin, slope_limit};
+use super::{Floor, Slide, run, skin, slope_limit};
 use crate::{Error, Geometry, Scalar, Vec3, check};
 
 /// A ball's settings for [`Slider::slide`]: its radius and, optionally, its own skin and a
@@ -116,10 +116,11 @@ impl<S: Scalar> Slider<S> {
         run(self, scene, position, displacement)
     }
 
-    /// A ground probe: the floor a ball resting at `position` stands on, found by a slide of
-    /// this ball down along `up` by two skins ([`skin`](Self::skin) at `position`) that is not
-    /// kept: its [`Slide::floor_normal`] with the same `up` and `min_cos`. The ball is not
-    /// moved.
+    /// A ground probe: the floor a ball at `position` rests on, found by a slide of this ball
+    /// down along `up` by two skins ([`skin`](Self::skin) at `position`): that slide's
+    /// [`Slide::floor_normal`] with the same `up` and `min_cos`, and where it ended
+    /// ([`Floor::position`]: at most a skin off the floor, a game's *floor snap*). The ball
+    /// itself is not moved.
     ///
     /// Why: the response keeps a ball a skin off what it touched, and lifts one met at once (a
     /// ball left exactly touching a floor, say) by a skin. A ball resting on a floor is then up
@@ -131,8 +132,12 @@ impl<S: Scalar> Slider<S> {
     /// floor within its snap length: running across a level floor at 480 Hz with gravity, an
     /// `I16F16` ball's moves touched the floor on 120 of 480 frames, and with the probe it was
     /// grounded on all of them (at 1920 Hz, on 33 of the first 480 frames, and on all; `f32` and
-    /// `f64` on 456, and on all).
+    /// `f64` on 456, and on all). Where even the press rounds to nothing (`I16F16` from 960 Hz),
+    /// a ball on a slope drifts up to two skins off it; moved to [`Floor::position`], it stays
+    /// within one.
     ///
+    /// Do not take a floor the ball moves away from (`velocity · normal > 0`: a jump's first
+    /// frames, still within two skins of the ground) as ground, as Quake III does not.
     /// Two skins reach a walkable floor a skin off along its normal up to 60° steep. In a
     /// valley of slopes too steep to stand on, a ball a skin off both is further above them
     /// than that (80° slopes: 5.8 skins): there the move's own contacts find the valley.
@@ -145,28 +150,34 @@ impl<S: Scalar> Slider<S> {
     /// s.push(Triangle::new(v(-9.0, 0.0, -9.0), v(-9.0, 0.0, 9.0), v(9.0, 0.0, 0.0)))?;
     /// let (ball, up, walkable) = (Slider::new(0.5)?, v(0.0, 1.0, 0.0), 0.7071);
     /// let skin = ball.skin(1.0);
-    /// // A skin above the floor: a small press misses it, the probe finds it.
-    /// let at = v(0.0, 0.5 + skin, 0.0);
+    /// // 1.5 skins above the floor: a small press misses it, the probe finds it.
+    /// let at = v(0.0, 0.5 + 1.5 * skin, 0.0);
     /// let pressed = ball.slide(&s, at, v(0.0, -skin / 4.0, 0.0))?;
     /// assert!(pressed.floor(up, walkable)?.is_none());
-    /// assert_eq!(ball.probe_floor(&s, at, up, walkable)?, Some(up));
+    /// let floor = ball.probe_floor(&s, at, up, walkable)?.expect("within two skins");
+    /// assert_eq!(floor.normal, up);
+    /// assert!((floor.position.y - (0.5 + skin)).abs() < 1e-6); // snapped to a skin off it
     /// // Three skins above it: in the air.
     /// assert_eq!(ball.probe_floor(&s, v(0.0, 0.5 + 3.0 * skin, 0.0), up, walkable)?, None);
     /// # Ok::<(), ballcast::Error>(())
     /// ```
     ///
-    /// Errors: as [`Slider::slide`] (for the probe's move) and [`Slide::floor`].
+    /// Errors: as [`Slider::slide`] (for the probe's move, so keep the world two skins inside
+    /// `±`[`Scalar::LIMIT`]) and [`Slide::floor`].
     pub fn probe_floor<G: Geometry<S> + ?Sized>(
         &self,
         scene: &G,
         position: Vec3<S>,
         up: Vec3<S>,
         min_cos: S,
-    ) -> Result<Option<Vec3<S>>, Error> {
+    ) -> Result<Option<Floor<S>>, Error> {
         let (down, _) = slope_limit(up, min_cos)?;
         let skin = self.skin(magnitude(check::point(position, S::LIMIT)?));
         let probe = self.slide(scene, position, Vec3::ZERO - down.scale(skin + skin))?;
-        probe.floor_normal(up, min_cos)
+        Ok(probe.floor_normal(up, min_cos)?.map(|normal| Floor {
+            normal,
+            position: probe.position,
+        }))
     }
 
     /// [`Slide::clip`] of `velocity` by what `slide` (a move of this ball) touched, held back
