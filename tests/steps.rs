@@ -195,7 +195,71 @@ fn without_a_ledge_it_is_the_plain_slide<S: Tolerance>() {
     }
 }
 
-/// Bad step heights are errors: below zero, NaN.
+/// Ledges of 0.2 and 0.25 met at a slant (the walk 15°–75° from head-on), from z = −8: climbed
+/// too. The step once carried the ball over the edge along the walk, not into the riser: it
+/// landed on the edge's steep part, was dropped, and the ball stayed at the riser for good
+/// (0.25 from 15°, 0.2 from 60°).
+fn climbs_ledges_met_at_a_slant<S: Tolerance>() {
+    for h in [0.2, 0.25] {
+        let level = ledge::<S>(h, None);
+        for degrees in [15.0f64, 30.0, 45.0, 60.0, 75.0] {
+            let (sin, cos) = degrees.to_radians().sin_cos();
+            let end = walk(
+                &level,
+                [-0.5, 0.6, -8.0],
+                [2.0 * cos, 0.0, 2.0 * sin],
+                0.25,
+                240,
+                |_, _| {},
+            );
+            let [x, y, _] = back(end);
+            assert!(
+                x > 1.1 && (y - (h + 0.5)).abs() < 2e-3,
+                "{}: ledge {h} at {degrees}°: ended at {:?}",
+                S::NAME,
+                back(end)
+            );
+        }
+    }
+}
+
+/// Walking up a 10°–35° slope beside a tall wall, 10° into the wall: every call touches the
+/// wall, so every call tries a step, and the step must be dropped (the plain slide, bit for
+/// bit). Its forward push was kept, since on the slope the ball landed higher than it
+/// started: 2.7 times the walk's travel a call.
+fn a_wall_beside_an_up_slope_is_no_ledge<S: Tolerance>() {
+    let (up, walkable) = (v::<S>([0.0, 1.0, 0.0]), S::from_f64(0.5f64.sqrt()));
+    let ball = Slider::new(S::from_f64(0.5)).unwrap();
+    let ball = ball.with_max_slope(up, walkable).unwrap();
+    for degrees in [10.0f64, 20.0, 35.0] {
+        let t = degrees.to_radians().tan();
+        let mut level: Scene<S, 4> = Scene::new();
+        let quads = [
+            quad(
+                [-9.0, -9.0 * t, -9.0],
+                [0.0, 0.0, 18.0],
+                [18.0, 18.0 * t, 0.0],
+            ),
+            quad([-9.0, -9.0, 1.0], [0.0, 18.0, 0.0], [18.0, 0.0, 0.0]),
+        ];
+        for tri in quads.into_iter().flatten() {
+            level.push(tri).unwrap();
+        }
+        let n = [-degrees.to_radians().sin(), degrees.to_radians().cos(), 0.0];
+        let (sin, cos) = 10f64.to_radians().sin_cos();
+        let wish = [2.0 * cos, 0.0, 2.0 * sin];
+        let d = common::scale(
+            common::sub(wish, common::scale(n, common::dot(wish, n))),
+            1.0 / 60.0,
+        );
+        let p = [0.0, 0.5005 / n[1], 0.4996];
+        let plain = ball.slide(&level, v(p), v(d)).unwrap();
+        let stepped = ball.step_slide(&level, v(p), v(d), up, walkable, S::from_f64(0.25));
+        assert_eq!(Ok(plain), stepped, "{}: {degrees}° slope", S::NAME);
+    }
+}
+
+/// Bad step heights and a zero `up` are errors.
 fn bad_steps_are_errors<S: Tolerance>() {
     let level = ledge::<S>(0.2, None);
     let (up, walkable) = (v::<S>([0.0, 1.0, 0.0]), S::from_f64(0.5f64.sqrt()));
@@ -225,6 +289,12 @@ macro_rules! per_scalar {
         #[test]
         fn without_a_ledge_it_is_the_plain_slide() {
             super::without_a_ledge_it_is_the_plain_slide::<$t>();
+        }
+        #[test]
+        fn climbs_ledges_met_at_a_slant() { super::climbs_ledges_met_at_a_slant::<$t>(); }
+        #[test]
+        fn a_wall_beside_an_up_slope_is_no_ledge() {
+            super::a_wall_beside_an_up_slope_is_no_ledge::<$t>();
         }
         #[test]
         fn bad_steps_are_errors() { super::bad_steps_are_errors::<$t>(); }

@@ -1,7 +1,7 @@
 //! Stepping up: a walk stopped by a low ledge climbs onto it, as Quake's player movement does
 //! (`PM_StepSlideMove` in Quake III, `PM_GroundMove` in QuakeWorld): the move is tried as it
-//! is, and again lifted by the step's height, across, and lowered back, and the one that got
-//! farther along the walk is kept.
+//! is, and again lifted by the step's height, across, and lowered back, and the stepped one is
+//! kept where it got past what stopped the first.
 
 use super::resolve::settle;
 use super::rules::magnitude;
@@ -9,31 +9,40 @@ use super::{MAX_SLIDES, Slide, SlideContact, Slider, slope_limit};
 use crate::{Error, Geometry, Scalar, Sweep, Vec3, check};
 
 impl<S: Scalar> Slider<S> {
-    /// [`slide`](Self::slide) for a walk on the ground that steps up onto ledges no higher than
-    /// `height`. Where the move as it is touched something too steep to stand on (a riser, a
-    /// wall: `normal · up < min_cos`, as for [`Slide::floor`]), the step is tried: the ball is
-    /// slid up along `up` by `height` (less under a ceiling), then by `displacement`, then back
-    /// down by what it rose and two skins. The stepped move is kept if it ends on a floor more
-    /// than two skins higher than it started, and got farther along the walk (the part of
-    /// `displacement` across `up`) than the move as it is; else, and wherever a part of it is
-    /// refused (near the edge of the range), the move as it is is returned.
+    /// [`slide`](Self::slide) for a walk on the ground that steps up onto low ledges. Where the
+    /// move as it is ran into something too steep to stand on (a riser, a wall: `normal · up <
+    /// min_cos`, as for [`Slide::floor`], with the walk pressing into it), the step is tried:
+    /// the ball is slid up along `up` by `height` (less under a ceiling), then across, then back
+    /// down by what it rose and two skins. The stepped move is kept if it lands on a floor more
+    /// than two skins higher than it started, more than two skins past where the move as it is
+    /// stopped (level, into what stopped it: a wall beside an up-slope is no ledge), and
+    /// farther along the walk (the part of `displacement` across `up`); else, and wherever a
+    /// part of it is refused (near the edge of the range), the move as it is is returned.
     ///
     /// A ball is round: stopped at a riser, it must be carried some way over the edge before
     /// the edge holds it up as a floor (its contact normal within the slope limit). The move
-    /// across is therefore carried at least that far along the walk: for a ledge as high as the
-    /// ball rose (at most `r`), `sqrt(h (2r - h)) - r sqrt(1 - min_cos²)` and two skins (0.16 r
-    /// for `h = r / 2` and 45°; nothing for ledges up to `r (1 - min_cos)`, which the walk
-    /// climbs by itself). A step can so carry the ball farther than `displacement`, once per
-    /// ledge, as Jolt's `WalkStairs` steps forward by at least a minimum distance.
+    /// across is therefore `displacement` plus, level and into the riser, what it lacks of
+    /// that distance: for a ledge as high as the ball rose (at most `r`),
+    /// `sqrt(h (2r - h)) - r sqrt(1 - min_cos²)` and two skins (0.16 r for `h = r / 2` and 45°;
+    /// nothing for ledges up to `r (1 - min_cos)`, which the walk climbs by itself). A step can
+    /// so carry the ball farther than `displacement`, once per ledge, as Jolt's `WalkStairs`
+    /// steps forward by at least a minimum distance, and a walk that meets a riser at a slant
+    /// is carried over it, not along it.
+    ///
+    /// Which ledges: heights are measured from the ball's lowest point where it stopped (on a
+    /// slope running up to a riser, that is below the slope's top). A ledge up to `height`
+    /// with a floor beyond it is climbed at any speed. The ball rises by `height`, and, as the
+    /// walk alone climbs `r (1 - min_cos)`, a move across long enough climbs ledges up to
+    /// `height + r (1 - min_cos)`; higher ones stop it as a wall would.
     ///
     /// The lowering stops at the first thing below, a skin short of it (a slide would carry a
     /// ball landed on a walkable part of an edge down it, off the ledge). A stepped move's
     /// contacts are the last of the move across and the landing, each `time` a fraction of its
-    /// own part; `blocked` is what the move across was denied. The ledge's own height is not measured: a ledge lower than `height`
-    /// with a floor beyond it is climbed, and one higher stops the ball as a wall would. Use it
-    /// for the walk of a grounded ball (the README's recipe), not for a fall: stepping while
-    /// falling past a ledge would catch the ball on it. Quake steps 18 units for a player 32
-    /// wide; about half the radius suits a ball.
+    /// own part; `blocked` is what the move across was denied. Use it for the walk of a
+    /// grounded ball (the README's recipe), not for a fall: stepping while falling past a
+    /// ledge would catch the ball on it. Quake steps 18 units for a player 32 wide; about half
+    /// the radius suits a ball. Cost: a walk against a wall tries (and drops) a step each
+    /// call, three slides in all instead of one.
     ///
     /// ```
     /// use ballcast::{Scene, Triangle, Vec3, slide::Slider};
@@ -72,31 +81,31 @@ impl<S: Scalar> Slider<S> {
         let (up_unit, cos) = slope_limit(up, min_cos)?;
         let height = check::within(height, S::ZERO, S::LIMIT)?;
         let plain = self.slide(scene, position, displacement)?;
-        let steep = |s: &Slide<S>| {
-            let mut contacts = s.contacts.iter().flatten();
-            contacts.any(|c| S::dot(c.hit.normal, up_unit) < cos)
-        };
-        if !steep(&plain) || height == S::ZERO {
+        // The first contact too steep to stand on that the walk ran into (a riser, a wall), and
+        // the level direction into it.
+        let level = |v: Vec3<S>| v - up_unit.scale(S::dot(v, up_unit));
+        let into = plain
+            .contacts
+            .iter()
+            .flatten()
+            .map(|c| c.hit.normal)
+            .find(|&n| S::dot(n, up_unit) < cos && S::dot(displacement, n) < S::ZERO)
+            .and_then(|n| S::direction(Vec3::ZERO - level(n)));
+        let Some((_, into)) = into.filter(|_| height > S::ZERO) else {
             return Ok(plain);
-        }
-        Ok(self
-            .stepped(
-                scene,
-                position + plain.pushed_out,
-                displacement,
-                up_unit,
-                cos,
-                height,
-            )
+        };
+        let into = into.map(S::unit_to_scalar);
+        let start = position + plain.pushed_out;
+        let skin = self.skin(magnitude(start));
+        let stepped = self.stepped(scene, start, displacement, into, (up_unit, cos), height);
+        Ok(stepped
             .filter(|out| {
-                // Farther along the walk's part across `up`, from where both started.
-                let start = position + plain.pushed_out;
-                let across = |p: Vec3<S>| {
-                    let d = p - start;
-                    d - up_unit.scale(S::dot(d, up_unit))
-                };
-                let wish = across(start + displacement);
-                S::dot(across(out.position), wish) > S::dot(across(plain.position), wish)
+                // Past where the walk stopped, across what stopped it (not merely higher: a
+                // wall beside an up-slope), and farther along the walk.
+                let past = S::dot(out.position - plain.position, into) > skin + skin;
+                let wish = level(displacement);
+                let gain = |p: Vec3<S>| S::dot(level(p - start), wish);
+                past && gain(out.position) > gain(plain.position)
             })
             .map_or(plain, |out| Slide {
                 pushed_out: plain.pushed_out,
@@ -105,16 +114,16 @@ impl<S: Scalar> Slider<S> {
     }
 
     /// The move lifted by up to `height` along `up` (a unit vector), across (carried at least
-    /// [`landing`] and two skins along the walk), and lowered by what it rose and two skins onto
-    /// a floor; `None` if it lands on none, or if a part is refused or cannot rise by more than
-    /// a skin.
+    /// [`landing`] and two skins along `into`, the level unit direction into the riser), and
+    /// lowered by what it rose and two skins onto a floor; `None` if it lands on none, or if a
+    /// part is refused or cannot rise by more than a skin.
     fn stepped<G: Geometry<S> + ?Sized>(
         &self,
         scene: &G,
         start: Vec3<S>,
         displacement: Vec3<S>,
-        up: Vec3<S>,
-        min_cos: S,
+        into: Vec3<S>,
+        (up, min_cos): (Vec3<S>, S),
         height: S,
     ) -> Option<Slide<S>> {
         let skin = self.skin(magnitude(start));
@@ -123,11 +132,9 @@ impl<S: Scalar> Slider<S> {
         if rise <= skin {
             return None;
         }
-        let walk = displacement - up.scale(S::dot(displacement, up));
-        let (len, dir) = S::direction(walk)?;
-        let short = landing(self.radius, rise, min_cos) + skin + skin - len;
+        let short = landing(self.radius, rise, min_cos) + skin + skin - S::dot(displacement, into);
         let forward = if short > S::ZERO {
-            displacement + dir.map(S::unit_to_scalar).scale(short)
+            displacement + into.scale(short)
         } else {
             displacement
         };
@@ -142,8 +149,7 @@ impl<S: Scalar> Slider<S> {
         }
         let rounding = S::height_error(magnitude(from));
         let position = settle(scene, &hit, from, drop, (r, skin), rounding);
-        // On a ledge, not back where it started (or beside it, carried along a wall by the
-        // extra forward step).
+        // On a ledge, not back where it started.
         if S::dot(position - start, up) <= skin + skin {
             return None;
         }
