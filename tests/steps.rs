@@ -91,6 +91,15 @@ fn walk<S: Scalar, G: Geometry<S>>(
     p
 }
 
+/// [`walk`] at 2 units/s along +x from (−0.5, 0.6, 0) for 3 s, with steps of `step`.
+fn head_on<S: Scalar, G: Geometry<S>>(
+    level: &G,
+    step: f64,
+    each: impl FnMut(Vec3<S>, bool),
+) -> Vec3<S> {
+    walk(level, [-0.5, 0.6, 0.0], [2.0, 0.0, 0.0], step, 180, each)
+}
+
 /// Walking at 2 units/s onto ledges 0.1–0.25 high with a step of 0.25 (half the radius): after
 /// 3 s the ball is on the ledge, resting a skin above it, and it never went below the floors
 /// nor into the riser. With the slope limit and no step, the riser of a ledge higher than
@@ -98,26 +107,19 @@ fn walk<S: Scalar, G: Geometry<S>>(
 fn climbs_ledges_lower_than_the_step<S: Tolerance>() {
     for h in [0.1, 0.2, 0.25] {
         let level = ledge::<S>(h, None);
-        let end = walk(
-            &level,
-            [-0.5, 0.6, 0.0],
-            [2.0, 0.0, 0.0],
-            0.25,
-            180,
-            |p, _| {
-                // Clear of the lower floor, of the riser (the segment x = 1, 0 <= y <= h) and,
-                // over the ledge, of its floor, all within rounding.
-                let [x, y, _] = back(p);
-                let riser = ((1.0 - x).powi(2) + (y - y.clamp(0.0, h)).powi(2)).sqrt();
-                let clear = if x < 1.0 { riser } else { y - h };
-                assert!(
-                    y >= 0.5 - 1e-3 && clear >= 0.5 - 1e-3,
-                    "{}: ledge {h}: inside the level at {:?}",
-                    S::NAME,
-                    back(p)
-                );
-            },
-        );
+        let end = head_on(&level, 0.25, |p, _| {
+            // Clear of the lower floor, of the riser (the segment x = 1, 0 <= y <= h) and,
+            // over the ledge, of its floor, all within rounding.
+            let [x, y, _] = back(p);
+            let riser = ((1.0 - x).powi(2) + (y - y.clamp(0.0, h)).powi(2)).sqrt();
+            let clear = if x < 1.0 { riser } else { y - h };
+            assert!(
+                y >= 0.5 - 1e-3 && clear >= 0.5 - 1e-3,
+                "{}: ledge {h}: inside the level at {:?}",
+                S::NAME,
+                back(p)
+            );
+        });
         let [x, y, _] = back(end);
         assert!(
             x > 4.0 && (y - (h + 0.5)).abs() < 2e-3,
@@ -126,14 +128,7 @@ fn climbs_ledges_lower_than_the_step<S: Tolerance>() {
             back(end)
         );
         if h > 0.15 {
-            let held = walk(
-                &level,
-                [-0.5, 0.6, 0.0],
-                [2.0, 0.0, 0.0],
-                0.0,
-                180,
-                |_, _| {},
-            );
+            let held = head_on(&level, 0.0, |_, _| {});
             assert!(back(held)[0] < 0.61, "{}: ledge {h}: {held:?}", S::NAME);
         }
     }
@@ -147,16 +142,9 @@ fn stopped_by_a_ledge_higher_than_the_step_or_under_a_ceiling<S: Tolerance>() {
     for (h, ceiling) in [(0.3, None), (0.2, Some(1.1))] {
         let level = ledge::<S>(h, ceiling);
         let mut grounded = 0;
-        let end = walk(
-            &level,
-            [-0.5, 0.6, 0.0],
-            [2.0, 0.0, 0.0],
-            0.25,
-            180,
-            |_, g| {
-                grounded += g as usize;
-            },
-        );
+        let end = head_on(&level, 0.25, |_, g| {
+            grounded += g as usize;
+        });
         let [x, y, _] = back(end);
         assert!(
             x < 0.61 && (y - 0.5).abs() < 2e-3 && grounded >= 170,
