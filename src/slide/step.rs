@@ -11,12 +11,14 @@ use crate::{Error, Geometry, Scalar, Sweep, Vec3, check};
 impl<S: Scalar> Slider<S> {
     /// [`slide`](Self::slide) for a walk on the ground that steps up onto low ledges. Where the
     /// move as it is ran into something too steep to stand on (a riser, a wall: `normal · up <
-    /// min_cos`, as for [`Slide::floor`], with the walk pressing into it), the step is tried:
-    /// the ball is slid up along `up` by `height` (less under a ceiling), then across, then back
-    /// down by what it rose and two skins. The stepped move is kept if it lands on a floor more
+    /// min_cos`, as for [`Slide::floor`], with the walk pressing into it), the step is tried,
+    /// into each such contact in turn, the lowest touched first (in an inside corner the walk
+    /// slides along the side wall into the riser's edge): the ball is slid up along `up` by
+    /// `height` (less under a ceiling), then across, then back down by what it rose and two
+    /// skins. The stepped move is kept if it lands on a floor more
     /// than two skins higher than it started, more than two skins past where the move as it is
     /// stopped (level, into what stopped it: a wall beside an up-slope is no ledge), and
-    /// farther along the walk (the part of `displacement` across `up`); else, and wherever a
+    /// farther along the walk (along the level part of `displacement`); else, and wherever a
     /// part of it is refused (near the edge of the range), the move as it is is returned.
     ///
     /// A ball is round: stopped at a riser, it must be carried some way over the edge before
@@ -81,36 +83,50 @@ impl<S: Scalar> Slider<S> {
         let (up_unit, cos) = slope_limit(up, min_cos)?;
         let height = check::within(height, S::ZERO, S::LIMIT)?;
         let plain = self.slide(scene, position, displacement)?;
-        // The first contact too steep to stand on that the walk ran into (a riser, a wall), and
-        // the level direction into it.
         let level = |v: Vec3<S>| v - up_unit.scale(S::dot(v, up_unit));
-        let into = plain
-            .contacts
-            .iter()
-            .flatten()
-            .map(|c| c.hit.normal)
-            .find(|&n| S::dot(n, up_unit) < cos && S::dot(displacement, n) < S::ZERO)
-            .and_then(|n| S::direction(Vec3::ZERO - level(n)));
-        let Some((_, into)) = into.filter(|_| height > S::ZERO) else {
-            return Ok(plain);
-        };
-        let into = into.map(S::unit_to_scalar);
-        let start = position + plain.pushed_out;
+        let (start, wish) = (position + plain.pushed_out, level(displacement));
         let skin = self.skin(magnitude(start));
-        let stepped = self.stepped(scene, start, displacement, into, (up_unit, cos), height);
-        Ok(stepped
-            .filter(|out| {
-                // Past where the walk stopped, across what stopped it (not merely higher: a
-                // wall beside an up-slope), and farther along the walk.
-                let past = S::dot(out.position - plain.position, into) > skin + skin;
-                let wish = level(displacement);
-                let gain = |p: Vec3<S>| S::dot(level(p - start), wish);
-                past && gain(out.position) > gain(plain.position)
-            })
-            .map_or(plain, |out| Slide {
-                pushed_out: plain.pushed_out,
-                ..out
-            }))
+        // The contacts too steep to stand on that the walk ran into (risers, walls), each with
+        // the level direction into it and the height of its touched point.
+        let mut risers = [None; MAX_SLIDES];
+        let pressed = plain.contacts.iter().flatten().filter(|c| {
+            let n = c.hit.normal;
+            S::dot(n, up_unit) < cos && S::dot(displacement, n) < S::ZERO
+        });
+        for (slot, c) in risers.iter_mut().zip(pressed) {
+            *slot = S::direction(Vec3::ZERO - level(c.hit.normal))
+                .map(|(_, into)| (S::dot(c.point, up_unit), into.map(S::unit_to_scalar)));
+        }
+        // Lowest touched point first: in an inside corner the walk slides along the side wall
+        // (touched at the centre's height) into the riser (touched lower, at its edge).
+        for _ in 0..MAX_SLIDES {
+            if height == S::ZERO {
+                break;
+            }
+            let lowest = (risers.iter().enumerate())
+                .filter_map(|(i, r)| r.map(|(h, _)| (i, h)))
+                .reduce(|a, b| if b.1 < a.1 { b } else { a });
+            let Some((_, into)) = lowest.and_then(|(i, _)| risers.get_mut(i)?.take()) else {
+                break;
+            };
+            let stepped = self.stepped(scene, start, displacement, into, (up_unit, cos), height);
+            // Past where the walk stopped, across what stopped it (not merely higher: a wall
+            // beside an up-slope), and farther along the walk (measured along its unit
+            // direction: fixed-point products of two short vectors round to zero).
+            let past = |out: &Slide<S>| {
+                let ahead = out.position - plain.position;
+                let along = S::direction(wish)
+                    .is_none_or(|(_, w)| S::dot(level(ahead), w.map(S::unit_to_scalar)) > S::ZERO);
+                S::dot(ahead, into) > skin + skin && along
+            };
+            if let Some(out) = stepped.filter(past) {
+                return Ok(Slide {
+                    pushed_out: plain.pushed_out,
+                    ..out
+                });
+            }
+        }
+        Ok(plain)
     }
 
     /// The move lifted by up to `height` along `up` (a unit vector), across (carried at least
