@@ -15,11 +15,11 @@ impl<S: Scalar> Slider<S> {
     /// into each such contact in turn, the lowest touched first (in an inside corner the walk
     /// slides along the side wall into the riser's edge): the ball is slid up along `up` by
     /// `height` (less under a ceiling), then across, then back down by what it rose and two
-    /// skins. The stepped move is kept if it lands on a floor more
-    /// than two skins higher than it started, more than two skins past where the move as it is
-    /// stopped (level, into what stopped it: a wall beside an up-slope is no ledge), and
-    /// farther along the walk (along the level part of `displacement`); else, and wherever a
-    /// part of it is refused (near the edge of the range), the move as it is is returned.
+    /// skins. The stepped move is kept if it lands on a floor more than two skins higher than
+    /// it started, more than two skins past where the move as it is stopped (level, into what
+    /// stopped it: a wall beside an up-slope is no ledge), and farther along the walk (along
+    /// the level part of `displacement`); else, and wherever a part of it is refused (near the
+    /// edge of the range), the move as it is is returned.
     ///
     /// A ball is round: stopped at a riser, it must be carried some way over the edge before
     /// the edge holds it up as a floor (its contact normal within the slope limit). The move
@@ -84,6 +84,9 @@ impl<S: Scalar> Slider<S> {
         let (up_unit, cos) = slope_limit(up, min_cos)?;
         let height = check::within(height, S::ZERO, S::LIMIT)?;
         let plain = self.slide(scene, position, displacement)?;
+        if height == S::ZERO {
+            return Ok(plain);
+        }
         let level = |v: Vec3<S>| v - up_unit.scale(S::dot(v, up_unit));
         let (start, wish) = (position + plain.pushed_out, level(displacement));
         let skin = self.skin(magnitude(start));
@@ -101,9 +104,6 @@ impl<S: Scalar> Slider<S> {
         // Lowest touched point first: in an inside corner the walk slides along the side wall
         // (touched at the centre's height) into the riser (touched lower, at its edge).
         for _ in 0..MAX_SLIDES {
-            if height == S::ZERO {
-                break;
-            }
             let lowest = (risers.iter().enumerate())
                 .filter_map(|(i, r)| r.map(|(h, _)| (i, h)))
                 .reduce(|a, b| if b.1 < a.1 { b } else { a });
