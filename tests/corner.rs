@@ -5,14 +5,8 @@ mod common;
 
 use ballcast::slide::{Slider, skin};
 use ballcast::{Scalar, Scene, Triangle, Vec3, move_and_slide};
-use common::{P, Tolerance, add, back, distance_to_triangle, scale, v};
+use common::{P, Tolerance, add, back, distance_to_triangle, quad, scale, v};
 use fixed::types::{I16F16, I32F32};
-
-/// Two triangles covering the parallelogram `o, o + a, o + a + b, o + b`, front `a × b`.
-fn quad(o: P, a: P, b: P) -> [[P; 3]; 2] {
-    let (oa, oab) = (add(o, a), add(add(o, a), b));
-    [[o, oa, oab], [o, oab, add(o, b)]]
-}
 
 /// A scene of the triangles `tris`, in the scalar.
 fn scene<S: Scalar, const N: usize>(tris: &[[P; 3]]) -> Scene<S, N> {

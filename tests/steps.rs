@@ -7,34 +7,29 @@
 mod common;
 
 use ballcast::{Error, Geometry, Scalar, Scene, Triangle, Vec3, slide::Slider};
-use common::{P, Tolerance, back, v};
+use common::{P, Tolerance, back, quad, v};
 use fixed::types::{I16F16, I32F32};
 
-/// Two triangles covering the parallelogram `o, o + a, o + a + b, o + b`, front `a × b`.
-fn quad<S: Scalar>(o: P, a: P, b: P) -> [Triangle<S>; 2] {
-    let (oa, ob) = (common::add(o, a), common::add(o, b));
-    let oab = common::add(oa, b);
-    [
-        Triangle::new(v(o), v(oa), v(oab)),
-        Triangle::new(v(o), v(oab), v(ob)),
-    ]
+/// The triangles of `quads` (each `o, a, b` as for [`quad`]) in a scene.
+fn scene<S: Scalar>(quads: impl IntoIterator<Item = [P; 3]>) -> Scene<S, 8> {
+    let mut s = Scene::new();
+    for [o, a, b] in quads {
+        for t in quad(o, a, b) {
+            s.push(Triangle::new(v(t[0]), v(t[1]), v(t[2]))).unwrap();
+        }
+    }
+    s
 }
 
 /// A floor at y = 0 up to x = 1, a riser `h` high facing −x, the ledge's floor at y = `h`
 /// beyond it, and the quad `extra` (`o, a, b` as for [`quad`]), if any.
 fn ledge<S: Scalar>(h: f64, extra: Option<[P; 3]>) -> Scene<S, 8> {
-    let mut s = Scene::new();
     let quads = [
         [[-9.0, 0.0, -9.0], [0.0, 0.0, 18.0], [10.0, 0.0, 0.0]],
         [[1.0, 0.0, -9.0], [0.0, 0.0, 18.0], [0.0, h, 0.0]],
         [[1.0, h, -9.0], [0.0, 0.0, 18.0], [8.0, 0.0, 0.0]],
     ];
-    for [o, a, b] in quads.into_iter().chain(extra) {
-        for t in quad(o, a, b) {
-            s.push(t).unwrap();
-        }
-    }
-    s
+    scene(quads.into_iter().chain(extra))
 }
 
 /// A ceiling facing down at height `y` over the whole level.
@@ -180,14 +175,10 @@ fn stopped_by_a_ledge_higher_than_the_step_or_under_a_ceiling<S: Tolerance>() {
 /// wall taller than the step (the stepped move comes back down where it started, so it is
 /// dropped, though its forward step is longer than the walk), and into it.
 fn without_a_ledge_it_is_the_plain_slide<S: Tolerance>() {
-    let mut level: Scene<S, 4> = Scene::new();
-    let quads = [
-        quad([-9.0, 0.0, -9.0], [0.0, 0.0, 18.0], [18.0, 0.0, 0.0]),
-        quad([1.0, 0.0, -9.0], [0.0, 0.0, 18.0], [0.0, 3.0, 0.0]),
-    ];
-    for t in quads.into_iter().flatten() {
-        level.push(t).unwrap();
-    }
+    let level = scene::<S>([
+        [[-9.0, 0.0, -9.0], [0.0, 0.0, 18.0], [18.0, 0.0, 0.0]],
+        [[1.0, 0.0, -9.0], [0.0, 0.0, 18.0], [0.0, 3.0, 0.0]],
+    ]);
     let (up, walkable) = (v::<S>([0.0, 1.0, 0.0]), S::from_f64(0.5f64.sqrt()));
     let ball = Slider::new(S::from_f64(0.5)).unwrap();
     let step = S::from_f64(0.25);
@@ -254,18 +245,12 @@ fn a_wall_beside_an_up_slope_is_no_ledge<S: Tolerance>() {
     let ball = ball.with_max_slope(up, walkable).unwrap();
     for degrees in [10.0f64, 20.0, 35.0] {
         let t = degrees.to_radians().tan();
-        let mut level: Scene<S, 4> = Scene::new();
-        let quads = [
-            quad(
-                [-9.0, -9.0 * t, -9.0],
-                [0.0, 0.0, 18.0],
-                [18.0, 18.0 * t, 0.0],
-            ),
-            quad([-9.0, -9.0, 1.0], [0.0, 18.0, 0.0], [18.0, 0.0, 0.0]),
+        let slope = [
+            [-9.0, -9.0 * t, -9.0],
+            [0.0, 0.0, 18.0],
+            [18.0, 18.0 * t, 0.0],
         ];
-        for tri in quads.into_iter().flatten() {
-            level.push(tri).unwrap();
-        }
+        let level = scene::<S>([slope, SIDE_WALL]);
         let n = [-degrees.to_radians().sin(), degrees.to_radians().cos(), 0.0];
         let (sin, cos) = 10f64.to_radians().sin_cos();
         let wish = [2.0 * cos, 0.0, 2.0 * sin];

@@ -18,6 +18,13 @@ pub struct Case {
 pub fn sub(a: P, b: P) -> P {
     [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
 }
+/// Two triangles covering the parallelogram `o, o + a, o + a + b, o + b`, front normal `a × b`.
+pub fn quad(o: P, a: P, b: P) -> [[P; 3]; 2] {
+    let (oa, ob) = (add(o, a), add(o, b));
+    let oab = add(oa, b);
+    [[o, oa, oab], [o, oab, ob]]
+}
+
 pub fn add(a: P, b: P) -> P {
     [a[0] + b[0], a[1] + b[1], a[2] + b[2]]
 }

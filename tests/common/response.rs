@@ -18,12 +18,7 @@ pub fn unit(a: P) -> P {
     scale(a, 1.0 / norm(a))
 }
 
-/// Two triangles covering the parallelogram `o, o + a, o + a + b, o + b`, front normal `a × b`.
-pub fn quad(o: P, a: P, b: P) -> [Tri; 2] {
-    let (oa, ob) = (add(o, a), add(o, b));
-    let oab = add(oa, b);
-    [[o, oa, oab], [o, oab, ob]]
-}
+pub use crate::common::quad;
 
 /// A rigid motion `x ↦ R x + t`.
 #[derive(Clone, Copy, Debug)]
