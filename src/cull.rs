@@ -53,8 +53,20 @@ impl Path {
 
     /// Where the segment, over `[0, limit]`, enters and leaves the box `lo..hi` grown by the pad.
     pub(crate) fn clip(&self, lo: [f64; 3], hi: [f64; 3], limit: f64) -> Option<(f64, f64)> {
-        let (mut t0, mut t1) = (0.0f64, limit);
-        for a in 0..3 {
+        self.clip_within(lo, hi, (0.0, limit), 0..3)
+    }
+
+    /// [`clip`](Self::clip) over `[t0, t1]`, on the `axes` alone: a part of the path already
+    /// clipped against the box's other slabs.
+    #[inline(always)]
+    pub(crate) fn clip_within(
+        &self,
+        lo: [f64; 3],
+        hi: [f64; 3],
+        (mut t0, mut t1): (f64, f64),
+        axes: core::ops::Range<usize>,
+    ) -> Option<(f64, f64)> {
+        for a in axes {
             let (near, far) = (lo[a] - self.pad - self.p0[a], hi[a] + self.pad - self.p0[a]);
             if !self.inv[a].is_finite() {
                 // Parallel to the slab (or as good as): inside it all along, or never.

@@ -170,6 +170,16 @@ impl fmt::Display for HeightfieldError {
 
 impl core::error::Error for HeightfieldError {}
 
+/// Triangle `half` (0: `2c`, 1: `2c + 1`) of a cell from its corners (see
+/// [`Heightfield::corners`]).
+fn half<S: Scalar>([a, b, d, e]: [Vec3<S>; 4], half: usize) -> Triangle<S> {
+    if half == 0 {
+        Triangle::new(a, b, d)
+    } else {
+        Triangle::new(a, d, e)
+    }
+}
+
 impl<'a, S: Scalar> Heightfield<'a, S> {
     /// A heightfield from parts made by [`build`](Self::build) (or baked from them), in a
     /// `const` context, so it can be a `static`. Nothing is checked here: check baked parts
@@ -371,7 +381,13 @@ impl<'a, S: Scalar> Heightfield<'a, S> {
         if c >= self.cells_count()? {
             return None;
         }
-        let (i, k) = ((c % w) as u32, (c / w) as u32);
+        let corners = self.corners((c % w) as u32, (c / w) as u32)?;
+        Some(half(corners, index % 2))
+    }
+
+    /// The corners of the cell at column `i`, row `k`: vertices `(i, k)`, `(i, k + 1)`,
+    /// `(i + 1, k + 1)` and `(i + 1, k)`, if on the grid.
+    fn corners(&self, i: u32, k: u32) -> Option<[Vec3<S>; 4]> {
         // The cell's two grid lines each way, shared by its corners.
         let (o, a) = (self.origin, |o: S, n: u32| self.along(o, n));
         let (x, z) = ([a(o.x, i), a(o.x, i + 1)], [a(o.z, k), a(o.z, k + 1)]);
@@ -379,11 +395,20 @@ impl<'a, S: Scalar> Heightfield<'a, S> {
             let y = self.height(i + di as u32, k + dk as u32)?;
             Some(Vec3::new(x[di], y, z[dk]))
         };
-        let (a, d) = (v(0, 0)?, v(1, 1)?);
-        Some(match index % 2 {
-            0 => Triangle::new(a, v(0, 1)?, d),
-            _ => Triangle::new(a, d, v(1, 0)?),
-        })
+        Some([v(0, 0)?, v(0, 1)?, v(1, 1)?, v(1, 0)?])
+    }
+
+    /// Triangle `index`, as [`prepared`](Self::prepared) gives it, from its cell's
+    /// [`corners`](Self::corners) and byte.
+    fn prepare_from(corners: [Vec3<S>; 4], index: usize, byte: u8) -> Option<StandardTriangle<S>> {
+        let mut st = StandardTriangle::new(&half(corners, index % 2)).ok()?;
+        let bits = byte >> (3 * (index % 2));
+        for e in 0..3 {
+            if bits & (1 << e) == 0 {
+                deactivate(&mut st, e);
+            }
+        }
+        Some(st)
     }
 
     /// Triangle `index` prepared with its active edges, as a mesh of the same triangles holds
@@ -393,14 +418,10 @@ impl<'a, S: Scalar> Heightfield<'a, S> {
         if byte & HOLE != 0 {
             return None;
         }
-        let mut st = self.prepare_at(index).ok()?;
-        let bits = byte >> (3 * (index % 2));
-        for e in 0..3 {
-            if bits & (1 << e) == 0 {
-                deactivate(&mut st, e);
-            }
-        }
-        Some(st)
+        let c = index / 2;
+        let w = self.columns.max(1) as usize;
+        let corners = self.corners((c % w) as u32, (c / w) as u32)?;
+        Self::prepare_from(corners, index, byte)
     }
 
     /// Cells along x and along z.

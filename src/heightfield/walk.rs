@@ -100,8 +100,8 @@ impl<S: Scalar> Heightfield<'_, S> {
                     break;
                 }
             }
-            let strip = ([f64::MIN, f64::MIN, z[0]], [f64::MAX, f64::MAX, z[1]]);
-            let Some((t0, t1)) = path.clip(strip.0, strip.1, lim) else {
+            let strip = ([0.0, 0.0, z[0]], [0.0, 0.0, z[1]]);
+            let Some((t0, t1)) = path.clip_within(strip.0, strip.1, (0.0, lim), 2..3) else {
                 continue;
             };
             let (xlo, xhi) = span(0, t0.max(ta), t1);
@@ -123,11 +123,11 @@ impl<S: Scalar> Heightfield<'_, S> {
                     }
                 }
                 let c = (k * w + i) as usize;
-                match self.cells.get(c) {
-                    Some(&byte) if byte & HOLE == 0 => {}
+                let byte = match self.cells.get(c) {
+                    Some(&byte) if byte & HOLE == 0 => byte,
                     Some(_) => continue,
                     None => return,
-                }
+                };
                 let at = |di: i64, dk: i64| {
                     let v = (k + dk) * (w + 1) + i + di;
                     y(self.heights.get(v as usize).map_or(0.0, |&h| h as f64))
@@ -140,13 +140,22 @@ impl<S: Scalar> Heightfield<'_, S> {
                     .fold((p00[1], p00[1]), |(l, u), &v| {
                         (if v < l { v } else { l }, if v > u { v } else { u })
                     });
-                let Some(span) = path.clip([x[0], lo, z[0]], [x[1], hi, z[1]], lim) else {
+                // The row's part of the path already lies within the cell's z slab.
+                let (lo, hi) = ([x[0], lo, 0.0], [x[1], hi, 0.0]);
+                let Some(span) = path.clip_within(lo, hi, (t0, t1.min(lim)), 0..2) else {
                     continue;
                 };
-                for (t, v) in [(2 * c, [p00, p01, p11]), (2 * c + 1, [p00, p11, p10])] {
-                    if beside_diagonal(path, [x[0], z[0]], t % 2 == 0, span)
-                        && path.near_plane(v, span, true)
-                        && let Some(tri) = self.prepared(t)
+                // The cell's corners in `S`, made once for both triangles, when one needs them.
+                let mut corners = None;
+                for (half, v) in [(0, [p00, p01, p11]), (1, [p00, p11, p10])] {
+                    let t = 2 * c + half;
+                    if !(beside_diagonal(path, [x[0], z[0]], half == 0, span)
+                        && path.near_plane(v, span, true))
+                    {
+                        continue;
+                    }
+                    let q = *corners.get_or_insert_with(|| self.corners(i as u32, k as u32));
+                    if let Some(tri) = q.and_then(|q| Self::prepare_from(q, t, byte))
                         && let Some(hit) = tri.cast_within(sweep, acc.reach())
                     {
                         acc.offer(t, hit);
