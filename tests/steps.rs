@@ -6,9 +6,13 @@
 
 mod common;
 
-use ballcast::{Error, Geometry, Scalar, Scene, Triangle, Vec3, slide::Slider};
+use ballcast::{
+    Error, Geometry, Scalar, Scene, SceneHit, StandardTriangle, Sweep, Triangle, Vec3,
+    slide::Slider,
+};
 use common::{P, Tolerance, back, quad, v};
 use fixed::types::{I16F16, I32F32};
+use std::cell::Cell;
 
 /// The triangles of `quads` (each `o, a, b` as for [`quad`]) in a scene.
 fn scene<S: Scalar>(quads: impl IntoIterator<Item = [P; 3]>) -> Scene<S, 8> {
@@ -265,6 +269,57 @@ fn a_wall_beside_an_up_slope_is_no_ledge<S: Tolerance>() {
     }
 }
 
+/// A geometry that counts the sweeps cast into it.
+struct Counted<'a, G>(&'a G, Cell<usize>);
+
+impl<S: Scalar, G: Geometry<S>> Geometry<S> for Counted<'_, G> {
+    fn cast(&self, sweep: &Sweep<S>) -> Option<SceneHit<S>> {
+        self.1.set(self.1.get() + 1);
+        self.0.cast(sweep)
+    }
+
+    fn visit(&self, min: Vec3<S>, max: Vec3<S>, f: &mut dyn FnMut(usize, &StandardTriangle<S>)) {
+        self.0.visit(min, max, f)
+    }
+}
+
+/// Walls and ledges too high to step onto cost no step: with r 0.5, a step of 0.25 and 45°
+/// walkable, a contact touched more than 0.25 + 0.146 above the ball's lowest point is passed
+/// over, and the call casts the sweeps `slide` casts and answers as it does. Into a wall 3
+/// high, along it, into an inside corner and into a ledge 0.45 high. Before, every such call
+/// lifted, carried and lowered the ball and dropped the result: 4.5 sweeps a frame of the
+/// recipe into a wall where the slide cast 2, 9.5 in the inside corner.
+fn walls_and_high_ledges_cost_no_step<S: Tolerance>() {
+    let (up, walkable) = (v::<S>([0.0, 1.0, 0.0]), S::from_f64(0.5f64.sqrt()));
+    let ball = Slider::new(S::from_f64(0.5)).unwrap();
+    let ball = ball.with_max_slope(up, walkable).unwrap();
+    let cases = [
+        (3.0, None, [0.4995, 0.5005, 0.0], [0.03, 0.0, 0.0]),
+        (3.0, None, [0.4995, 0.5005, 0.0], [0.03, 0.0, 0.02]),
+        (
+            3.0,
+            Some(SIDE_WALL),
+            [0.4995, 0.5005, 0.4995],
+            [0.03, 0.0, 0.02],
+        ),
+        (0.45, None, [0.3, 0.5005, 0.0], [0.3, 0.0, 0.0]),
+    ];
+    for (h, wall, start, walk) in cases {
+        let level = ledge::<S>(h, wall);
+        let (plain, stepped) = (Counted(&level, Cell::new(0)), Counted(&level, Cell::new(0)));
+        let (p, d) = (v::<S>(start), v::<S>(walk));
+        let out = ball.slide(&plain, p, d).unwrap();
+        let step = ball.step_slide(&stepped, p, d, up, walkable, S::from_f64(0.25));
+        let what = format!("{}: ledge {h}, from {start:?} by {walk:?}", S::NAME);
+        assert!(
+            out.contacts.iter().flatten().count() > 0,
+            "{what}: no contact"
+        );
+        assert_eq!(Ok(out), step, "{what}");
+        assert_eq!(plain.1.get(), stepped.1.get(), "{what}: sweeps");
+    }
+}
+
 /// Bad step heights and a zero `up` are errors.
 fn bad_steps_are_errors<S: Tolerance>() {
     let level = ledge::<S>(0.2, None);
@@ -301,6 +356,10 @@ macro_rules! per_scalar {
         #[test]
         fn a_wall_beside_an_up_slope_is_no_ledge() {
             super::a_wall_beside_an_up_slope_is_no_ledge::<$t>();
+        }
+        #[test]
+        fn walls_and_high_ledges_cost_no_step() {
+            super::walls_and_high_ledges_cost_no_step::<$t>();
         }
         #[test]
         fn bad_steps_are_errors() { super::bad_steps_are_errors::<$t>(); }

@@ -43,9 +43,12 @@ impl<S: Scalar> Slider<S> {
     /// own part; `blocked` is what the move across was denied. Use it for the walk of a
     /// grounded ball (the README's recipe), not for a fall: stepping while falling past a
     /// ledge would catch the ball on it. Quake steps 18 units for a player 32 wide; about half
-    /// the radius suits a ball. Cost: a walk against a wall tries (and drops) a step each
-    /// call, about three times a plain slide's sweeps; pressed into two walls it cannot climb
-    /// (an inside corner), about five.
+    /// the radius suits a ball. Cost: a contact touched more than `height + r (1 - min_cos)`
+    /// above the ball's lowest point (a ledge too high; a wall, touched at `r`, for steps
+    /// below `r min_cos`) is no step and costs nothing more: a walk along or into such walls
+    /// casts what [`slide`](Self::slide) casts. A
+    /// step that is tried and dropped (a ledge within reach with no room or floor above it)
+    /// adds three sweeps, or more where the lift or the move across slides.
     ///
     /// ```
     /// use ballcast::{Scene, Triangle, Vec3, slide::Slider};
@@ -91,11 +94,17 @@ impl<S: Scalar> Slider<S> {
         let (start, wish) = (position + plain.pushed_out, level(displacement));
         let skin = self.skin(magnitude(start));
         // The contacts too steep to stand on that the walk ran into (risers, walls), each with
-        // the level direction into it and the height of its touched point.
+        // the level direction into it and the height of its touched point. A contact touched
+        // `r (1 - n·up)` above the ball's lowest point, more than `height` (and two skins)
+        // above what the walk climbs by itself, `r (1 - min_cos)`, is passed over: lifted by
+        // `height`, the ball would meet it as too steep again and come back down where it was.
         let mut risers = [None; MAX_SLIDES];
         let pressed = plain.contacts.iter().flatten().filter(|c| {
             let n = c.hit.normal;
-            S::dot(n, up_unit) < cos && S::dot(displacement, n) < S::ZERO
+            let (slope, within) = (S::dot(n, up_unit), height + skin + skin);
+            slope < cos
+                && S::dot(displacement, n) < S::ZERO
+                && self.radius.mul(cos - slope) <= within
         });
         for (slot, c) in risers.iter_mut().zip(pressed) {
             *slot = S::direction(Vec3::ZERO - level(c.hit.normal))
