@@ -52,6 +52,7 @@ impl Path {
     }
 
     /// Where the segment, over `[0, limit]`, enters and leaves the box `lo..hi` grown by the pad.
+    #[inline]
     pub(crate) fn clip(&self, lo: [f64; 3], hi: [f64; 3], limit: f64) -> Option<(f64, f64)> {
         self.clip_within(lo, hi, (0.0, limit), 0..3)
     }
