@@ -78,8 +78,8 @@
 //! - [`slide`] holds [`move_and_slide`], the collision response (Quake's fly-move, constrained
 //!   by every plane touched), [`Slide`], and the [`skin`](slide::skin) and
 //!   [`min_radius`](slide::min_radius) it works with; for a character, [`Slider`]'s ground
-//!   probe ([`Slider::probe_floor`], giving a [`Floor`]) and step up
-//!   ([`Slider::step_slide`]).
+//!   probe ([`Slider::probe_floor`], giving a [`Floor`]), floor snap
+//!   ([`Slider::snap_to_floor`]) and step up ([`Slider::step_slide`]).
 //! - [`mod@penetration`] holds [`penetration()`], the deepest overlap of a resting ball with
 //!   geometry and the way out ([`Penetration`]).
 //! - [`mod@plan`] holds the precision planner: which scalars fit a scene, and their expected error.

@@ -10,6 +10,7 @@ use ballcast::{
     Error, Geometry, Scalar, Scene, SceneHit, StandardTriangle, Sweep, Triangle, Vec3,
     slide::Slider,
 };
+use common::walker::{Gait, HALF, walk};
 use common::{P, Tolerance, back, quad, v};
 use fixed::types::{I16F16, I32F32};
 use std::cell::Cell;
@@ -44,72 +45,6 @@ fn ceiling(y: f64) -> [P; 3] {
 /// A tall wall in the plane z = 1, facing −z.
 const SIDE_WALL: [P; 3] = [[-9.0, -9.0, 1.0], [0.0, 18.0, 0.0], [18.0, 0.0, 0.0]];
 
-/// A walker's radius, frames a second and step height.
-#[derive(Clone, Copy)]
-struct Gait {
-    r: f64,
-    hz: f64,
-    step: f64,
-}
-
-/// r = 0.5 at 60 Hz, stepping half the radius.
-const HALF: Gait = Gait {
-    r: 0.5,
-    hz: 60.0,
-    step: 0.25,
-};
-
-/// The README's recipe with slopes up to 45° walkable and held back by steeper ones, walking
-/// at `wish` for `frames` frames from `start`; calls `each(position, grounded)` after every
-/// frame.
-fn walk<S: Scalar, G: Geometry<S>>(
-    level: &G,
-    start: P,
-    wish: P,
-    gait: Gait,
-    frames: usize,
-    mut each: impl FnMut(Vec3<S>, bool),
-) -> Vec3<S> {
-    let (dt, g) = (S::from_f64(1.0 / gait.hz), S::from_f64(9.81));
-    let (up, walkable) = (v::<S>([0.0, 1.0, 0.0]), S::from_f64(0.5f64.sqrt()));
-    let ball = Slider::new(S::from_f64(gait.r)).unwrap();
-    let ball = ball.with_max_slope(up, walkable).unwrap();
-    let (wish, step) = (v::<S>(wish), S::from_f64(gait.step));
-    let (mut p, mut vel, mut floor) = (v::<S>(start), Vec3::ZERO, None);
-    for _ in 0..frames {
-        let walked = floor.is_some();
-        let out = match floor {
-            Some(n) => {
-                let press = Vec3::ZERO - n * g.mul(dt).mul(dt);
-                let pressed = ball.slide(level, p, press).unwrap();
-                vel = wish - n * wish.dot(n);
-                let out = ball
-                    .step_slide(level, pressed.position, vel * dt, up, walkable, step)
-                    .unwrap();
-                floor = out.floor_normal(up, walkable).unwrap();
-                floor = floor.or(pressed.floor_normal(up, walkable).unwrap());
-                out
-            }
-            None => {
-                vel += v::<S>([0.0, -9.81, 0.0]) * dt;
-                let out = ball.slide(level, p, vel * dt).unwrap();
-                floor = out.floor_normal(up, walkable).unwrap();
-                out
-            }
-        };
-        p = out.position;
-        vel = ball.clip(&out, vel).unwrap();
-        if floor.is_none()
-            && let Some(f) = ball.probe_floor(level, p, up, walkable).unwrap()
-            && (walked || vel.dot(f.normal) <= S::ZERO)
-        {
-            (floor, p) = (Some(f.normal), f.position);
-        }
-        each(p, floor.is_some());
-    }
-    p
-}
-
 /// [`walk`] at 2 units/s along +x from (−0.5, 0.6, 0) for 3 s, with steps of `step`.
 fn head_on<S: Scalar, G: Geometry<S>>(
     level: &G,
@@ -123,7 +58,9 @@ fn head_on<S: Scalar, G: Geometry<S>>(
 /// Walking at 2 units/s onto ledges 0.1–0.25 high with a step of 0.25 (half the radius): after
 /// 3 s the ball is on the ledge, resting a skin above it, and it never went below the floors
 /// nor into the riser. With the slope limit and no step, the riser of a ledge higher than
-/// `r (1 - cos 45°)` = 0.146 stops it: 0.2 and 0.25 are climbed only by stepping.
+/// `r (1 - cos 45°)` = 0.146 stops it: 0.2 and 0.25 are climbed only by stepping. The recipe's
+/// floor snap once slid the ball rolling up onto a ledge of 0.1 back down the edge's slope, on
+/// every try: it now stops at the edge, which it can stand on.
 fn climbs_ledges_lower_than_the_step<S: Tolerance>() {
     for h in [0.1, 0.2, 0.25] {
         let level = ledge::<S>(h, None);
@@ -212,6 +149,7 @@ fn climbs_ledges_met_at_a_slant<S: Tolerance>() {
         r: 0.05,
         hz: 240.0,
         step: 0.0375,
+        snap: 0.0375,
     };
     let cases = [
         (0.2, None, HALF, 2.0, [-0.5, 0.6, -8.0]),

@@ -16,8 +16,9 @@
 //! pushed into a floor does not creep along it.
 //!
 //! For a character on top of these rules: [`Slide::floor`] (grounded by the move's contacts),
-//! [`Slider::probe_floor`] (a ground probe for a ball resting within a skin of its floor) and
-//! [`Slider::step_slide`] (a walk that steps up onto low ledges).
+//! [`Slider::probe_floor`] (a ground probe for a ball resting within a skin of its floor),
+//! [`Slider::snap_to_floor`] (the probe reaching further down, for a walk going down stairs)
+//! and [`Slider::step_slide`] (a walk that steps up onto low ledges).
 
 mod push;
 mod resolve;
@@ -56,7 +57,8 @@ pub struct Slide<S> {
 /// A floor contact and the normal of the floor it stands for (see [`Slide::floor_normal`]).
 type Ground<'a, S> = (&'a SlideContact<S>, Vec3<S>);
 
-/// The floor a ground probe found ([`Slider::probe_floor`]): a plain `Copy` struct.
+/// The floor a ground probe found ([`Slider::probe_floor`], [`Slider::snap_to_floor`]): a
+/// plain `Copy` struct.
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
 #[derive(Clone, Copy, Debug, PartialEq)]

@@ -4,6 +4,8 @@
 
 use ballcast::{Error, Scalar, Scene, StandardTriangle, Sweep, Triangle, Vec3};
 
+pub mod walker;
+
 pub type P = [f64; 3];
 
 /// One query: a triangle, a ball path and a radius, in f64.
