@@ -83,7 +83,7 @@ fn walking_down_stairs_stays_grounded<S: Tolerance>() {
 }
 
 /// A drop of 0.6, deeper than the snap of 0.25: the ball walks off the edge and falls (in the
-/// air on 13 frames, in every scalar), then walks on, grounded, on the floor below.
+/// air on 20 frames, in every scalar), then walks on, grounded, on the floor below.
 fn a_drop_deeper_than_the_snap_is_a_fall<S: Tolerance>() {
     let level = stairs::<S>(1, 0.6);
     let mut airborne = 0;
@@ -147,21 +147,92 @@ fn over_a_crest_onto_a_downhill_slope<S: Tolerance>() {
     }
 }
 
+/// Where the ball walks off an edge with nothing within the snap's reach below (a cliff 3
+/// deep, a trench 1.2 wide over a pit 5 deep, the lip of a 30° ramp up over a drop), the walk
+/// with the snap is the walk without it, bit for bit, at 2 and 8 units/s, at 60 and 144 Hz.
+/// Taking the rounded edge it was leaving for a floor, the snap once held a ball at 8 units/s
+/// onto the cliff's edge (it landed 0.6 short) and rolled one into the trench it would have
+/// flown over; and the ramp's lip launched no ball while the snap was asked of a ball moving
+/// up.
+fn leaving_an_edge_over_a_drop_is_a_fall<S: Tolerance>() {
+    let (sin, cos) = 30f64.to_radians().sin_cos();
+    let top = [[-9.0, 0.0, -9.0], [0.0, 0.0, 18.0], [9.0, 0.0, 0.0]];
+    let wall =
+        |x: f64, low: f64, high: f64| [[x, low, -9.0], [0.0, high - low, 0.0], [0.0, 0.0, 18.0]];
+    let floor = |x0: f64, x1: f64, y: f64| [[x0, y, -9.0], [0.0, 0.0, 18.0], [x1 - x0, 0.0, 0.0]];
+    let ramp = [
+        [0.0, 0.0, -9.0],
+        [0.0, 0.0, 18.0],
+        [2.0 * cos, 2.0 * sin, 0.0],
+    ];
+    let levels = [
+        (
+            "cliff",
+            vec![top, wall(0.0, -3.0, 0.0), floor(0.0, 40.0, -3.0)],
+        ),
+        ("trench", {
+            let far = [[1.2, -5.0, 9.0], [0.0, 5.0, 0.0], [0.0, 0.0, -18.0]];
+            vec![
+                top,
+                wall(0.0, -5.0, 0.0),
+                floor(0.0, 1.2, -5.0),
+                far,
+                floor(1.2, 40.0, 0.0),
+            ]
+        }),
+        (
+            "ramp",
+            vec![
+                top,
+                ramp,
+                wall(2.0 * cos, -3.0, 2.0 * sin),
+                floor(2.0 * cos, 40.0, -3.0),
+            ],
+        ),
+    ];
+    for (name, quads) in levels {
+        let level = scene::<S>(&quads);
+        for (speed, hz) in [(2.0, 60.0), (8.0, 60.0), (8.0, 144.0)] {
+            let frames = (3.0 * hz) as usize;
+            let ends = [0.25, 0.0].map(|snap| {
+                let gait = Gait { snap, hz, ..HALF };
+                back(walk(
+                    &level,
+                    [-1.0, 0.5005, 0.0],
+                    [speed, 0.0, 0.0],
+                    gait,
+                    frames,
+                    |_, _| {},
+                ))
+            });
+            assert_eq!(
+                ends[0],
+                ends[1],
+                "{}: {name} at {speed} units/s, {hz} Hz: with the snap, and without",
+                S::NAME
+            );
+        }
+    }
+}
+
 /// Bad snap depths are errors, and a zero one is the ground probe.
 fn bad_snaps_are_errors<S: Tolerance>() {
     let level = stairs::<S>(1, 0.2);
     let (up, walkable) = (v::<S>([0.0, 1.0, 0.0]), S::from_f64(0.5f64.sqrt()));
     let ball = Slider::new(S::from_f64(0.5)).unwrap();
     let p = v::<S>([-1.0, 0.5005, 0.0]);
-    let negative = ball.snap_to_floor(&level, p, up, walkable, S::from_f64(-0.1));
+    let negative = ball.snap_to_floor(&level, p, Vec3::ZERO, up, walkable, S::from_f64(-0.1));
     assert!(
         matches!(negative, Err(Error::OutOfRange { .. })),
         "{negative:?}"
     );
-    let zero_up = ball.snap_to_floor(&level, p, Vec3::ZERO, walkable, S::ONE);
+    let zero_up = ball.snap_to_floor(&level, p, Vec3::ZERO, Vec3::ZERO, walkable, S::ONE);
     assert_eq!(zero_up, Err(Error::ZeroVector));
     let probe = ball.probe_floor(&level, p, up, walkable);
-    assert_eq!(ball.snap_to_floor(&level, p, up, walkable, S::ZERO), probe);
+    assert_eq!(
+        ball.snap_to_floor(&level, p, Vec3::ZERO, up, walkable, S::ZERO),
+        probe
+    );
     assert!(probe.unwrap().is_some());
 }
 
@@ -180,6 +251,10 @@ macro_rules! per_scalar {
         #[test]
         fn over_a_crest_onto_a_downhill_slope() {
             super::over_a_crest_onto_a_downhill_slope::<$t>();
+        }
+        #[test]
+        fn leaving_an_edge_over_a_drop_is_a_fall() {
+            super::leaving_an_edge_over_a_drop_is_a_fall::<$t>();
         }
         #[test]
         fn bad_snaps_are_errors() { super::bad_snaps_are_errors::<$t>(); }

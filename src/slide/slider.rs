@@ -2,7 +2,7 @@
 
 use super::rules::magnitude;
 use super::{Floor, Slide, run, skin, slope_limit};
-use crate::{Error, Geometry, Scalar, Sweep, Vec3, check};
+use crate::{Contact, Error, Geometry, Scalar, Sweep, Vec3, check};
 
 /// A ball's settings for [`Slider::slide`]: its radius and, optionally, its own skin and a
 /// slope limit beyond which slopes hold it back like walls.
@@ -171,7 +171,7 @@ impl<S: Scalar> Slider<S> {
         up: Vec3<S>,
         min_cos: S,
     ) -> Result<Option<Floor<S>>, Error> {
-        self.snap_to_floor(scene, position, up, min_cos, S::ZERO)
+        self.snap_to_floor(scene, position, Vec3::ZERO, up, min_cos, S::ZERO)
     }
 
     /// [`probe_floor`](Self::probe_floor) reaching `depth` further down: a slide of the ball
@@ -182,15 +182,25 @@ impl<S: Scalar> Slider<S> {
     /// onto the floor found, as Source's `StayOnGround` traces down by the step height, Godot's
     /// `CharacterBody3D` snaps within its floor snap length and Jolt's `CharacterVirtual`
     /// sticks to the floor. Without it, a ball walking down stairs is in the air from each
-    /// step's edge until it lands on the next. The slide stops at the first thing below that
-    /// can be stood on (a ball rolling up over a ledge's edge stays on the edge, not carried
-    /// down its slope to the floor below), follows what is too steep (a ball past a step's
-    /// edge rolls down around it), and finds no floor where there is none within reach (a
-    /// drop deeper than `depth`, a slope too steep to stand on): the ball then falls. Do not
-    /// snap a ball that was not on the ground (a jump, a fall). Walking at 2 units/s down
-    /// steps of 0.2, a ball of r 0.5 snapping 0.25 was grounded on every frame, against 136
-    /// of 180 with the probe alone. Cost: one sweep and one slide (one slide for a `depth` of
-    /// zero, which is [`probe_floor`](Self::probe_floor)).
+    /// step's edge until it lands on the next.
+    ///
+    /// The slide stops at the first thing below that can be stood on (a ball rolling up over a
+    /// ledge's edge stays on the edge, not carried down its slope to the floor below), and goes
+    /// on past what is too steep. An edge or vertex behind the ball, whose normal leans along
+    /// the level part of `heading` (its velocity, or the walk's displacement), is one it is
+    /// walking off: it is snapped to only if, a radius and a skin past the touched point along
+    /// the heading, a cast as deep finds something to stand on (a step down, a crest); over a
+    /// drop deeper than `depth` (a cliff, a trench) the snap finds nothing and the ball falls,
+    /// at any speed, exactly as it would without the snap. Rolling around an edge uses up some
+    /// of the reach: choose `depth` a quarter more than the highest step down, and at least the
+    /// drop of a walk down the steepest walkable slope in a frame (`speed dt tan(slope)`). Do
+    /// not snap a ball that was not on the ground (a jump, a fall), nor one moving up (over the
+    /// lip of a ramp, which would then launch nothing).
+    ///
+    /// Walking at 2 units/s down steps of 0.2, a ball of r 0.5 snapping 0.25 was grounded on
+    /// every frame, against 136 of 180 with the probe alone. Cost: one sweep and one slide, and
+    /// a second sweep where the ball walks off an edge (one slide for a `depth` of zero, which
+    /// is [`probe_floor`](Self::probe_floor)).
     ///
     /// ```
     /// use ballcast::{Scene, Triangle, Vec3, slide::Slider};
@@ -199,40 +209,61 @@ impl<S: Scalar> Slider<S> {
     /// s.push(Triangle::new(v(-9.0, 0.0, -9.0), v(-9.0, 0.0, 9.0), v(9.0, 0.0, 0.0)))?;
     /// let (ball, up, walkable) = (Slider::new(0.5)?, v(0.0, 1.0, 0.0), 0.7071);
     /// // 0.2 above the floor (a step down): out of the probe's reach, within the snap's.
-    /// let at = v(0.0, 0.7, 0.0);
+    /// let (at, heading) = (v(0.0, 0.7, 0.0), v(2.0, 0.0, 0.0));
     /// assert_eq!(ball.probe_floor(&s, at, up, walkable)?, None);
-    /// let floor = ball.snap_to_floor(&s, at, up, walkable, 0.25)?.expect("within 0.25");
+    /// let floor = ball.snap_to_floor(&s, at, heading, up, walkable, 0.25)?.expect("within 0.25");
     /// assert!((floor.position.y - 0.5).abs() < 1e-3); // moved down onto it, a skin off
-    /// assert_eq!(ball.snap_to_floor(&s, v(0.0, 0.8, 0.0), up, walkable, 0.25)?, None);
+    /// assert_eq!(ball.snap_to_floor(&s, v(0.0, 0.8, 0.0), heading, up, walkable, 0.25)?, None);
     /// # Ok::<(), ballcast::Error>(())
     /// ```
     ///
-    /// Errors: as [`probe_floor`](Self::probe_floor); [`Error::NaN`] or
-    /// [`Error::OutOfRange`] for a `depth` below zero or beyond `±`[`Scalar::LIMIT`].
+    /// Errors: as [`probe_floor`](Self::probe_floor) (for a move of `depth` and two skins: keep
+    /// the world that far inside `±`[`Scalar::LIMIT`]); [`Error::NaN`] or
+    /// [`Error::OutOfRange`] for a `depth` below zero or beyond `±`[`Scalar::LIMIT`], or a
+    /// `heading` outside `±`[`Scalar::LIMIT`].
     pub fn snap_to_floor<G: Geometry<S> + ?Sized>(
         &self,
         scene: &G,
         position: Vec3<S>,
+        heading: Vec3<S>,
         up: Vec3<S>,
         min_cos: S,
         depth: S,
     ) -> Result<Option<Floor<S>>, Error> {
         let (up_unit, cos) = slope_limit(up, min_cos)?;
         let depth = check::within(depth, S::ZERO, S::LIMIT)?;
+        let heading = check::point(heading, S::LIMIT)?;
         let skin = self.skin(magnitude(check::point(position, S::LIMIT)?));
         let mut reach = depth + skin + skin;
         if depth > S::ZERO {
-            // Where the first thing below can be stood on, the slide goes no further than it
-            // (and two skins): a ball rolling up over a ledge's edge stays on it, where a slide
-            // would carry it down the edge's slope to the floor below.
-            let sweep = Sweep::new(position, position - up_unit.scale(reach), self.radius)?;
-            match scene.cast(&sweep) {
-                None => return Ok(None),
-                Some(hit) if S::dot(hit.normal, up_unit) >= cos => {
-                    let near = hit.alpha.mul(reach) + skin + skin;
-                    reach = if near < reach { near } else { reach };
+            let down = |from: Vec3<S>| {
+                let sweep = Sweep::new(from, from - up_unit.scale(reach), self.radius).ok()?;
+                scene.cast(&sweep)
+            };
+            let Some(hit) = down(position) else {
+                return Ok(None);
+            };
+            // An edge or vertex whose normal leans along the level heading is behind the ball,
+            // which is walking off it: a step down if, once clear of it (a radius and a skin
+            // past the touched point along the heading), there is a floor within reach below;
+            // else a drop, which is no floor to snap to, however the edge leans.
+            let level = heading - up_unit.scale(S::dot(heading, up_unit));
+            if hit.contact != Contact::Face
+                && S::dot(hit.normal, level) > S::ZERO
+                && let Some((_, along)) = S::direction(level)
+            {
+                let along = along.map(S::unit_to_scalar);
+                let touched = hit.position - hit.normal.scale(self.radius);
+                let past = S::dot(position - touched, along);
+                let clear = self.radius + skin - past;
+                let ahead = position + along.scale(if clear > S::ZERO { clear } else { S::ZERO });
+                if !down(ahead).is_some_and(|h| S::dot(h.normal, up_unit) >= cos) {
+                    return Ok(None);
                 }
-                Some(_) => {}
+            }
+            if S::dot(hit.normal, up_unit) >= cos {
+                let near = hit.alpha.mul(reach) + skin + skin;
+                reach = if near < reach { near } else { reach };
             }
         }
         let probe = self.slide(scene, position, Vec3::ZERO - up_unit.scale(reach))?;

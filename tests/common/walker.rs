@@ -63,10 +63,17 @@ pub fn walk<S: Scalar, G: Geometry<S>>(
         };
         p = out.position;
         vel = ball.clip(&out, vel).unwrap();
-        // The probe reaches two skins down; a walk that left the floor reaches `snap` further.
-        let depth = if walked { snap } else { S::ZERO };
+        // The probe reaches two skins down; a walk that left the floor, not moving up, reaches
+        // `snap` further.
+        let depth = if walked && vel.dot(up) <= S::ZERO {
+            snap
+        } else {
+            S::ZERO
+        };
         if floor.is_none()
-            && let Some(f) = ball.snap_to_floor(level, p, up, walkable, depth).unwrap()
+            && let Some(f) = ball
+                .snap_to_floor(level, p, vel, up, walkable, depth)
+                .unwrap()
             && (walked || vel.dot(f.normal) <= S::ZERO)
         {
             (floor, p) = (Some(f.normal), f.position);
