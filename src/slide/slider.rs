@@ -236,29 +236,30 @@ impl<S: Scalar> Slider<S> {
         let skin = self.skin(magnitude(check::point(position, S::LIMIT)?));
         let mut reach = depth + skin + skin;
         if depth > S::ZERO {
-            let down = |from: Vec3<S>| {
-                let sweep = Sweep::new(from, from - up_unit.scale(reach), self.radius).ok()?;
+            let down = |from: Vec3<S>, by: S| {
+                let sweep = Sweep::new(from, from - up_unit.scale(by), self.radius).ok()?;
                 scene.cast(&sweep)
             };
-            let Some(hit) = down(position) else {
+            let Some(hit) = down(position, reach) else {
                 return Ok(None);
             };
             // An edge or vertex whose normal leans along the level heading is behind the ball,
-            // which is walking off it: a step down if, once clear of it (a radius and a skin
-            // past the touched point along the heading), there is a floor within reach below;
-            // else a drop, which is no floor to snap to, however the edge leans.
-            let level = heading - up_unit.scale(S::dot(heading, up_unit));
+            // which is walking off it: a step down or a crest if, clear of it (a radius and a
+            // skin past the touched point, level and away from it), a cast a radius deeper
+            // finds something to stand on (a slope at the slope limit lies `0.59 r` below the
+            // crest); else a drop, where the snap is the ground probe.
+            let level = |v: Vec3<S>| v - up_unit.scale(S::dot(v, up_unit));
             if hit.contact != Contact::Face
-                && S::dot(hit.normal, level) > S::ZERO
-                && let Some((_, along)) = S::direction(level)
+                && S::dot(hit.normal, level(heading)) > S::ZERO
+                && let Some((_, away)) = S::direction(level(hit.normal))
             {
-                let along = along.map(S::unit_to_scalar);
+                let away = away.map(S::unit_to_scalar);
                 let touched = hit.position - hit.normal.scale(self.radius);
-                let past = S::dot(position - touched, along);
-                let clear = self.radius + skin - past;
-                let ahead = position + along.scale(if clear > S::ZERO { clear } else { S::ZERO });
-                if !down(ahead).is_some_and(|h| S::dot(h.normal, up_unit) >= cos) {
-                    return Ok(None);
+                let clear = self.radius + skin - S::dot(position - touched, away);
+                let ahead = position + away.scale(if clear > S::ZERO { clear } else { S::ZERO });
+                let below = down(ahead, reach + self.radius);
+                if !below.is_some_and(|h| S::dot(h.normal, up_unit) >= cos) {
+                    return self.snap_to_floor(scene, position, heading, up, min_cos, S::ZERO);
                 }
             }
             if S::dot(hit.normal, up_unit) >= cos {
