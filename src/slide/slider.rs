@@ -188,19 +188,20 @@ impl<S: Scalar> Slider<S> {
     /// ledge's edge stays on the edge, not carried down its slope to the floor below), and goes
     /// on past what is too steep. An edge or vertex behind the ball, whose normal leans along
     /// the level part of `heading` (its velocity, or the walk's displacement), is one it is
-    /// walking off: it is snapped to only if, a radius and a skin past the touched point along
-    /// the heading, a cast as deep finds something to stand on (a step down, a crest); over a
-    /// drop deeper than `depth` (a cliff, a trench) the snap finds nothing and the ball falls,
-    /// at any speed, exactly as it would without the snap. Rolling around an edge uses up some
-    /// of the reach: choose `depth` a quarter more than the highest step down, and at least the
-    /// drop of a walk down the steepest walkable slope in a frame (`speed dt tan(slope)`). Do
+    /// walking off: it is snapped to only if, clear of it (a radius and a skin past the touched
+    /// point, level and away from it), a cast a radius deeper finds something to stand on (a
+    /// step down; a crest, beyond which a slope at the limit lies up to `0.59 r` lower). Over
+    /// a drop (a cliff, a trench) the snap is the ground probe, so the ball falls at any speed
+    /// as it would without the snap. Rolling around an edge uses up some of the reach: choose
+    /// `depth` a quarter more than the highest step down, and at least the drop of a walk down
+    /// the steepest walkable slope in a frame (`speed dt tan(slope)`). Do
     /// not snap a ball that was not on the ground (a jump, a fall), nor one moving up (over the
     /// lip of a ramp, which would then launch nothing).
     ///
     /// Walking at 2 units/s down steps of 0.2, a ball of r 0.5 snapping 0.25 was grounded on
     /// every frame, against 136 of 180 with the probe alone. Cost: one sweep and one slide, and
     /// a second sweep where the ball walks off an edge (one slide for a `depth` of zero, which
-    /// is [`probe_floor`](Self::probe_floor)).
+    /// is [`probe_floor`](Self::probe_floor), and never finds less).
     ///
     /// ```
     /// use ballcast::{Scene, Triangle, Vec3, slide::Slider};
@@ -240,8 +241,9 @@ impl<S: Scalar> Slider<S> {
                 let sweep = Sweep::new(from, from - up_unit.scale(by), self.radius).ok()?;
                 scene.cast(&sweep)
             };
+            // Nothing within reach (or a sweep refused near the range's edge): the probe.
             let Some(hit) = down(position, reach) else {
-                return Ok(None);
+                return self.snap_to_floor(scene, position, heading, up, min_cos, S::ZERO);
             };
             // An edge or vertex whose normal leans along the level heading is behind the ball,
             // which is walking off it: a step down or a crest if, clear of it (a radius and a
