@@ -215,6 +215,40 @@ fn leaving_an_edge_over_a_drop_is_a_fall<S: Tolerance>() {
     }
 }
 
+/// The snap finds at least what the ground probe finds: balls resting a skin above the rounded
+/// edge of a cliff 3 deep (centres 0 to 0.35 past it, r 0.5), walking off it. With a look-ahead
+/// that gave up over the drop, the snap once found nothing where the probe found the edge, in
+/// every scalar.
+fn the_snap_finds_what_the_probe_finds<S: Tolerance>() {
+    let level = scene::<S>(&[
+        [[-9.0, 0.0, -9.0], [0.0, 0.0, 18.0], [9.0, 0.0, 0.0]],
+        [[0.0, -3.0, -9.0], [0.0, 3.0, 0.0], [0.0, 0.0, 18.0]],
+    ]);
+    let (up, walkable) = (v::<S>([0.0, 1.0, 0.0]), S::from_f64(0.5f64.sqrt()));
+    let ball = Slider::new(S::from_f64(0.5)).unwrap();
+    let (heading, depth) = (v::<S>([2.0, 0.0, 0.0]), S::from_f64(0.25));
+    let mut found = 0;
+    for k in 0..36 {
+        let x = 0.01 * k as f64;
+        let p = v::<S>([x, (0.25 - x * x).sqrt() + 0.0005, 0.0]);
+        let probe = ball.probe_floor(&level, p, up, walkable).unwrap();
+        let snap = ball
+            .snap_to_floor(&level, p, heading, up, walkable, depth)
+            .unwrap();
+        found += probe.is_some() as usize;
+        assert!(
+            probe.is_none() || snap.is_some(),
+            "{}: centre {x} past the edge: the probe found {probe:?}, the snap nothing",
+            S::NAME
+        );
+    }
+    assert!(
+        found > 20,
+        "{}: the probe found the edge {found} times",
+        S::NAME
+    );
+}
+
 /// Bad snap depths are errors, and a zero one is the ground probe.
 fn bad_snaps_are_errors<S: Tolerance>() {
     let level = stairs::<S>(1, 0.2);
@@ -255,6 +289,10 @@ macro_rules! per_scalar {
         #[test]
         fn leaving_an_edge_over_a_drop_is_a_fall() {
             super::leaving_an_edge_over_a_drop_is_a_fall::<$t>();
+        }
+        #[test]
+        fn the_snap_finds_what_the_probe_finds() {
+            super::the_snap_finds_what_the_probe_finds::<$t>();
         }
         #[test]
         fn bad_snaps_are_errors() { super::bad_snaps_are_errors::<$t>(); }
