@@ -194,9 +194,9 @@ impl<S: Scalar> Slider<S> {
     /// a drop (a cliff, a trench) the snap is the ground probe, so the ball falls at any speed
     /// as it would without the snap. Rolling around an edge uses up some of the reach: choose
     /// `depth` a quarter more than the highest step down, and at least the drop of a walk down
-    /// the steepest walkable slope in a frame (`speed dt tan(slope)`). Do
-    /// not snap a ball that was not on the ground (a jump, a fall), nor one moving up (over the
-    /// lip of a ramp, which would then launch nothing).
+    /// the steepest walkable slope in a frame (`speed dt tan(slope)`). Do not snap a ball that
+    /// was not on the ground (a jump, a fall), nor one moving up (over the lip of a ramp, which
+    /// would then launch nothing).
     ///
     /// Walking at 2 units/s down steps of 0.2, a ball of r 0.5 snapping 0.25 was grounded on
     /// every frame, against 136 of 180 with the probe alone. Cost: one sweep and one slide, and
@@ -218,10 +218,10 @@ impl<S: Scalar> Slider<S> {
     /// # Ok::<(), ballcast::Error>(())
     /// ```
     ///
-    /// Errors: as [`probe_floor`](Self::probe_floor) (for a move of `depth` and two skins: keep
-    /// the world that far inside `±`[`Scalar::LIMIT`]); [`Error::NaN`] or
-    /// [`Error::OutOfRange`] for a `depth` below zero or beyond `±`[`Scalar::LIMIT`], or a
-    /// `heading` outside `±`[`Scalar::LIMIT`].
+    /// Errors: as [`probe_floor`](Self::probe_floor) (where a sweep `depth` down would leave
+    /// the range, the snap is the probe); [`Error::NaN`] or [`Error::OutOfRange`] for a
+    /// `depth` below zero or beyond `±`[`Scalar::LIMIT`], or a `heading` outside
+    /// `±`[`Scalar::LIMIT`].
     pub fn snap_to_floor<G: Geometry<S> + ?Sized>(
         &self,
         scene: &G,
