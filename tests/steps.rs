@@ -258,6 +258,43 @@ fn walls_and_high_ledges_cost_no_step<S: Tolerance>() {
     }
 }
 
+/// Walking at 4 units/s up a 4° ramp into a ledge 0.174 high at its top, stepping 0.05: the
+/// walk along the ramp rises, and carries the lifted ball higher than the step alone, so it
+/// climbs the ledge. Passing over contacts touched higher than the step and the slope limit
+/// reach, without the walk's rise, once left the ball at the riser for good, in every scalar.
+fn climbs_a_ledge_at_the_top_of_a_ramp<S: Tolerance>() {
+    let t = 4f64.to_radians().tan();
+    let level = scene::<S>([
+        [
+            [-9.0, -10.0 * t, -9.0],
+            [0.0, 0.0, 18.0],
+            [10.0, 10.0 * t, 0.0],
+        ],
+        [[1.0, 0.0, -9.0], [0.0, 0.0, 18.0], [0.0, 0.174, 0.0]],
+        [[1.0, 0.174, -9.0], [0.0, 0.0, 18.0], [8.0, 0.0, 0.0]],
+    ]);
+    let gait = Gait {
+        step: 0.05,
+        snap: 0.05,
+        ..HALF
+    };
+    let end = walk(
+        &level,
+        [-1.5, 0.35, 0.0],
+        [4.0, 0.0, 0.0],
+        gait,
+        90,
+        |_, _| {},
+    );
+    let [x, y, _] = back(end);
+    assert!(
+        x > 2.0 && (y - (0.174 + 0.5)).abs() < 2e-3,
+        "{}: ended at {:?}",
+        S::NAME,
+        back(end)
+    );
+}
+
 /// Bad step heights and a zero `up` are errors.
 fn bad_steps_are_errors<S: Tolerance>() {
     let level = ledge::<S>(0.2, None);
@@ -298,6 +335,10 @@ macro_rules! per_scalar {
         #[test]
         fn walls_and_high_ledges_cost_no_step() {
             super::walls_and_high_ledges_cost_no_step::<$t>();
+        }
+        #[test]
+        fn climbs_a_ledge_at_the_top_of_a_ramp() {
+            super::climbs_a_ledge_at_the_top_of_a_ramp::<$t>();
         }
         #[test]
         fn bad_steps_are_errors() { super::bad_steps_are_errors::<$t>(); }

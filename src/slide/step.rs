@@ -96,12 +96,16 @@ impl<S: Scalar> Slider<S> {
         // The contacts too steep to stand on that the walk ran into (risers, walls), each with
         // the level direction into it and the height of its touched point. A contact touched
         // `r (1 - n·up)` above the ball's lowest point, more than `height` (and two skins)
-        // above what the walk climbs by itself, `r (1 - min_cos)`, is passed over: lifted by
-        // `height`, the ball would meet it as too steep again and come back down where it was.
+        // (and the walk's own rise) above what the walk climbs by itself, `r (1 - min_cos)`, is
+        // passed over: lifted by `height`, the ball would meet it as too steep again and come
+        // back down where it was.
         let mut risers = [None; MAX_SLIDES];
         let pressed = plain.contacts.iter().flatten().filter(|c| {
             let n = c.hit.normal;
-            let (slope, within) = (S::dot(n, up_unit), height + skin + skin);
+            // A walk up a ramp carries the lifted ball its own rise higher still.
+            let rising = S::dot(displacement, up_unit);
+            let rising = if rising > S::ZERO { rising } else { S::ZERO };
+            let (slope, within) = (S::dot(n, up_unit), height + skin + skin + rising);
             slope < cos
                 && S::dot(displacement, n) < S::ZERO
                 && self.radius.mul(cos - slope) <= within
