@@ -295,6 +295,41 @@ fn climbs_a_ledge_at_the_top_of_a_ramp<S: Tolerance>() {
     );
 }
 
+/// A ball whose own slope limit (60°) is looser than the step's (45°) climbs by itself what
+/// the step's limit calls too steep: stopped at a riser 0.29 high (touched where the normal
+/// is 0.42 up, a wall to it), lifted by a step of 0.05 it meets the edge at 0.52 up and rolls
+/// over it in a move of 0.3. Passing over contacts with the step's limit alone (0.5 × (0.71 −
+/// 0.42) = 0.14 above the step's reach) once left it at the riser.
+fn a_looser_own_slope_limit_climbs_more<S: Tolerance>() {
+    let (up, walkable) = (v::<S>([0.0, 1.0, 0.0]), S::from_f64(0.5f64.sqrt()));
+    let ball = Slider::new(S::from_f64(0.5)).unwrap();
+    let ball = ball.with_max_slope(up, S::from_f64(0.5)).unwrap();
+    let level = ledge::<S>(0.29, None);
+    let at = v::<S>([1.0 - (0.29f64 * 0.71).sqrt() - 5e-4, 0.5005, 0.0]);
+    let walk = v::<S>([0.3, 0.0, 0.0]);
+    let plain = ball.slide(&level, at, walk).unwrap();
+    let out = ball.step_slide(&level, at, walk, up, walkable, S::from_f64(0.05));
+    let out = out.unwrap();
+    let what = format!(
+        "{}: {:?} -> {:?}",
+        S::NAME,
+        back(plain.position),
+        back(out.position)
+    );
+    assert!(
+        back(plain.position)[0] < 0.55,
+        "{what}: the riser stops the plain walk"
+    );
+    assert!(
+        back(out.position)[1] > 0.6,
+        "{what}: not on the ledge's edge"
+    );
+    assert!(
+        out.floor(up, walkable).unwrap().is_some(),
+        "{what}: no floor"
+    );
+}
+
 /// Bad step heights and a zero `up` are errors.
 fn bad_steps_are_errors<S: Tolerance>() {
     let level = ledge::<S>(0.2, None);
@@ -325,6 +360,10 @@ macro_rules! per_scalar {
         #[test]
         fn without_a_ledge_it_is_the_plain_slide() {
             super::without_a_ledge_it_is_the_plain_slide::<$t>();
+        }
+        #[test]
+        fn a_looser_own_slope_limit_climbs_more() {
+            super::a_looser_own_slope_limit_climbs_more::<$t>();
         }
         #[test]
         fn climbs_ledges_met_at_a_slant() { super::climbs_ledges_met_at_a_slant::<$t>(); }

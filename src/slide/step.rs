@@ -34,7 +34,8 @@ impl<S: Scalar> Slider<S> {
     /// Which ledges: heights are measured from the ball's lowest point where it stopped (on a
     /// slope running up to a riser, that is below the slope's top). A ledge up to `height`
     /// with a floor beyond it is climbed at any speed. The ball rises by `height`, and, as the
-    /// walk alone climbs `r (1 - min_cos)`, a move across long enough climbs ledges up to
+    /// walk alone climbs `r (1 - min_cos)` (with the ball's own slope limit at `min_cos`, as in
+    /// the README's recipe), a move across long enough climbs ledges up to
     /// `height + r (1 - min_cos)`; higher ones stop it as a wall would.
     ///
     /// The lowering stops at the first thing below, a skin short of it (a slide would carry a
@@ -43,10 +44,12 @@ impl<S: Scalar> Slider<S> {
     /// own part; `blocked` is what the move across was denied. Use it for the walk of a
     /// grounded ball (the README's recipe), not for a fall: stepping while falling past a
     /// ledge would catch the ball on it. Quake steps 18 units for a player 32 wide; about half
-    /// the radius suits a ball. Cost: a contact touched more than `height + r (1 - min_cos)`
-    /// above the ball's lowest point (a ledge too high; a wall, touched at `r`, for steps
-    /// below `r min_cos`) is no step and costs nothing more: a walk along or into such walls
-    /// casts what [`slide`](Self::slide) casts. A
+    /// the radius suits a ball. Cost: a contact touched more than `height + r (1 - c)` above
+    /// the ball's lowest point, plus two skins and what the walk itself rises, is no step and
+    /// costs nothing more (`c` is the looser of `min_cos` and the ball's own
+    /// [`with_max_slope`](Self::with_max_slope) limit, or 0 without one: what the walk climbs
+    /// by itself). A ledge too high, or a wall touched at `r` for steps below `r c`, is so
+    /// passed over: a walk along or into such walls casts what [`slide`](Self::slide) casts. A
     /// step that is tried and dropped (a ledge within reach with no room or floor above it)
     /// adds three sweeps, or more where the lift or the move across slides.
     ///
@@ -95,20 +98,25 @@ impl<S: Scalar> Slider<S> {
         let skin = self.skin(magnitude(start));
         // The contacts too steep to stand on that the walk ran into (risers, walls), each with
         // the level direction into it and the height of its touched point. A contact touched
-        // `r (1 - n·up)` above the ball's lowest point, more than `height` (and two skins)
-        // (and the walk's own rise) above what the walk climbs by itself, `r (1 - min_cos)`, is
-        // passed over: lifted by `height`, the ball would meet it as too steep again and come
-        // back down where it was.
+        // `r (1 - n·up)` above the ball's lowest point, more than `height`, two skins and the
+        // walk's own rise above what the walk climbs by itself, `r (1 - climbs)`, is passed
+        // over: lifted by `height`, the ball would meet it as too steep again and come back
+        // down where it was.
         let mut risers = [None; MAX_SLIDES];
+        // The walk climbs by itself what its own slope limit lets it (without one, anything
+        // touched below the centre): the looser of that limit and `min_cos`.
+        let own = self.max_slope.map_or(S::ZERO, |(_, c)| c);
+        let own = if own > S::ZERO { own } else { S::ZERO };
+        let climbs = if own < cos { own } else { cos };
+        // A walk up a ramp carries the lifted ball its own rise higher still.
+        let rising = S::dot(displacement, up_unit);
+        let rising = if rising > S::ZERO { rising } else { S::ZERO };
+        let within = height + skin + skin + rising;
         let pressed = plain.contacts.iter().flatten().filter(|c| {
-            let n = c.hit.normal;
-            // A walk up a ramp carries the lifted ball its own rise higher still.
-            let rising = S::dot(displacement, up_unit);
-            let rising = if rising > S::ZERO { rising } else { S::ZERO };
-            let (slope, within) = (S::dot(n, up_unit), height + skin + skin + rising);
+            let slope = S::dot(c.hit.normal, up_unit);
             slope < cos
-                && S::dot(displacement, n) < S::ZERO
-                && self.radius.mul(cos - slope) <= within
+                && S::dot(displacement, c.hit.normal) < S::ZERO
+                && self.radius.mul(climbs - slope) <= within
         });
         for (slot, c) in risers.iter_mut().zip(pressed) {
             *slot = S::direction(Vec3::ZERO - level(c.hit.normal))
