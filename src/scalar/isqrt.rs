@@ -13,8 +13,9 @@
 //! room to spare for a cheaper conversion. For a 128-bit `x` it is up to 2^12, and one Newton
 //! step `r + (x − r²) / 2r`, its residual exact in integers and its quotient in `f64`, brings it
 //! within 1/2 of `√x`. Elsewhere (Cortex-M, whose FPUs have no `f64` square root, and wasm32,
-//! where libm's square root is software on stable Rust) `r = ⌊√x⌋` comes from core's `isqrt`.
-//! Either way the result is the same integer; the tests compare the two bit for bit.
+//! where libm's square root is software on stable Rust) `r = ⌊√x⌋` comes from core's `isqrt`,
+//! or, for a 64-bit `x` on a core without a long multiply or a divide (Cortex-M0), digit by
+//! digit. Every way gives the same integer; the tests compare them bit for bit.
 
 /// Whether `libm::sqrt` is one instruction on this target: libm's own condition for it.
 const HARDWARE_SQRT: bool = cfg!(any(
@@ -40,9 +41,47 @@ exact_isqrt_nearest!(exact_isqrt_nearest_128, u128);
 pub(super) fn isqrt_nearest_64(x: u64) -> u64 {
     if HARDWARE_SQRT {
         float_isqrt_nearest_64(x)
+    } else if cfg!(ballcast_no_long_mul) {
+        bitwise_isqrt_nearest_64(x)
     } else {
         exact_isqrt_nearest_64(x)
     }
+}
+
+/// `round(√x)` digit by digit: each step takes two more bits of `x` and gives one more bit of
+/// the root, by a shift, a compare and a subtraction (Warren, §11–1, the same section). For
+/// cores with neither a 32 × 32 → 64 multiply nor a divide (`ballcast_no_long_mul`), where
+/// core's `isqrt` calls software routines for both. The remainder `x' − root²` of the bits
+/// taken so far is at most `2 root`: below 2^17 over the first sixteen steps, which take the
+/// top half of `x` in 32-bit arithmetic, and below 2^35 over the last sixteen.
+pub(super) fn bitwise_isqrt_nearest_64(x: u64) -> u64 {
+    let (mut hi, mut lo) = ((x >> 32) as u32, x as u32);
+    let (mut root, mut rem) = (0u32, 0u32);
+    for _ in 0..16 {
+        // (2 root + 1)² = 4 root² + 4 root + 1: the next bit is one if 4 rem + bits covers
+        // 4 root + 1.
+        rem = (rem << 2) | (hi >> 30);
+        hi <<= 2;
+        root <<= 1;
+        let trial = (root << 1) | 1;
+        if rem >= trial {
+            rem -= trial;
+            root |= 1;
+        }
+    }
+    let mut rem = rem as u64;
+    for _ in 0..16 {
+        rem = (rem << 2) | (lo >> 30) as u64;
+        lo <<= 2;
+        root <<= 1;
+        let trial = ((root as u64) << 1) | 1;
+        if rem >= trial {
+            rem -= trial;
+            root |= 1;
+        }
+    }
+    // rem = x − root²: round up where √x > root + 1/2, i.e. rem > root.
+    root as u64 + (rem > root as u64) as u64
 }
 
 /// `round(√x)` for a 128-bit `x`.

@@ -1,9 +1,9 @@
-//! The float-estimate square roots against core's exact integer square root, bit for bit: the
-//! hosts that take the float path must give every target's integer.
+//! The float-estimate and digit-by-digit square roots against core's exact integer square
+//! root, bit for bit: every target must give the same integer.
 
 use super::{
-    exact_isqrt_nearest_64, exact_isqrt_nearest_128, float_isqrt_nearest_64,
-    float_isqrt_nearest_128,
+    bitwise_isqrt_nearest_64, exact_isqrt_nearest_64, exact_isqrt_nearest_128,
+    float_isqrt_nearest_64, float_isqrt_nearest_128,
 };
 
 use crate::xorshift::Rng;
@@ -18,7 +18,9 @@ fn near_squares(k: u128) -> impl Iterator<Item = u128> {
 }
 
 fn check_64(x: u64) {
-    assert_eq!(float_isqrt_nearest_64(x), exact_isqrt_nearest_64(x), "{x}");
+    let exact = exact_isqrt_nearest_64(x);
+    assert_eq!(float_isqrt_nearest_64(x), exact, "float {x}");
+    assert_eq!(bitwise_isqrt_nearest_64(x), exact, "bitwise {x}");
 }
 
 fn check_128(x: u128) {
@@ -30,7 +32,7 @@ fn check_128(x: u128) {
 }
 
 #[test]
-fn float_isqrt_64_is_exact_at_the_extremes() {
+fn isqrt_64_is_exact_at_the_extremes() {
     let top = u64::MAX as u128;
     let roots = (0..70).map(|k| k as u128).chain((0..=32).flat_map(|b| {
         let p = 1u128 << b;
@@ -51,7 +53,7 @@ fn float_isqrt_64_is_exact_at_the_extremes() {
 }
 
 #[test]
-fn float_isqrt_64_is_exact_on_random_operands() {
+fn isqrt_64_is_exact_on_random_operands() {
     let mut rng = Rng(0x9E37_79B9_7F4A_7C15);
     for _ in 0..1_000_000 {
         let (x, s) = (rng.next(), rng.next());
