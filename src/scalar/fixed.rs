@@ -170,6 +170,13 @@ macro_rules! fixed_scalar {
                 // would leave a panic path in the binary.
                 let len = ($isqrt(len2 as $sq) as $wide).max(1);
                 let bits = [s.x.to_bits(), s.y.to_bits(), s.z.to_bits()];
+                // Along an axis (a level's walls and floors), `len` is the largest component,
+                // 2^(UFRAC-1), and each quotient is exactly `2 c`: no division. The cast below
+                // wraps likewise.
+                if len == 1 << ($ufrac - 1) {
+                    return Vec3::new(bits[0], bits[1], bits[2])
+                        .map(|c| <$unit>::from_bits(c.wrapping_mul(2)));
+                }
                 if let Some(q) = $nnorm(bits, len) {
                     return Vec3::new(q[0], q[1], q[2]).map(<$unit>::from_bits);
                 }

@@ -14,8 +14,10 @@
 //! step `r + (x − r²) / 2r`, its residual exact in integers and its quotient in `f64`, brings it
 //! within 1/2 of `√x`. Elsewhere (Cortex-M, whose FPUs have no `f64` square root, and wasm32,
 //! where libm's square root is software on stable Rust) `r = ⌊√x⌋` comes from core's `isqrt`,
-//! or, for a 64-bit `x` on a core without a long multiply or a divide (Cortex-M0), digit by
-//! digit. Every way gives the same integer; the tests compare them bit for bit.
+//! or, for a 64-bit `x` on a core without a long multiply or a divide (Cortex-M0), from 32-bit
+//! operations. Every way gives the same integer; the tests compare them bit for bit.
+
+use super::narrow::split_mul_u32;
 
 /// Whether `libm::sqrt` is one instruction on this target: libm's own condition for it.
 const HARDWARE_SQRT: bool = cfg!(any(
@@ -42,26 +44,22 @@ pub(super) fn isqrt_nearest_64(x: u64) -> u64 {
     if HARDWARE_SQRT {
         float_isqrt_nearest_64(x)
     } else if cfg!(ballcast_no_long_mul) {
-        bitwise_isqrt_nearest_64(x)
+        split_isqrt_nearest_64(x)
     } else {
         exact_isqrt_nearest_64(x)
     }
 }
 
-/// `round(√x)` digit by digit: each step takes two more bits of `x` and gives one more bit of
-/// the root, by a shift, a compare and a subtraction (Warren, §11–1, the same section). For
-/// cores with neither a 32 × 32 → 64 multiply nor a divide (`ballcast_no_long_mul`), where
-/// core's `isqrt` calls software routines for both. The remainder `x' − root²` of the bits
-/// taken so far is at most `2 root`: below 2^17 over the first sixteen steps, which take the
-/// top half of `x` in 32-bit arithmetic, and below 2^35 over the last sixteen.
-pub(super) fn bitwise_isqrt_nearest_64(x: u64) -> u64 {
-    let (mut hi, mut lo) = ((x >> 32) as u32, x as u32);
+/// `⌊√x⌋` and `x − ⌊√x⌋²` digit by digit: each step takes two more bits of `x` and gives one
+/// more bit of the root, by a shift, a compare and a subtraction (Warren, §11–1, the same
+/// section). The remainder is at most `2 root`, below 2^17.
+fn sqrtrem_32(mut x: u32) -> (u32, u32) {
     let (mut root, mut rem) = (0u32, 0u32);
     for _ in 0..16 {
         // (2 root + 1)² = 4 root² + 4 root + 1: the next bit is one if 4 rem + bits covers
         // 4 root + 1.
-        rem = (rem << 2) | (hi >> 30);
-        hi <<= 2;
+        rem = (rem << 2) | (x >> 30);
+        x <<= 2;
         root <<= 1;
         let trial = (root << 1) | 1;
         if rem >= trial {
@@ -69,19 +67,49 @@ pub(super) fn bitwise_isqrt_nearest_64(x: u64) -> u64 {
             root |= 1;
         }
     }
-    let mut rem = rem as u64;
-    for _ in 0..16 {
-        rem = (rem << 2) | (lo >> 30) as u64;
-        lo <<= 2;
-        root <<= 1;
-        let trial = ((root as u64) << 1) | 1;
-        if rem >= trial {
-            rem -= trial;
-            root |= 1;
-        }
+    (root, rem)
+}
+
+/// `round(√x)` for a 64-bit `x` from 32-bit operations and one 32-bit division, for cores with
+/// neither a 32 × 32 → 64 multiply nor a divide (`ballcast_no_long_mul`), where core's `isqrt`
+/// calls software routines for both several times. Zimmermann's Karatsuba square root
+/// (*Karatsuba Square Root*, INRIA RR-3805, 1999), one level: `x` shifted left by an even
+/// `2k` until one of its top two bits is set; the root `s1` and remainder `r1` of its top half
+/// digit by digit (`2^15 <= s1 < 2^16`); then the low half's 16 root bits `q` and remainder `u`
+/// from `(r1 2^16 + a1) / 2 s1` (`a1`, `a0`: the low half's 16-bit halves), and the remainder
+/// `u 2^16 + a0 − q²`, which one correction makes non-negative. The root shifted back by `k`
+/// is `⌊√x⌋`.
+pub(super) fn split_isqrt_nearest_64(x: u64) -> u64 {
+    let round = |root: u32, rem: u64| root as u64 + (rem > root as u64) as u64;
+    if x >> 32 == 0 {
+        let (root, rem) = sqrtrem_32(x as u32);
+        return round(root, rem as u64);
     }
-    // rem = x − root²: round up where √x > root + 1/2, i.e. rem > root.
-    root as u64 + (rem > root as u64) as u64
+    let (mut n, mut k) = (x, 0);
+    while n >> 56 == 0 {
+        n <<= 8;
+        k += 4;
+    }
+    while n >> 62 == 0 {
+        n <<= 2;
+        k += 1;
+    }
+    let (s1, r1) = sqrtrem_32((n >> 32) as u32);
+    let (a1, a0) = ((n as u32) >> 16, n as u32 & 0xFFFF);
+    // (r1 2^16 + a1) / (2 s1) as ⌊(r1 2^15 + ⌊a1 / 2⌋) / s1⌋, which fits 32 bits (r1 < 2^17);
+    // q <= 2^16 + 1.
+    // `s1` is at least 2^15; a divisor the compiler cannot prove nonzero would leave a panic.
+    let (half, s1d) = ((r1 << 15) | (a1 >> 1), s1.max(1));
+    let (q, u) = (half / s1d, ((half % s1d) << 1) | (a1 & 1));
+    let mut s = ((s1 as u64) << 16) + q as u64;
+    let mut r = ((u as u64) << 16 | a0 as u64) as i64 - split_mul_u32(q, q) as i64;
+    while r < 0 {
+        r += 2 * s as i64 - 1;
+        s -= 1;
+    }
+    // s = ⌊√n⌋ = ⌊√x 2^k⌋, so ⌊√x⌋ = ⌊s / 2^k⌋ (k <= 15, s < 2^32).
+    let root = (s as u32) >> k;
+    round(root, x - split_mul_u32(root, root))
 }
 
 /// `round(√x)` for a 128-bit `x`.

@@ -189,17 +189,12 @@ pub(super) fn split_div_i32(n: i32, d: i32) -> i32 {
 /// exact `±2^29` alone). One reciprocal `F = floor(2^61 / len)` is shared by the three: with it
 /// `floor(|c| F / 2^32)` is short of `Q = floor(|c| 2^29 / len)` by at most one, which the
 /// exact remainder (below `2 len`, so right modulo 2^32) fixes; `2 Q` plus one more bit of the
-/// remainder is the quotient by `2^30`, and the rest decides the rounding. A length of exactly
-/// `2^29` (a vector along an axis, as a level's walls and floors give) divides exactly: each
-/// quotient is `2 c`. `None` outside that domain, where the generic path runs.
+/// remainder is the quotient by `2^30`, and the rest decides the rounding. `None` outside that
+/// domain, where the generic path runs.
 pub(super) fn split_normalize_i32(c: [i32; 3], len: u32) -> Option<[i32; 3]> {
     const HALF: u32 = 1 << 29;
-    if !(HALF..1 << 31).contains(&len) || c.iter().any(|c| c.unsigned_abs() > 1 << 30) {
+    if len <= HALF || len >= 1 << 31 || c.iter().any(|c| c.unsigned_abs() > 1 << 30) {
         return None;
-    }
-    if len == HALF {
-        // c 2^30 / 2^29 = 2c, no rounding; wrapping as the generic path's cast does.
-        return Some(c.map(|c| c.wrapping_mul(2)));
     }
     let f = exact_quotient(HALF, remainder_steps::<32>(HALF, len), len, 32);
     Some(c.map(|c| {

@@ -76,3 +76,39 @@ fn unit_to_scalar_rounds_ties_away() {
         }
     }
 }
+
+/// A vector along an axis, as `scaled` leaves it (largest component `2^(UFRAC-1)`), whose other
+/// components are too small to move the rounded length off `2^(UFRAC-1)`: `unit_normalize`
+/// doubles it without dividing, and gives the quotients `round(c 2^UFRAC / len)` (ties away
+/// from zero), worked here in 128 bits.
+#[test]
+fn axis_vectors_normalise_by_doubling() {
+    use super::sealed::Kernel;
+    use crate::Vec3;
+    use fixed::types::{I2F30, I2F62};
+    let quotient = |c: i128, len: i128, ufrac: u32| {
+        let q = ((c.abs() << ufrac) + len / 2) / len;
+        if c < 0 { -q } else { q }
+    };
+    // round(sqrt(big² + a² + b²)) stays `big` while a² + b² < big (the root moves by under 1/2).
+    let mut rng = Rng(0x6A09_E667_F3BC_C909);
+    for _ in 0..100_000 {
+        let (w, sign) = (rng.next(), rng.next());
+        let small =
+            |w: u64, bound: u64| (w % bound) as i64 * if w & sign & 1 == 0 { 1 } else { -1 };
+        let big = 1i64 << 29;
+        let (a, b) = (small(w, 1 << 14), small(w >> 32, 1 << 14));
+        let len = 1i128 << 29;
+        let want = [big, a, b].map(|c| quotient(c as i128, len, 30) as i32);
+        let v = Vec3::new(big, a, b).map(|c| I2F30::from_bits(c as i32));
+        let got = I16F16::unit_normalize(v).map(I2F30::to_bits);
+        assert_eq!([got.x, got.y, got.z], want, "{big} {a} {b}");
+        let big = 1i64 << 61;
+        let (a, b) = (small(w, 1 << 30), small(sign >> 1, 1 << 30));
+        let len = 1i128 << 61;
+        let want = [a, -big, b].map(|c| quotient(c as i128, len, 62) as i64);
+        let v = Vec3::new(a, -big, b).map(I2F62::from_bits);
+        let got = I32F32::unit_normalize(v).map(I2F62::to_bits);
+        assert_eq!([got.x, got.y, got.z], want, "{a} {big} {b}");
+    }
+}

@@ -1,9 +1,9 @@
-//! The float-estimate and digit-by-digit square roots against core's exact integer square
+//! The float-estimate and 32-bit square roots against core's exact integer square
 //! root, bit for bit: every target must give the same integer.
 
 use super::{
-    bitwise_isqrt_nearest_64, exact_isqrt_nearest_64, exact_isqrt_nearest_128,
-    float_isqrt_nearest_64, float_isqrt_nearest_128,
+    exact_isqrt_nearest_64, exact_isqrt_nearest_128, float_isqrt_nearest_64,
+    float_isqrt_nearest_128, split_isqrt_nearest_64,
 };
 
 use crate::xorshift::Rng;
@@ -20,7 +20,7 @@ fn near_squares(k: u128) -> impl Iterator<Item = u128> {
 fn check_64(x: u64) {
     let exact = exact_isqrt_nearest_64(x);
     assert_eq!(float_isqrt_nearest_64(x), exact, "float {x}");
-    assert_eq!(bitwise_isqrt_nearest_64(x), exact, "bitwise {x}");
+    assert_eq!(split_isqrt_nearest_64(x), exact, "split {x}");
 }
 
 fn check_128(x: u128) {

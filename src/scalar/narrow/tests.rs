@@ -292,7 +292,6 @@ fn split_normalize_is_exact() {
         assert_eq!(split_normalize_i32(c, len), Some(want), "{c:?} {len}");
     };
     let lens = [
-        1 << 29,
         (1 << 29) + 1,
         (1 << 29) + 2,
         3 << 29,
@@ -358,7 +357,7 @@ fn split_normalize_is_exact() {
         check([c(r >> 32), c(next()), c(next())], len);
     }
     for (c, len) in [
-        ([1 << 29, 0, 0], (1 << 29) - 1),
+        ([1 << 29, 0, 0], 1 << 29),
         ([(1 << 30) + 1, 0, 0], 1 << 30),
         ([0; 3], 1 << 31),
     ] {
