@@ -97,7 +97,7 @@ pub(super) fn split_isqrt_nearest_64(x: u64) -> u64 {
     let (s1, r1) = sqrtrem_32((n >> 32) as u32);
     let (a1, a0) = ((n as u32) >> 16, n as u32 & 0xFFFF);
     // (r1 2^16 + a1) / (2 s1) as ⌊(r1 2^15 + ⌊a1 / 2⌋) / s1⌋, which fits 32 bits (r1 < 2^17);
-    // q <= 2^16 + 1.
+    // q <= 2^16 (r1 <= 2 s1 and 2 s1 >= 2^16).
     // `s1` is at least 2^15; a divisor the compiler cannot prove nonzero would leave a panic.
     let (half, s1d) = ((r1 << 15) | (a1 >> 1), s1.max(1));
     let (q, u) = (half / s1d, ((half % s1d) << 1) | (a1 & 1));
