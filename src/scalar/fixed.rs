@@ -149,16 +149,22 @@ macro_rules! fixed_scalar {
                 ab.cmp(&cd)
             }
             fn scaled(v: Vec3<Self>) -> Option<Vec3<$unit>> {
-                let b = v.map(|c| c.to_bits() as $wide);
+                let b = v.map(|c| c.to_bits());
                 let m = largest(b.x.unsigned_abs(), b.y.unsigned_abs(), b.z.unsigned_abs());
                 if m == 0 {
                     return None;
                 }
-                // A power-of-two scale is exact: shift the top bit of `m` to `2^(UFRAC-1)`.
-                let top = (<$wide>::BITS - 1 - m.leading_zeros()) as i32;
+                // A power-of-two scale is exact: shift the top bit of `m` to `2^(UFRAC-1)`. Up,
+                // in the bits' own width (the unit's: the result is below 2^UFRAC); down, with
+                // rounding, in the wide one (a Cortex-M0 shifts 64 bits by a library call).
+                let top = (<$bits>::BITS - 1 - m.leading_zeros()) as i32;
                 let k = ($ufrac - 1) - top;
                 Some(b.map(|c| {
-                    <$unit>::from_bits((if k >= 0 { c << k } else { round_shift!(c, -k) }) as _)
+                    <$unit>::from_bits(if k >= 0 {
+                        c << k
+                    } else {
+                        round_shift!(c as $wide, -k) as _
+                    })
                 }))
             }
             fn unit_normalize(s: Vec3<$unit>) -> Vec3<$unit> {

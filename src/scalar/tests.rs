@@ -112,3 +112,48 @@ fn axis_vectors_normalise_by_doubling() {
         assert_eq!([got.x, got.y, got.z], want, "{a} {big} {b}");
     }
 }
+
+/// `scaled` puts the largest magnitude's top bit at `2^(UFRAC-1)` by a power of two, exactly
+/// up and rounded to nearest (ties away from zero) down, worked here in 128 bits, for
+/// components of every magnitude, the extremes included.
+#[test]
+fn scaled_shifts_by_a_power_of_two() {
+    use super::sealed::Kernel;
+    use crate::Vec3;
+    let shift = |c: i128, k: i32| {
+        if k >= 0 {
+            c << k
+        } else {
+            let q = (c.abs() + (1 << (-k - 1))) >> -k;
+            if c < 0 { -q } else { q }
+        }
+    };
+    let want = |c: [i128; 3], ufrac: i32| {
+        let m = c.iter().map(|c| c.unsigned_abs()).max().unwrap_or(0);
+        let k = (ufrac - 1) - (127 - m.leading_zeros() as i32);
+        c.map(|c| shift(c, k))
+    };
+    let mut rng = Rng(0xBB67_AE85_84CA_A73B);
+    let edges = [i64::MIN, i64::MIN + 1, -1, 1, i64::MAX];
+    for i in 0..1_000_000 {
+        let mut w = [0i64; 3].map(|_| (rng.next() as i64) >> (rng.next() % 64));
+        if i < 125 {
+            w = [edges[i % 5], edges[i / 5 % 5], edges[i / 25]];
+        }
+        let v = Vec3::new(w[0], w[1], w[2]);
+        let narrow = v.map(|c| I16F16::from_bits(c as i32));
+        if let Some(got) = I16F16::scaled(narrow) {
+            let got = got.map(|u| u.to_bits() as i128);
+            let c = [narrow.x, narrow.y, narrow.z].map(|c| c.to_bits() as i128);
+            assert_eq!([got.x, got.y, got.z], want(c, 30), "{c:?}");
+        }
+        if let Some(got) = I32F32::scaled(v.map(I32F32::from_bits)) {
+            let got = got.map(|u| u.to_bits() as i128);
+            assert_eq!(
+                [got.x, got.y, got.z],
+                want(w.map(|c| c as i128), 62),
+                "{w:?}"
+            );
+        }
+    }
+}
