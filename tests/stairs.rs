@@ -150,9 +150,9 @@ fn over_a_crest_onto_a_downhill_slope<S: Tolerance>() {
 /// Walking from a floor over a crest onto slopes of 20° to 44° falling away, at 4 and 8
 /// units/s and 60 to 480 frames a second: grounded on every frame. The recipe once snapped only
 /// a ball not moving up at all, and the floor a ball is pressed onto at the crest's edge, touched
-/// a hair behind it, tilts back by rounding: the next walk rose by 10^-6 of a unit a second, the
-/// snap was not asked, and the ball flew off the crest (in every scalar, on up to 454 frames of
-/// 576; f32 at 240 Hz and 8 units/s on 30°: 223).
+/// a hair behind it (within the tie of the face), tilts back: the next walk rose (by 10^-6 of
+/// its speed in f32, 10^-3 in I16F16), the snap was not asked, and the ball flew off the crest
+/// (in every scalar, on up to 454 frames of 576; f32 at 240 Hz and 8 units/s on 30°: 223).
 fn over_crests_at_every_frame_rate<S: Tolerance>() {
     for degrees in [20.0f64, 30.0, 36.0, 40.0, 44.0] {
         let (sin, cos) = degrees.to_radians().sin_cos();

@@ -330,6 +330,31 @@ fn a_looser_own_slope_limit_climbs_more<S: Tolerance>() {
     );
 }
 
+/// Walking slowly at 480 Hz onto a ledge as high as the step (0.25), at 30° and 45°: climbed. The step lands the ball on the ledge's rounded edge, and the next walks roll it up
+/// over the edge. A recipe that snapped every walk rising less than a skin a frame snapped
+/// these (the roll rises about 0.35 units/s, under a skin a frame at 480 Hz) down the edge's
+/// steep part, back to the lower floor, on every try. 0.5 units/s; 1 in `I16F16`, whose ball
+/// stops on the edge at 0.5 units/s (and at 1 unit/s at 60°), with that rule and without it.
+fn climbs_the_step_height_slowly_at_high_frame_rates<S: Tolerance>() {
+    let level = ledge::<S>(0.25, None);
+    let gait = Gait { hz: 480.0, ..HALF };
+    let coarse = S::EPSILON.to_f64() > 1e-6;
+    for speed in [if coarse { 1.0 } else { 0.5 }] {
+        for degrees in [30.0f64, 45.0] {
+            let (sin, cos) = degrees.to_radians().sin_cos();
+            let wish = [speed * cos, 0.0, speed * sin];
+            let end = walk(&level, [0.4, 0.5005, 0.0], wish, gait, 1920, |_, _| {});
+            let [x, y, _] = back(end);
+            assert!(
+                x > 1.0 && (y - 0.75).abs() < 0.05,
+                "{}: {speed} units/s at {degrees}°: ended at {:?}",
+                S::NAME,
+                back(end)
+            );
+        }
+    }
+}
+
 /// Bad step heights and a zero `up` are errors.
 fn bad_steps_are_errors<S: Tolerance>() {
     let level = ledge::<S>(0.2, None);
@@ -364,6 +389,10 @@ macro_rules! per_scalar {
         #[test]
         fn a_looser_own_slope_limit_climbs_more() {
             super::a_looser_own_slope_limit_climbs_more::<$t>();
+        }
+        #[test]
+        fn climbs_the_step_height_slowly_at_high_frame_rates() {
+            super::climbs_the_step_height_slowly_at_high_frame_rates::<$t>();
         }
         #[test]
         fn climbs_ledges_met_at_a_slant() { super::climbs_ledges_met_at_a_slant::<$t>(); }

@@ -64,9 +64,9 @@ pub fn walk<S: Scalar, G: Geometry<S>>(
         p = out.position;
         vel = ball.clip(&out, vel).unwrap();
         // The probe reaches two skins down; a walk that left the floor reaches `snap` further,
-        // unless it rose by more than a skin this frame (a bump; a jump): over a crest's edge,
-        // touched a hair behind it, a walk rises by rounding. The levels here lie within ±64.
-        let rising = vel.dot(up).mul(dt) > ball.skin(S::from_f64(64.0));
+        // unless it moves up by more than 1/256 of its speed (up a slope or an edge; a jump):
+        // over a crest's edge, touched a hair behind it, a walk rises by far less.
+        let rising = vel.dot(up) > vel.length().mul(S::from_f64(1.0 / 256.0));
         let depth = if walked && !rising { snap } else { S::ZERO };
         if floor.is_none()
             && let Some(f) = ball
