@@ -338,20 +338,18 @@ fn a_looser_own_slope_limit_climbs_more<S: Tolerance>() {
 fn climbs_the_step_height_slowly_at_high_frame_rates<S: Tolerance>() {
     let level = ledge::<S>(0.25, None);
     let gait = Gait { hz: 480.0, ..HALF };
-    let coarse = S::EPSILON.to_f64() > 1e-6;
-    for speed in [if coarse { 1.0 } else { 0.5 }] {
-        for degrees in [30.0f64, 45.0] {
-            let (sin, cos) = degrees.to_radians().sin_cos();
-            let wish = [speed * cos, 0.0, speed * sin];
-            let end = walk(&level, [0.4, 0.5005, 0.0], wish, gait, 1920, |_, _| {});
-            let [x, y, _] = back(end);
-            assert!(
-                x > 1.0 && (y - 0.75).abs() < 0.05,
-                "{}: {speed} units/s at {degrees}°: ended at {:?}",
-                S::NAME,
-                back(end)
-            );
-        }
+    let speed = if S::EPSILON.to_f64() > 1e-6 { 1.0 } else { 0.5 };
+    for degrees in [30.0f64, 45.0] {
+        let (sin, cos) = degrees.to_radians().sin_cos();
+        let wish = [speed * cos, 0.0, speed * sin];
+        let end = walk(&level, [0.4, 0.5005, 0.0], wish, gait, 1920, |_, _| {});
+        let [x, y, _] = back(end);
+        assert!(
+            x > 1.0 && (y - 0.75).abs() < 0.05,
+            "{}: {speed} units/s at {degrees}°: ended at {:?}",
+            S::NAME,
+            back(end)
+        );
     }
 }
 
