@@ -330,16 +330,25 @@ fn a_looser_own_slope_limit_climbs_more<S: Tolerance>() {
     );
 }
 
-/// Walking slowly at 480 Hz onto a ledge as high as the step (0.25), at 30° and 45°: climbed. The step lands the ball on the ledge's rounded edge, and the next walks roll it up
+/// Walking slowly at 480 Hz onto a ledge as high as the step (0.25), head on and at 30° to 60°:
+/// climbed. The step lands the ball on the ledge's rounded edge, and the next walks roll it up
 /// over the edge. A recipe that snapped every walk rising less than a skin a frame snapped
 /// these (the roll rises about 0.35 units/s, under a skin a frame at 480 Hz) down the edge's
-/// steep part, back to the lower floor, on every try. 0.5 units/s; 1 in `I16F16`, whose ball
-/// stops on the edge at 0.5 units/s (and at 1 unit/s at 60°), with that rule and without it.
+/// steep part, back to the lower floor, on every try. Where a walk up the edge left it more
+/// than a skin off, the ground probe once slid it back down the edge by what was left of its
+/// reach, as far as the walk had rolled it up: `I16F16` balls stayed on the edge at 0.25 and
+/// 0.5 units/s, the other scalars at 0.25 units/s at 45°. (At 0.25 units/s and 60°, 0.125
+/// towards the ledge, all four are still rolling up the edge after the 4 s.)
 fn climbs_the_step_height_slowly_at_high_frame_rates<S: Tolerance>() {
     let level = ledge::<S>(0.25, None);
     let gait = Gait { hz: 480.0, ..HALF };
-    let speed = if S::EPSILON.to_f64() > 1e-6 { 1.0 } else { 0.5 };
-    for degrees in [30.0f64, 45.0] {
+    for (speed, degrees) in [
+        (0.25, 0.0f64),
+        (0.25, 30.0),
+        (0.25, 45.0),
+        (0.5, 0.0),
+        (0.5, 60.0),
+    ] {
         let (sin, cos) = degrees.to_radians().sin_cos();
         let wish = [speed * cos, 0.0, speed * sin];
         let end = walk(&level, [0.4, 0.5005, 0.0], wish, gait, 1920, |_, _| {});

@@ -30,7 +30,7 @@ use crate::contact::unit;
 use crate::{Error, Geometry, Scalar, SceneHit, Sweep, Vec3, check};
 use heapless::Vec;
 use resolve::{resolve, settle};
-use rules::{Planes, add_planes, constrain, holds, magnitude};
+use rules::{FloorStop, Planes, add_planes, constrain, holds, magnitude};
 pub use slider::Slider;
 
 /// At most this many sweeps per call: each contact costs one, and a ball pressed into a corner
@@ -288,11 +288,13 @@ pub fn move_and_slide<S: Scalar, G: Geometry<S> + ?Sized>(
     Slider::new(radius)?.slide(scene, position, displacement)
 }
 
+/// [`move_and_slide`] with `ball`, ending at the first contact `stop` (a ground probe's) stops at.
 fn run<S: Scalar, G: Geometry<S> + ?Sized>(
     ball: &Slider<S>,
     scene: &G,
     position: Vec3<S>,
     displacement: Vec3<S>,
+    stop: Option<FloorStop<S>>,
 ) -> Result<Slide<S>, Error> {
     let radius = ball.radius;
     // Inside these ranges `position + displacement` stays within 2 * LIMIT: no overflow.
@@ -356,7 +358,9 @@ fn run<S: Scalar, G: Geometry<S> + ?Sized>(
         let alpha = rules::stand_off(&hit, rest, skin, rounding).0;
         out.position = settle(scene, &hit, out.position, rest, (radius, skin), rounding);
         let left = rest.scale(S::ONE - alpha);
-        rest = if add_planes(&mut planes, &hit, ball.max_slope) {
+        rest = if stop.is_some_and(|s| s.stops_at(&hit)) {
+            zero
+        } else if add_planes(&mut planes, &hit, ball.max_slope) {
             constrain(left, &planes, displacement)
         } else {
             zero

@@ -2,12 +2,33 @@
 //! is constrained by the planes touched.
 
 use crate::merge::{PLANES, same_plane};
-use crate::{Scalar, SceneHit, Vec3, contact::unit};
+use crate::{Contact, Scalar, SceneHit, Vec3, contact::unit};
 use heapless::Vec;
 
 /// The distinct planes a call has touched. Eight is more than a ball ever needs (three stop it);
 /// a call that touches more stops where it is (see [`add_planes`]).
 pub(super) type Planes<S> = Vec<Vec3<S>, { 2 * PLANES }>;
+
+/// Where a ground probe's slide ends: at the first floor it meets (a contact within the slope
+/// limit), not carried on down that floor's slope by what is left of the probe's reach. An edge
+/// or vertex the ball is walking off (its normal leans along the level heading) is no such
+/// stop: the probe rolls on around it.
+#[derive(Clone, Copy)]
+pub(super) struct FloorStop<S> {
+    /// `up` as a unit vector.
+    pub up: Vec3<S>,
+    /// The cosine of the steepest walkable slope.
+    pub min_cos: S,
+    /// The level part of the ball's heading (zero for none).
+    pub heading: Vec3<S>,
+}
+
+impl<S: Scalar> FloorStop<S> {
+    pub(super) fn stops_at(&self, hit: &SceneHit<S>) -> bool {
+        S::dot(hit.normal, self.up) >= self.min_cos
+            && (hit.contact == Contact::Face || S::dot(hit.normal, self.heading) <= S::ZERO)
+    }
+}
 
 /// Where to stop short of a contact met along `rest`, as a fraction of it, and a lift to add.
 /// A ball that travelled stops a skin short, measured along the normal, by backing off along

@@ -1,6 +1,6 @@
 //! A ball's settings: its radius, its skin and the steepest slope it can be carried up.
 
-use super::rules::magnitude;
+use super::rules::{FloorStop, magnitude};
 use super::{Floor, Slide, run, skin, slope_limit};
 use crate::{Contact, Error, Geometry, Scalar, Sweep, Vec3, check};
 
@@ -113,12 +113,13 @@ impl<S: Scalar> Slider<S> {
         position: Vec3<S>,
         displacement: Vec3<S>,
     ) -> Result<Slide<S>, Error> {
-        run(self, scene, position, displacement)
+        run(self, scene, position, displacement, None)
     }
 
     /// A ground probe: the floor a ball at `position` rests on, found by a slide of this ball
-    /// down along `up` by two skins ([`skin`](Self::skin) at `position`): that slide's
-    /// [`Slide::floor_normal`] with the same `up` and `min_cos`, and where it ended
+    /// down along `up` by two skins ([`skin`](Self::skin) at `position`) that ends at the first
+    /// floor it meets (not carried on down that floor's slope by the rest of its reach): that
+    /// slide's [`Slide::floor_normal`] with the same `up` and `min_cos`, and where it ended
     /// ([`Floor::position`]: at most a skin off the floor, a game's *floor snap*). The ball
     /// itself is not moved.
     ///
@@ -186,19 +187,19 @@ impl<S: Scalar> Slider<S> {
     ///
     /// The slide stops at the first thing below that can be stood on (a ball rolling up over a
     /// ledge's edge stays on the edge, not carried down its slope to the floor below), and goes
-    /// on past what is too steep. An edge or vertex behind the ball, whose normal leans along
-    /// the level part of `heading` (its velocity, or the walk's displacement), is one it is
-    /// walking off: it is snapped to only if, clear of it (a radius and a skin past the touched
-    /// point, level and away from it), a cast a radius deeper finds something to stand on (a
-    /// step down; a crest, beyond which a slope at the limit lies up to `0.59 r` lower). Over
-    /// a drop (a cliff, a trench) the snap is the ground probe, so the ball falls at any speed
-    /// as it would without the snap. Rolling around an edge uses up some of the reach: choose
-    /// `depth` a quarter more than the highest step down, and at least the drop of a walk down
-    /// the steepest walkable slope in a frame (`speed dt tan(slope)`). Do not snap a ball that
-    /// was not on the ground (a jump, a fall), nor one moving up (over the lip of a ramp, which
-    /// would then launch nothing), but for a little: a walk over a crest's edge, touched a hair
-    /// behind it, rises by up to a thousandth of its speed in `I16F16`, and must be snapped
-    /// (the README's recipe allows 1/256).
+    /// on past what is too steep and around an edge it walks off. An edge or vertex behind the
+    /// ball, whose normal leans along the level part of `heading` (its velocity, or the walk's
+    /// displacement), is one it is walking off: it is snapped to only if, clear of it (a radius
+    /// and a skin past the touched point, level and away from it), a cast a radius deeper finds
+    /// something to stand on (a step down; a crest, beyond which a slope at the limit lies up
+    /// to `0.59 r` lower). Over a drop (a cliff, a trench) the snap is the ground probe, so the
+    /// ball falls at any speed as it would without the snap. Rolling around an edge uses up some
+    /// of the reach: choose `depth` a quarter more than the highest step down, and at least the
+    /// drop of a walk down the steepest walkable slope in a frame (`speed dt tan(slope)`). Do
+    /// not snap a ball that was not on the ground (a jump, a fall), nor one moving up (over the
+    /// lip of a ramp, which would then launch nothing), but for a little: a walk over a crest's
+    /// edge, touched a hair behind it, rises by up to a thousandth of its speed in `I16F16`,
+    /// and must be snapped (the README's recipe allows 1/256).
     ///
     /// Walking at 2 units/s down steps of 0.2, a ball of r 0.5 snapping 0.25 was grounded on
     /// every frame, against 136 of 180 with the probe alone. Cost: one sweep and one slide, and
@@ -238,6 +239,7 @@ impl<S: Scalar> Slider<S> {
         let heading = check::point(heading, S::LIMIT)?;
         let skin = self.skin(magnitude(check::point(position, S::LIMIT)?));
         let mut reach = depth + skin + skin;
+        let level = |v: Vec3<S>| v - up_unit.scale(S::dot(v, up_unit));
         if depth > S::ZERO {
             let down = |from: Vec3<S>, by: S| {
                 let sweep = Sweep::new(from, from - up_unit.scale(by), self.radius).ok()?;
@@ -252,7 +254,6 @@ impl<S: Scalar> Slider<S> {
             // skin past the touched point, level and away from it), a cast a radius deeper
             // finds something to stand on (a slope at the slope limit lies `0.59 r` below the
             // crest); else a drop, where the snap is the ground probe.
-            let level = |v: Vec3<S>| v - up_unit.scale(S::dot(v, up_unit));
             if hit.contact != Contact::Face
                 && S::dot(hit.normal, level(heading)) > S::ZERO
                 && let Some((_, away)) = S::direction(level(hit.normal))
@@ -271,7 +272,18 @@ impl<S: Scalar> Slider<S> {
                 reach = if near < reach { near } else { reach };
             }
         }
-        let probe = self.slide(scene, position, Vec3::ZERO - up_unit.scale(reach))?;
+        let stop = FloorStop {
+            up: up_unit,
+            min_cos: cos,
+            heading: level(heading),
+        };
+        let probe = run(
+            self,
+            scene,
+            position,
+            Vec3::ZERO - up_unit.scale(reach),
+            Some(stop),
+        )?;
         Ok(probe.floor_normal(up, min_cos)?.map(|normal| Floor {
             normal,
             position: probe.position,
