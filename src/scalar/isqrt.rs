@@ -14,10 +14,11 @@
 //! step `r + (x − r²) / 2r`, its residual exact in integers and its quotient in `f64`, brings it
 //! within 1/2 of `√x`. Elsewhere (Cortex-M, whose FPUs have no `f64` square root, and wasm32,
 //! where libm's square root is software on stable Rust) `r = ⌊√x⌋` comes from core's `isqrt`,
-//! or, for a 64-bit `x` on a core without a long multiply or a divide (Cortex-M0), from 32-bit
-//! operations. Every way gives the same integer; the tests compare them bit for bit.
+//! or, for a 64-bit `x` on a core without a long multiply or a divide (Cortex-M0), from a
+//! reciprocal square root found by Newton's method in 32-bit multiplies. Every way gives the
+//! same integer; the tests compare them bit for bit.
 
-use super::narrow::split_mul_u32;
+use super::narrow::{high_mul_u32, split_mul_u32};
 
 /// Whether `libm::sqrt` is one instruction on this target: libm's own condition for it.
 const HARDWARE_SQRT: bool = cfg!(any(
@@ -44,46 +45,36 @@ pub(super) fn isqrt_nearest_64(x: u64) -> u64 {
     if HARDWARE_SQRT {
         float_isqrt_nearest_64(x)
     } else if cfg!(ballcast_no_long_mul) {
-        split_isqrt_nearest_64(x)
+        newton_isqrt_nearest_64(x)
     } else {
         exact_isqrt_nearest_64(x)
     }
 }
 
-/// `⌊√x⌋` and `x − ⌊√x⌋²` digit by digit: each step takes two more bits of `x` and gives one
-/// more bit of the root, by a shift, a compare and a subtraction (Warren, §11–1, the same
-/// section). The remainder is at most `2 root`, below 2^17.
-fn sqrtrem_32(mut x: u32) -> (u32, u32) {
-    let (mut root, mut rem) = (0u32, 0u32);
-    for _ in 0..16 {
-        // (2 root + 1)² = 4 root² + 4 root + 1: the next bit is one if 4 rem + bits covers
-        // 4 root + 1.
-        rem = (rem << 2) | (x >> 30);
-        x <<= 2;
-        root <<= 1;
-        let trial = (root << 1) | 1;
-        if rem >= trial {
-            rem -= trial;
-            root |= 1;
-        }
+/// `2^47 / √t` to 8 bits, for `t` in `[2^30, 2^32)` by its top 8 bits `i` (64 to 255), at the
+/// middle of their interval: `⌊√(2^94 / (i + 1/2) 2^24)⌋`, its top 16 of 32 bits.
+const RSQRT: [u16; 192] = {
+    let mut table = [0; 192];
+    let mut i = 0;
+    while i < 192 {
+        table[i] = (((1u128 << 71) / (2 * i as u128 + 129)).isqrt() >> 16) as u16;
+        i += 1;
     }
-    (root, rem)
-}
+    table
+};
 
-/// `round(√x)` for a 64-bit `x` from 32-bit operations and one 32-bit division, for cores with
-/// neither a 32 × 32 → 64 multiply nor a divide (`ballcast_no_long_mul`), where core's `isqrt`
-/// calls software routines for both several times. Zimmermann's Karatsuba square root
-/// (*Karatsuba Square Root*, INRIA RR-3805, 1999), one level: `x` shifted left by an even
-/// `2k` until one of its top two bits is set; the root `s1` and remainder `r1` of its top half
-/// digit by digit (`2^15 <= s1 < 2^16`); then the low half's 16 root bits `q` and remainder `u`
-/// from `(r1 2^16 + a1) / 2 s1` (`a1`, `a0`: the low half's 16-bit halves), and the remainder
-/// `u 2^16 + a0 − q²`, which one correction makes non-negative. The root shifted back by `k`
-/// is `⌊√x⌋`.
-pub(super) fn split_isqrt_nearest_64(x: u64) -> u64 {
-    let round = |root: u32, rem: u64| root as u64 + (rem > root as u64) as u64;
-    if x >> 32 == 0 {
-        let (root, rem) = sqrtrem_32(x as u32);
-        return round(root, rem as u64);
+/// `round(√x)` for a 64-bit `x` from 32-bit multiplies, for cores with neither a 32 × 32 → 64
+/// multiply nor a divide (`ballcast_no_long_mul`), where core's `isqrt` calls software routines
+/// for both several times. `x` shifted left by an even `2k` until one of its top two bits is
+/// set, `n`; its top half `t` gives `y ≈ 2^47 / √t` from [`RSQRT`] and two Newton steps
+/// `y (3 − t y² / 2^94) / 2`, each of three high products (Newton–Raphson on the reciprocal
+/// square root needs no division: Ercegovac and Lang, *Digital Arithmetic*, 2004); then
+/// `t y / 2^31 ≈ √n`, shifted back by `k`. That estimate is off by a few units (the steps'
+/// products are truncated), which the exact remainder `x − r²` corrects one unit at a time;
+/// the remainder then gives the rounding.
+pub(super) fn newton_isqrt_nearest_64(x: u64) -> u64 {
+    if x == 0 {
+        return 0;
     }
     let (mut n, mut k) = (x, 0);
     while n >> 56 == 0 {
@@ -94,22 +85,32 @@ pub(super) fn split_isqrt_nearest_64(x: u64) -> u64 {
         n <<= 2;
         k += 1;
     }
-    let (s1, r1) = sqrtrem_32((n >> 32) as u32);
-    let (a1, a0) = ((n as u32) >> 16, n as u32 & 0xFFFF);
-    // (r1 2^16 + a1) / (2 s1) as ⌊(r1 2^15 + ⌊a1 / 2⌋) / s1⌋, which fits 32 bits (r1 < 2^17);
-    // q <= 2^16 (r1 <= 2 s1 and 2 s1 >= 2^16).
-    // `s1` is at least 2^15; a divisor the compiler cannot prove nonzero would leave a panic.
-    let (half, s1d) = ((r1 << 15) | (a1 >> 1), s1.max(1));
-    let (q, u) = (half / s1d, ((half % s1d) << 1) | (a1 & 1));
-    let mut s = ((s1 as u64) << 16) + q as u64;
-    let mut r = ((u as u64) << 16 | a0 as u64) as i64 - split_mul_u32(q, q) as i64;
-    while r < 0 {
-        r += 2 * s as i64 - 1;
-        s -= 1;
+    let t = (n >> 32) as u32;
+    let mut y = (RSQRT[(t >> 24) as usize - 64] as u32) << 16;
+    for _ in 0..2 {
+        // t y² / 2^64 is 2^30 within the estimate's error: 3 2^30 less it stays positive. At
+        // t = 2^30 the step would reach 2^32: capped a unit short.
+        let e = high_mul_u32(t, high_mul_u32(y, y));
+        y = high_mul_u32(y, (3 << 30) - e).min(u32::MAX >> 1) << 1;
     }
-    // s = ⌊√n⌋ = ⌊√x 2^k⌋, so ⌊√x⌋ = ⌊s / 2^k⌋ (k <= 15, s < 2^32).
-    let root = (s as u32) >> k;
-    round(root, x - split_mul_u32(root, root))
+    // t y / 2^31 shifted back by k, in 32 bits: √x < 2^32, so the cap only brings it nearer.
+    let s = high_mul_u32(t, y);
+    let mut r = if k == 0 {
+        s.saturating_add(s)
+    } else {
+        s >> (k - 1)
+    };
+    // A few units from √x, so x − r² is far inside an i64; (r + 1)² − r² = 2r + 1.
+    let mut d = x.wrapping_sub(split_mul_u32(r, r)) as i64;
+    while d < 0 {
+        r -= 1;
+        d += 2 * r as i64 + 1;
+    }
+    while d > 2 * r as i64 {
+        d -= 2 * r as i64 + 1;
+        r += 1;
+    }
+    r as u64 + (d > r as i64) as u64
 }
 
 /// `round(√x)` for a 128-bit `x`.

@@ -136,12 +136,12 @@ fn scale_one(a: i32, n: i32, d: i32, (f, dm): (u32, u32)) -> i32 {
     }
 }
 
-/// `floor(a f / 2^32)` for `a <= 2^31`, from four 16 × 16 → 32-bit products: the high half of
-/// `a` is at most 2^15, so `ah fl` plus the carry of the low product fits 32 bits; the two
-/// middle products are added in halves. (The textbook form, one middle sum with a carry, is
-/// recognised by LLVM as a 64-bit multiply and becomes a call to `__aeabi_lmul`.)
+/// `floor(a f / 2^32)`, from four 16 × 16 → 32-bit products: `ah fl` plus the carry of the low
+/// product is at most `(2^16 − 1)² + 2^16 − 1 < 2^32`, and the two middle products are added
+/// in halves. (The textbook form, one middle sum with a carry, is recognised by LLVM as a
+/// 64-bit multiply and becomes a call to `__aeabi_lmul`.)
 #[inline]
-fn high_mul_u32(a: u32, f: u32) -> u32 {
+pub(super) fn high_mul_u32(a: u32, f: u32) -> u32 {
     let (ah, al) = (a >> 16, a & 0xFFFF);
     let (fh, fl) = (f >> 16, f & 0xFFFF);
     let hl = ah * fl + ((al * fl) >> 16);

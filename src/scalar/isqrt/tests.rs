@@ -3,7 +3,7 @@
 
 use super::{
     exact_isqrt_nearest_64, exact_isqrt_nearest_128, float_isqrt_nearest_64,
-    float_isqrt_nearest_128, split_isqrt_nearest_64,
+    float_isqrt_nearest_128, newton_isqrt_nearest_64,
 };
 
 use crate::xorshift::Rng;
@@ -20,7 +20,7 @@ fn near_squares(k: u128) -> impl Iterator<Item = u128> {
 fn check_64(x: u64) {
     let exact = exact_isqrt_nearest_64(x);
     assert_eq!(float_isqrt_nearest_64(x), exact, "float {x}");
-    assert_eq!(split_isqrt_nearest_64(x), exact, "split {x}");
+    assert_eq!(newton_isqrt_nearest_64(x), exact, "newton {x}");
 }
 
 fn check_128(x: u128) {
