@@ -264,11 +264,13 @@ impl<'a, S: Scalar, I: MeshIndex> CompactMesh<'a, S, I> {
         let cells = self.grid.lo.iter().chain(&self.grid.hi);
         let extent =
             cells.fold(0.0f64, |m, &c| m.max((c as f64).abs())) / Grid::scale(self.grid.exponent);
-        let path = Path::new(sweep, extent, self.class);
-        let units = if integer {
-            UnitBox::new(sweep, path.pad)
-        } else {
-            None
+        // The `f64` path only where it is used: its reciprocals are software on a Cortex-M.
+        let units = integer
+            .then(|| UnitBox::new(sweep, Path::pad(sweep, extent, self.class)))
+            .flatten();
+        let cull = match units {
+            Some(b) => Err(b),
+            None => Ok(Path::new(sweep, extent, self.class)),
         };
         let corners = |s: usize| Some(self.triangles.get(s)?.map(I::get));
         let slot = |s: usize| -> Option<(usize, StandardTriangle<S>)> {
@@ -278,9 +280,10 @@ impl<'a, S: Scalar, I: MeshIndex> CompactMesh<'a, S, I> {
         // Whether slot `s` may hold a contact within the reach (preparing costs far more).
         let near = |acc: &Earliest<S>, s: usize| -> Option<()> {
             let c = corners(s)?;
-            if let Some(b) = &units {
-                return (!b.misses(triangle(self.vertices, c)?.vertices())).then_some(());
-            }
+            let path = match &cull {
+                Ok(path) => path,
+                Err(b) => return (!b.misses(triangle(self.vertices, c)?.vertices())).then_some(()),
+            };
             let limit = S::to_f64(acc.reach()) + 1.0 / (1u64 << 50) as f64;
             let v = world(self.vertices, c)?;
             // Coordinates of validated vertices: never NaN.

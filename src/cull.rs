@@ -22,20 +22,12 @@ pub(crate) struct Path {
 }
 
 impl Path {
-    /// The path of `sweep` among geometry whose coordinates reach `extent` in magnitude, grown
-    /// by the radius, a bound on every rounding (as a [`Mesh`](crate::Mesh)'s tree grows its
-    /// boxes) and `2^class` seam margins (the [`bvh`](crate::bvh) docs explain both).
+    /// The path of `sweep` among geometry whose coordinates reach `extent` in magnitude, its
+    /// boxes grown by [`pad`](Self::pad).
     pub(crate) fn new<S: Scalar>(sweep: &Sweep<S>, extent: f64, class: u8) -> Self {
-        let f = |p: crate::Vec3<S>| p.to_array().map(S::to_f64);
-        let (p0, p1) = (f(sweep.p0()), f(sweep.p1()));
-        let d = [0, 1, 2].map(|a| p1[a] - p0[a]);
-        let big = |a: [f64; 3]| a.iter().fold(0.0f64, |m, x| m.max(x.abs()));
-        let magnitude = big(p0).max(big(p1)).max(extent);
-        let r = sweep.radius().to_f64();
-        // 2^class, exactly.
-        let seams = f64::from_bits(((1023 + class.min(31) as u32) as u64) << 52);
-        let pad = crate::bvh::rounding_pad::<S>(r, big(d), magnitude)
-            + (r / 64.0 + 4.0 * S::PRECISION.epsilon) * seams;
+        let (ends, r) = (endpoints(sweep), sweep.radius().to_f64());
+        let (p0, d, _) = ends;
+        let pad = grown_by::<S>(r, ends, extent, class);
         let per_unit = if S::PRECISION.relative {
             1.0
         } else {
@@ -49,6 +41,13 @@ impl Path {
             slack: pad - r,
             unit: 16.0 * S::PRECISION.epsilon * per_unit,
         }
+    }
+
+    /// How far [`new`](Self::new) grows the boxes: the radius, a bound on every rounding (as a
+    /// [`Mesh`](crate::Mesh)'s tree grows its boxes) and `2^class` seam margins (the
+    /// [`bvh`](crate::bvh) docs explain both). Alone, for the integer box ([`UnitBox`]).
+    pub(crate) fn pad<S: Scalar>(sweep: &Sweep<S>, extent: f64, class: u8) -> f64 {
+        grown_by::<S>(sweep.radius().to_f64(), endpoints(sweep), extent, class)
     }
 
     /// Where the segment, over `[0, limit]`, enters and leaves the box `lo..hi` grown by the pad.
@@ -268,6 +267,30 @@ impl UnitBox {
             high < self.lo[a] || low > self.hi[a]
         })
     }
+}
+
+/// [`Path::pad`], given the sweep's radius and [`endpoints`].
+#[inline]
+fn grown_by<S: Scalar>(
+    r: f64,
+    (p0, d, p1): ([f64; 3], [f64; 3], [f64; 3]),
+    extent: f64,
+    class: u8,
+) -> f64 {
+    let big = |a: [f64; 3]| a.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+    let magnitude = big(p0).max(big(p1)).max(extent);
+    // 2^class, exactly.
+    let seams = f64::from_bits(((1023 + class.min(31) as u32) as u64) << 52);
+    crate::bvh::rounding_pad::<S>(r, big(d), magnitude)
+        + (r / 64.0 + 4.0 * S::PRECISION.epsilon) * seams
+}
+
+/// A sweep's start and displacement in `f64`, and its end.
+#[inline]
+fn endpoints<S: Scalar>(sweep: &Sweep<S>) -> ([f64; 3], [f64; 3], [f64; 3]) {
+    let f = |p: Vec3<S>| p.to_array().map(S::to_f64);
+    let (p0, p1) = (f(sweep.p0()), f(sweep.p1()));
+    (p0, [0, 1, 2].map(|a| p1[a] - p0[a]), p1)
 }
 
 #[cfg(test)]

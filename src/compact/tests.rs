@@ -105,8 +105,7 @@ fn integer_culling_answers_alike<S: Scalar>() {
         assert_eq!(format!("{x:?}"), format!("{:?}", mesh.cast(&sweep)));
         hits += x.is_some() as usize;
         // The integer box does pass triangles by (the test would prove nothing otherwise).
-        let path = Path::new(&sweep, 16.0, 0);
-        let units = UnitBox::new(&sweep, path.pad).unwrap();
+        let units = UnitBox::new(&sweep, Path::pad(&sweep, 16.0, 0)).unwrap();
         passed += src.iter().filter(|t| units.misses(t.vertices())).count();
     }
     assert!(
