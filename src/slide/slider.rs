@@ -121,7 +121,9 @@ impl<S: Scalar> Slider<S> {
     /// floor it meets (not carried on down that floor's slope by the rest of its reach): that
     /// slide's [`Slide::floor_normal`] with the same `up` and `min_cos`, and where it ended
     /// ([`Floor::position`]: at most a skin off the floor, a game's *floor snap*). The ball
-    /// itself is not moved.
+    /// itself is not moved. Knowing no heading, it stops on a rounded edge whether the ball
+    /// walks onto it or off it; [`snap_to_floor`](Self::snap_to_floor) with the velocity and a
+    /// `depth` of zero rolls on around an edge the ball walks off.
     ///
     /// Why: the response keeps a ball a skin off what it touched, and lifts one met at once (a
     /// ball left exactly touching a floor, say) by a skin. A ball resting on a floor is then up
