@@ -59,9 +59,10 @@ pub(crate) fn face_point<S: Scalar>(s: &StandardSweep<S>) -> Option<(S, S, S)> {
 pub(crate) fn contains<S: Scalar>(tri: &StandardTriangle<S>, xq: S, zq: S) -> bool {
     let (x1, z1, x2) = tri.shape();
     let in_v0_v2 = zq >= S::ZERO;
-    let in_v0_v1 = S::mul_cmp(z1, xq, x1, zq) != Ordering::Less;
-    let in_v1_v2 = S::mul_cmp(x1 - x2, zq, z1, xq - x2) != Ordering::Less;
-    in_v0_v2 && in_v0_v1 && in_v1_v2
+    let in_v0_v1 = || S::mul_cmp(z1, xq, x1, zq) != Ordering::Less;
+    let in_v1_v2 = || S::mul_cmp(x1 - x2, zq, z1, xq - x2) != Ordering::Less;
+    // In that order, each only if the ones before hold: outside v0-v2 costs no product.
+    in_v0_v2 && in_v0_v1() && in_v1_v2()
 }
 
 impl<S: Scalar> StandardTriangle<S> {
