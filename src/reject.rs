@@ -30,9 +30,13 @@ impl<S: Scalar> StandardTriangle<S> {
     pub(crate) fn beyond_an_edge(&self, a: Vec3<S>, b: Vec3<S>, r: S) -> bool {
         (0..3).any(|i| {
             let (c, out) = (self.corner(i), self.edge(i).out());
-            let (wa, wb) = (S::dot_unit(a - c, out), S::dot_unit(b - c, out));
-            let one_sided = !self.two_sided;
-            wa > r && (wb > r || (b.y < S::ZERO && one_sided && clipped_beyond(a, b, wa, wb, r)))
+            let wa = S::dot_unit(a - c, out);
+            // `b`'s distance only where `a` is beyond the line.
+            wa > r && {
+                let wb = S::dot_unit(b - c, out);
+                let one_sided = !self.two_sided;
+                wb > r || (b.y < S::ZERO && one_sided && clipped_beyond(a, b, wa, wb, r))
+            }
         })
     }
 
