@@ -90,9 +90,10 @@ pub(super) fn settle<S: Scalar, G: Geometry<S> + ?Sized>(
         (hit.position, lift)
     } else if alpha > S::ZERO {
         return hit.position - rest.scale(hit.alpha - alpha);
-    } else if from + lift == from && lift != Vec3::ZERO {
-        // A lift by an approach smaller than the position's rounding is lost: the ball would
-        // stay touching, met at once by every later move. Lifted by a rounding of a height.
+    } else if S::dot((from + lift) - from, hit.normal) < S::div_pow2(S::dot(lift, hit.normal), 1) {
+        // A lift by an approach smaller than the position's rounding is lost (all of it, or all
+        // but a coordinate near zero): the ball would stay touching, met again by every later
+        // move. Lifted by a rounding of a height instead. (Fixed-point adds exactly: never.)
         (from, hit.normal.scale(rounding))
     } else {
         (from, lift)
