@@ -44,9 +44,7 @@ pub fn walk<S: Scalar, G: Geometry<S>>(
         let walked = floor.is_some();
         let out = match floor {
             Some(n) => {
-                // Gravity's g dt², but at least a skin (as in `tests/walking.rs`).
-                let (gdt2, skin) = (g.mul(dt).mul(dt), ball.skin(S::ONE));
-                let press = Vec3::ZERO - n * if gdt2 > skin { gdt2 } else { skin };
+                let press = Vec3::ZERO - n * g.mul(dt).mul(dt);
                 let pressed = ball.slide(level, p, press).unwrap();
                 vel = wish - n * wish.dot(n);
                 let out = ball
