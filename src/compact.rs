@@ -16,10 +16,14 @@
 //! the prepared mesh, in exchange for a sixth of the memory.
 
 use crate::bvh::{self, Grid, Node};
+use crate::contact::within_reach;
 use crate::cull::{Path, SOFT_F64, UnitBox};
 use crate::merge::{Earliest, earliest};
 use crate::scalar::{largest, smallest};
-use crate::{Features, Geometry, Mesh, Scalar, SceneHit, StandardTriangle, Sweep, Triangle, Vec3};
+use crate::triangle::Frame;
+use crate::{
+    Features, Geometry, Hit, Mesh, Scalar, SceneHit, StandardTriangle, Sweep, Triangle, Vec3,
+};
 use core::fmt;
 
 /// The two-sided bit of a triangle's byte.
@@ -277,6 +281,19 @@ impl<'a, S: Scalar, I: MeshIndex> CompactMesh<'a, S, I> {
             let t = triangle(self.vertices, corners(s)?)?;
             Some((self.order.get(s)?.get(), prepare(&t, *self.bytes.get(s)?)?))
         };
+        // Slot `s`'s contact within the reach. Behind the integer box (whose triangles the
+        // heights often pass by: it tests no plane) the triangle's frame comes first, and the
+        // rest of its preparation only where the heights leave a contact possible; behind the
+        // `f64` plane test they seldom do, and the triangle is prepared at once.
+        let cast_slot = |s: usize, reach: S| -> Option<(usize, Hit<S>)> {
+            let (t, byte) = (triangle(self.vertices, corners(s)?)?, *self.bytes.get(s)?);
+            let hit = if cull.is_err() {
+                cast_lazily(&t, byte, sweep, reach)
+            } else {
+                prepare(&t, byte)?.cast_within(sweep, reach)
+            };
+            Some((self.order.get(s)?.get(), hit?))
+        };
         // Whether slot `s` may hold a contact within the reach (preparing costs far more).
         let near = |acc: &Earliest<S>, s: usize| -> Option<()> {
             let c = corners(s)?;
@@ -298,8 +315,7 @@ impl<'a, S: Scalar, I: MeshIndex> CompactMesh<'a, S, I> {
             sound &= bvh::leaves_along(self.nodes, &self.grid, sweep, acc, |acc, slots, _| {
                 for s in slots {
                     if near(acc, s).is_some()
-                        && let Some((i, t)) = slot(s)
-                        && let Some(hit) = t.cast_within(sweep, acc.reach())
+                        && let Some((i, hit)) = cast_slot(s, acc.reach())
                     {
                         acc.offer(i, hit);
                     }
@@ -336,12 +352,24 @@ fn triangle<S: Scalar>(vertices: &[Vec3<S>], corners: [usize; 3]) -> Option<Tria
 
 /// `t` prepared with the features and sidedness of `byte`.
 fn prepare<S: Scalar>(t: &Triangle<S>, byte: u8) -> Option<StandardTriangle<S>> {
-    let st = StandardTriangle::new(t).ok()?;
+    Some(with_byte(StandardTriangle::new(t).ok()?, byte))
+}
+
+/// The contact of `t` (a triangle with `byte`) with the sweep at alpha `reach` or earlier, its
+/// preparation finished only if the heights of the sweep above its plane leave one possible.
+#[inline(never)]
+fn cast_lazily<S: Scalar>(t: &Triangle<S>, byte: u8, sweep: &Sweep<S>, reach: S) -> Option<Hit<S>> {
+    let frame = Frame::of(t).ok()?;
+    let heights = frame.heights(sweep);
+    within_reach(sweep, heights, byte & TWO_SIDED != 0, reach)?;
+    with_byte(frame.finish(t).ok()?, byte).cast_within_heights(sweep, heights, reach)
+}
+
+/// A prepared triangle with the active edges and sidedness of its byte.
+fn with_byte<S: Scalar>(st: StandardTriangle<S>, byte: u8) -> StandardTriangle<S> {
     let features = Features::from_bits(byte & Features::ALL.bits());
-    Some(
-        st.with_features(features)
-            .with_two_sided(byte & TWO_SIDED != 0),
-    )
+    st.with_features(features)
+        .with_two_sided(byte & TWO_SIDED != 0)
 }
 
 impl<S: Scalar, I: MeshIndex> Geometry<S> for CompactMesh<'_, S, I> {

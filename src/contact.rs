@@ -61,7 +61,7 @@ impl<S: Scalar> StandardTriangle<S> {
     /// ```
     pub fn cast(&self, sweep: &Sweep<S>) -> Option<Hit<S>> {
         let (y0, y1) = self.heights(sweep);
-        let (back, ..) = self.facing(sweep, (y0, y1))?;
+        let (back, ..) = facing(sweep, (y0, y1), self.two_sided)?;
         self.cast_facing(sweep, (y0, y1), back)
     }
 
@@ -71,11 +71,23 @@ impl<S: Scalar> StandardTriangle<S> {
     /// plane the ball is still too high above at that alpha before any of the transform.
     pub(crate) fn cast_within(&self, sweep: &Sweep<S>, reach: S) -> Option<Hit<S>> {
         let (y0, y1) = self.heights(sweep);
-        let (back, start, end) = self.facing(sweep, (y0, y1))?;
+        let (back, start, end) = facing(sweep, (y0, y1), self.two_sided)?;
         if above_at(sweep, (start, end), reach) {
             return None;
         }
         self.cast_facing(sweep, (y0, y1), back)
+    }
+
+    /// [`cast_within`](Self::cast_within) given the [`heights`](Self::heights) already found
+    /// (by the triangle's [`Frame`](crate::triangle::Frame), before the rest was prepared).
+    pub(crate) fn cast_within_heights(
+        &self,
+        sweep: &Sweep<S>,
+        heights: (S, S),
+        reach: S,
+    ) -> Option<Hit<S>> {
+        let back = within_reach(sweep, heights, self.two_sided, reach)?;
+        self.cast_facing(sweep, heights, back)
     }
 
     /// The rest of [`cast`](Self::cast) for a sweep that may touch the triangle from the side
@@ -115,42 +127,6 @@ impl<S: Scalar> StandardTriangle<S> {
             },
             contact,
         })
-    }
-
-    /// The side the sweep comes from (true: the back) and its heights as seen from that side,
-    /// or `None` where no contact is possible.
-    #[inline(always)]
-    fn facing(&self, sweep: &Sweep<S>, (y0, y1): (S, S)) -> Option<(bool, S, S)> {
-        // Towards the back (or along the plane behind it): a one-sided triangle ignores it, a
-        // two-sided one mirrors y. Contact needs the centre to start on the side it moves
-        // towards, or along, and to come within r of the plane: decided by the heights, before
-        // the rest of the transform.
-        let back = y1 > y0 || (y1 == y0 && y0 < S::ZERO);
-        let (start, end) = if back { (-y0, -y1) } else { (y0, y1) };
-        let r = sweep.radius();
-        if (back && !self.two_sided) || start < S::ZERO || end >= r {
-            // Moving away from the side the centre starts on, within r of the plane; or, for a
-            // one-sided triangle, leaving its plane for the front (a centre in the plane that
-            // moves to the back goes further in, and meets what it overlaps at alpha 0).
-            let leaves = start == S::ZERO && back && !self.two_sided;
-            let away = (start < S::ZERO && -start < r) || leaves;
-            return if away {
-                self.facing_away((start, end), back)
-            } else {
-                None
-            };
-        }
-        Some((back, start, end))
-    }
-
-    /// [`facing`](Self::facing) for a sweep that moves away from the side its centre starts
-    /// on, within r of the plane (`-r < start < 0` as seen from the side it moves towards), or
-    /// leaves the plane of a one-sided triangle for its front (`start` zero): that side is the
-    /// one whose edges and vertices it may still meet.
-    #[inline(always)]
-    fn facing_away(&self, (start, end): (S, S), back: bool) -> Option<(bool, S, S)> {
-        let side = !back;
-        (!side || self.two_sided).then_some((side, -start, -end))
     }
 
     /// `cast` for a sweep whose centre starts in front of the plane (or in it).
@@ -336,6 +312,61 @@ impl<S: Scalar> StandardTriangle<S> {
         let side = offset.y >= S::ZERO || self.two_sided;
         side.then_some(((beta, Some(offset), Contact::Vertex(i as u8)), key))
     }
+}
+
+/// The side from which a sweep whose ends lie at heights `y0`, `y1` above a triangle's plane
+/// may touch the triangle (true: the back) at alpha `reach` or earlier, or `None` where the
+/// heights alone rule that out: [`StandardTriangle::cast_within`]'s first tests, which need
+/// no more of the triangle than its plane and sidedness.
+#[inline]
+pub(crate) fn within_reach<S: Scalar>(
+    sweep: &Sweep<S>,
+    heights: (S, S),
+    two_sided: bool,
+    reach: S,
+) -> Option<bool> {
+    let (back, start, end) = facing(sweep, heights, two_sided)?;
+    (!above_at(sweep, (start, end), reach)).then_some(back)
+}
+
+/// The side the sweep comes from (true: the back) and its heights as seen from that side,
+/// or `None` where no contact is possible.
+#[inline(always)]
+fn facing<S: Scalar>(sweep: &Sweep<S>, (y0, y1): (S, S), two_sided: bool) -> Option<(bool, S, S)> {
+    // Towards the back (or along the plane behind it): a one-sided triangle ignores it, a
+    // two-sided one mirrors y. Contact needs the centre to start on the side it moves
+    // towards, or along, and to come within r of the plane: decided by the heights, before
+    // the rest of the transform.
+    let back = y1 > y0 || (y1 == y0 && y0 < S::ZERO);
+    let (start, end) = if back { (-y0, -y1) } else { (y0, y1) };
+    let r = sweep.radius();
+    if (back && !two_sided) || start < S::ZERO || end >= r {
+        // Moving away from the side the centre starts on, within r of the plane; or, for a
+        // one-sided triangle, leaving its plane for the front (a centre in the plane that
+        // moves to the back goes further in, and meets what it overlaps at alpha 0).
+        let leaves = start == S::ZERO && back && !two_sided;
+        let away = (start < S::ZERO && -start < r) || leaves;
+        return if away {
+            facing_away((start, end), back, two_sided)
+        } else {
+            None
+        };
+    }
+    Some((back, start, end))
+}
+
+/// [`facing`] for a sweep that moves away from the side its centre starts on, within r of
+/// the plane (`-r < start < 0` as seen from the side it moves towards), or leaves the plane of
+/// a one-sided triangle for its front (`start` zero): that side is the one whose edges and
+/// vertices it may still meet.
+#[inline(always)]
+fn facing_away<S: Scalar>(
+    (start, end): (S, S),
+    back: bool,
+    two_sided: bool,
+) -> Option<(bool, S, S)> {
+    let side = !back;
+    (!side || two_sided).then_some((side, -start, -end))
 }
 
 /// Whether the ball's centre is still higher than `r` above the plane (heights `start` to

@@ -1,10 +1,7 @@
 //! Triangles and their standard frame: the one rigid transform per triangle that the face test
 //! (and every later contact test) runs in.
 
-use crate::scalar::largest;
 use crate::{Error, Features, Scalar, StandardSweep, Sweep, Vec3, check};
-
-const DEGENERATE: Error = Error::Degenerate { triangle: None };
 
 /// A triangle as three world-space vertices: a plain `Copy` struct with no invariant.
 ///
@@ -161,75 +158,7 @@ impl<S: Scalar> StandardTriangle<S> {
     /// are collinear at the scalar's precision (the normal's direction would be uncertain by more
     /// than about 1e-3 rad), or when the standardized base `x2` or height `z1` rounds to zero.
     pub fn new(t: &Triangle<S>) -> Result<Self, Error> {
-        // Two comparisons per coordinate, which NaN and infinities fail; the checks then name
-        // the first offender.
-        let (lo, hi) = (-S::LIMIT, S::LIMIT);
-        let within = |c: S| lo <= c && c <= hi;
-        let inside = |p: Vec3<S>| within(p.x) && within(p.y) && within(p.z);
-        if !(inside(t.v0) && inside(t.v1) && inside(t.v2)) {
-            for v in [t.v0, t.v1, t.v2] {
-                check::point(v, S::LIMIT)?;
-            }
-        }
-        let edges = [t.v1 - t.v0, t.v2 - t.v1, t.v0 - t.v2];
-        // (v1-v0)×(v2-v0) = e0×e1 = e1×e2 = e2×e0: use the pair that leaves out the longest edge.
-        // Only that pair is scaled: a zero edge is always in it (the other two are then equal
-        // and opposite, so the longest is the one after it), and gives `Degenerate`.
-        let [l0, l1, l2] = edges.map(|e| largest(e.x.abs(), e.y.abs(), e.z.abs()));
-        let (a, b) = if l2 >= l0 && l2 >= l1 {
-            (0, 1)
-        } else if l0 >= l1 {
-            (1, 2)
-        } else {
-            (2, 0)
-        };
-        let scaled = |i: usize| S::scaled(edges[i]).ok_or(DEGENERATE);
-        let n = S::unit_cross(scaled(a)?, scaled(b)?).ok_or(DEGENERATE)?;
-
-        let base = t.v2 - t.v0;
-        let ux = S::unit_normalize(S::scaled(base).ok_or(DEGENERATE)?);
-        let uz = S::unit_cross(ux, n).ok_or(DEGENERATE)?;
-        let uy = S::unit_cross(uz, ux).ok_or(DEGENERATE)?;
-
-        let side = t.v1 - t.v0;
-        let (x1, z1, x2) = (
-            S::dot_unit(side, ux),
-            S::dot_unit(side, uz),
-            S::dot_unit(base, ux),
-        );
-        if !(x2 > S::ZERO && z1 > S::ZERO) {
-            return Err(DEGENERATE);
-        }
-        let z = S::ZERO;
-        let (v0, v1, v2) = (
-            Vec3::new(z, z, z),
-            Vec3::new(x1, z, z1),
-            Vec3::new(x2, z, z),
-        );
-        let mut edges = [Edge {
-            dir: [S::UNIT_ZERO; 2],
-            len: S::ZERO,
-        }; 2];
-        for (edge, (from, to)) in edges.iter_mut().zip([(v0, v1), (v1, v2)]) {
-            let (len, dir) = S::direction(to - from).ok_or(DEGENERATE)?;
-            *edge = Edge {
-                dir: [dir.x, dir.z],
-                len,
-            };
-        }
-        Ok(Self {
-            origin: t.v0,
-            ux,
-            uy,
-            uz,
-            x1,
-            z1,
-            x2,
-            edges,
-            neg_x: S::direction_neg_x(x2),
-            features: Features::ALL,
-            two_sided: false,
-        })
+        Frame::of(t)?.finish(t)
     }
 
     /// The triangle as plain data, e.g. for baking into a `static` (see [`Parts`]).
@@ -332,8 +261,7 @@ impl<S: Scalar> StandardTriangle<S> {
     /// The heights of the sweep's ends above the triangle's plane (their standard-frame y):
     /// a third of the transform, and all that most rejections need.
     pub(crate) fn heights(&self, s: &Sweep<S>) -> (S, S) {
-        let y = |p: Vec3<S>| S::dot_unit(p - self.origin, self.uy);
-        (y(s.p0()), y(s.p1()))
+        frame::heights(self.origin, self.uy, s)
     }
 
     /// [`standardize`](Self::standardize) given the [`heights`](Self::heights) already found.
@@ -386,5 +314,8 @@ impl<S: Scalar> StandardTriangle<S> {
     }
 }
 
+mod frame;
 #[cfg(test)]
 mod tests;
+
+pub(crate) use frame::Frame;

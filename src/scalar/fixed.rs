@@ -157,7 +157,7 @@ macro_rules! fixed_scalar {
                 // A power-of-two scale is exact: shift the top bit of `m` to `2^(UFRAC-1)`. Up,
                 // in the bits' own width (the unit's: the result is below 2^UFRAC); down, with
                 // rounding, in the wide one (a Cortex-M0 shifts 64 bits by a library call).
-                let top = (<$bits>::BITS - 1 - m.leading_zeros()) as i32;
+                let top = (<$bits>::BITS - 1 - m.clz()) as i32;
                 let k = ($ufrac - 1) - top;
                 Some(b.map(|c| {
                     <$unit>::from_bits(if k >= 0 {
@@ -204,7 +204,7 @@ macro_rules! fixed_scalar {
                 if m < (1 << ($ufrac + 10)) {
                     return None;
                 }
-                let shift = (<$wide>::BITS - m.leading_zeros()) as i32 - $ufrac;
+                let shift = (<$wide>::BITS - m.clz()) as i32 - $ufrac;
                 Some(Self::unit_normalize(
                     c.map(|x| <$unit>::from_bits(round_shift!(x, shift) as _)),
                 ))

@@ -193,7 +193,7 @@ pub(super) fn split_normalize_i32(c: [i32; 3], len: u32) -> Option<[i32; 3]> {
     if len <= HALF || len >= 1 << 31 || c.iter().any(|c| c.unsigned_abs() > 1 << 30) {
         return None;
     }
-    let f = exact_quotient(HALF, remainder_steps::<32>(HALF, len), len, 32);
+    let f = reciprocal_61(len);
     Some(c.map(|c| {
         let a = c.unsigned_abs();
         let mut q = high_mul_u32(a, f);
@@ -212,6 +212,59 @@ pub(super) fn split_normalize_i32(c: [i32; 3], len: u32) -> Option<[i32; 3]> {
         let q = (q + (rem >= len - rem) as u32) as i32;
         if c < 0 { q.wrapping_neg() } else { q }
     }))
+}
+
+/// `2^63 / D` to about 8 bits, for `D` in `[2^31, 2^32)` by its 7 bits after the leading one
+/// (`i`), at the middle of their interval: `⌊2^63 / (2^31 + (i + 1/2) 2^24)⌋`, its top 16 of
+/// 32 bits.
+const RECIPROCAL: [u16; 128] = {
+    let mut table = [0; 128];
+    let mut i = 0;
+    while i < 128 {
+        table[i] = (((1u64 << 63) / ((1 << 31) + (2 * i as u64 + 1) * (1 << 23))) >> 16) as u16;
+        i += 1;
+    }
+    table
+};
+
+/// `⌊2^61 / len⌋` for `2^29 < len < 2^31`: the reciprocal [`split_normalize_i32`] shares among
+/// a vector's components, from 32-bit multiplies and no division. `len` shifted to
+/// `D` in `[2^31, 2^32)` gives `x ≈ 2^63 / D` from [`RECIPROCAL`] and two Newton steps
+/// `x (2 − D x / 2^63)`, each of two high products (Newton–Raphson on the reciprocal: Ercegovac
+/// and Lang, *Digital Arithmetic*, 2004); the exact remainder `2^63 − D x` then corrects `x` one
+/// unit at a time. Thirty-two shift-and-subtract steps and an exact division cost a Cortex-M0
+/// about half as much again.
+pub(super) fn reciprocal_61(len: u32) -> u32 {
+    // At len = 2^30 the quotient 2^63 / D would be 2^32.
+    if len == 1 << 30 {
+        return 1 << 31;
+    }
+    let z = if len < 1 << 30 { 2 } else { 1 };
+    let d = len << z;
+    let mut x = (RECIPROCAL[((d >> 24) & 0x7F) as usize] as u32) << 16;
+    for _ in 0..2 {
+        // D x / 2^32 is 2^31 within the estimate's error; the step scales x by 1 + e / 2^31.
+        let e = (1i64 << 31) - high_mul_u32(d, x) as i64;
+        let step = high_mul_u32(x, e.unsigned_abs() as u32) << 1;
+        x = if e < 0 {
+            x.saturating_sub(step)
+        } else {
+            x.saturating_add(step)
+        };
+    }
+    // A few units from ⌊2^63 / D⌋ (below 2^32: D > 2^31 here), so the remainder is small.
+    let product = ((high_mul_u32(d, x) as u64) << 32) | d.wrapping_mul(x) as u64;
+    let mut rem = (1u64 << 63).wrapping_sub(product) as i64;
+    while rem < 0 {
+        x -= 1;
+        rem += d as i64;
+    }
+    while rem >= d as i64 {
+        x += 1;
+        rem -= d as i64;
+    }
+    // ⌊2^61 / len⌋ = ⌊2^(61 + z) / D⌋: the quotient by 2^63, or half of it, floored.
+    x >> (2 - z)
 }
 
 /// `(q, r)` with `n 2^K = q d + r` and `0 <= r < d`, for `n < d <= 2^31` (so `q < 2^K`),

@@ -1,8 +1,9 @@
 //! The 32-bit paths against the 64-bit arithmetic they replace, bit for bit.
 
 use super::{
-    high_mul_u32, odd_inverse, shifted_div, small_mul_i32, split_div_i32, split_dot_unit_i32,
-    split_mul_i32, split_mul_u32, split_normalize_i32, split_scale_fraction_i32,
+    high_mul_u32, odd_inverse, reciprocal_61, shifted_div, small_mul_i32, split_div_i32,
+    split_dot_unit_i32, split_mul_i32, split_mul_u32, split_normalize_i32,
+    split_scale_fraction_i32,
 };
 use crate::Scalar;
 use crate::scalar::sealed::Kernel;
@@ -362,5 +363,40 @@ fn split_normalize_is_exact() {
         ([0; 3], 1 << 31),
     ] {
         assert_eq!(split_normalize_i32(c, len), None, "{c:?} {len}");
+    }
+}
+
+/// `reciprocal_61` against the 64-bit division: every length near the ends of its domain and
+/// near each of the table's intervals' ends, and 10^6 pseudo-random ones.
+#[test]
+fn reciprocal_is_exact() {
+    let check = |len: u32| {
+        assert_eq!(
+            reciprocal_61(len),
+            ((1u64 << 61) / len as u64) as u32,
+            "{len}"
+        )
+    };
+    let edges = (0..=256u32).flat_map(|i| {
+        // Interval ends of the table, for D = len << 1 and len << 2.
+        let a = (1u64 << 30) + i as u64 * (1 << 22);
+        let b = (1u64 << 29) + i as u64 * (1 << 21);
+        [a, b]
+    });
+    for base in edges.chain([1 << 29, 1 << 30, (1 << 31) - 1]) {
+        for k in -40i64..=40 {
+            let len = base as i64 + k;
+            if len > 1 << 29 && len < 1 << 31 {
+                check(len as u32);
+            }
+        }
+    }
+    let mut x: u64 = 0x2545_F491_4F6C_DD1D;
+    for _ in 0..1_000_000 {
+        x ^= x << 13;
+        x ^= x >> 7;
+        x ^= x << 17;
+        let len = (1 << 29) + 1 + (x % ((1 << 31) - (1 << 29) - 1)) as u32;
+        check(len);
     }
 }

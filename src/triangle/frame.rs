@@ -1,0 +1,121 @@
+//! [`StandardTriangle::new`] in two halves: the frame (origin and axes), which is all the
+//! heights of a sweep need, and the rest (the standardized shape and edges). A triangle
+//! prepared on the spot (a compact mesh's, a heightfield's) can then be passed by on its
+//! heights alone before the second half: two square roots, two normalisations and three dot
+//! products saved for each triangle the ball cannot reach, bit for bit the same triangle for
+//! those it can.
+
+use super::{Edge, StandardTriangle, Triangle};
+use crate::scalar::largest;
+use crate::{Error, Features, Scalar, Sweep, Vec3, check};
+
+const DEGENERATE: Error = Error::Degenerate { triangle: None };
+
+/// The first half of a prepared triangle: the validated source and its frame.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Frame<S: Scalar> {
+    origin: Vec3<S>,
+    ux: Vec3<S::Unit>,
+    uy: Vec3<S::Unit>,
+    uz: Vec3<S::Unit>,
+}
+
+/// The heights of the sweep's ends above the plane through `origin` with unit normal `uy`.
+#[inline(always)]
+pub(super) fn heights<S: Scalar>(origin: Vec3<S>, uy: Vec3<S::Unit>, s: &Sweep<S>) -> (S, S) {
+    let y = |p: Vec3<S>| S::dot_unit(p - origin, uy);
+    (y(s.p0()), y(s.p1()))
+}
+
+impl<S: Scalar> Frame<S> {
+    /// Validates `t` and finds its frame; the errors of [`StandardTriangle::new`] but those of
+    /// the shape, which [`finish`](Self::finish) gives.
+    #[inline(always)]
+    pub(crate) fn of(t: &Triangle<S>) -> Result<Self, Error> {
+        // Two comparisons per coordinate, which NaN and infinities fail; the checks then name
+        // the first offender.
+        let (lo, hi) = (-S::LIMIT, S::LIMIT);
+        let within = |c: S| lo <= c && c <= hi;
+        let inside = |p: Vec3<S>| within(p.x) && within(p.y) && within(p.z);
+        if !(inside(t.v0) && inside(t.v1) && inside(t.v2)) {
+            for v in [t.v0, t.v1, t.v2] {
+                check::point(v, S::LIMIT)?;
+            }
+        }
+        let edges = [t.v1 - t.v0, t.v2 - t.v1, t.v0 - t.v2];
+        // (v1-v0)×(v2-v0) = e0×e1 = e1×e2 = e2×e0: use the pair that leaves out the longest edge.
+        // Only that pair is scaled: a zero edge is always in it (the other two are then equal
+        // and opposite, so the longest is the one after it), and gives `Degenerate`.
+        let [l0, l1, l2] = edges.map(|e| largest(e.x.abs(), e.y.abs(), e.z.abs()));
+        let (a, b) = if l2 >= l0 && l2 >= l1 {
+            (0, 1)
+        } else if l0 >= l1 {
+            (1, 2)
+        } else {
+            (2, 0)
+        };
+        let scaled = |i: usize| S::scaled(edges[i]).ok_or(DEGENERATE);
+        let n = S::unit_cross(scaled(a)?, scaled(b)?).ok_or(DEGENERATE)?;
+
+        let ux = S::unit_normalize(S::scaled(t.v2 - t.v0).ok_or(DEGENERATE)?);
+        let uz = S::unit_cross(ux, n).ok_or(DEGENERATE)?;
+        let uy = S::unit_cross(uz, ux).ok_or(DEGENERATE)?;
+        Ok(Self {
+            origin: t.v0,
+            ux,
+            uy,
+            uz,
+        })
+    }
+
+    /// The heights of the sweep's ends above the plane, as the finished triangle's
+    /// [`heights`](StandardTriangle::heights).
+    pub(crate) fn heights(&self, s: &Sweep<S>) -> (S, S) {
+        heights(self.origin, self.uy, s)
+    }
+
+    /// The rest of [`StandardTriangle::new`] for the triangle `t` this frame was found for.
+    #[inline(always)]
+    pub(crate) fn finish(self, t: &Triangle<S>) -> Result<StandardTriangle<S>, Error> {
+        let Self { origin, ux, uy, uz } = self;
+        let (base, side) = (t.v2 - t.v0, t.v1 - t.v0);
+        let (x1, z1, x2) = (
+            S::dot_unit(side, ux),
+            S::dot_unit(side, uz),
+            S::dot_unit(base, ux),
+        );
+        if !(x2 > S::ZERO && z1 > S::ZERO) {
+            return Err(DEGENERATE);
+        }
+        let z = S::ZERO;
+        let (v0, v1, v2) = (
+            Vec3::new(z, z, z),
+            Vec3::new(x1, z, z1),
+            Vec3::new(x2, z, z),
+        );
+        let mut edges = [Edge {
+            dir: [S::UNIT_ZERO; 2],
+            len: S::ZERO,
+        }; 2];
+        for (edge, (from, to)) in edges.iter_mut().zip([(v0, v1), (v1, v2)]) {
+            let (len, dir) = S::direction(to - from).ok_or(DEGENERATE)?;
+            *edge = Edge {
+                dir: [dir.x, dir.z],
+                len,
+            };
+        }
+        Ok(StandardTriangle {
+            origin,
+            ux,
+            uy,
+            uz,
+            x1,
+            z1,
+            x2,
+            edges,
+            neg_x: S::direction_neg_x(x2),
+            features: Features::ALL,
+            two_sided: false,
+        })
+    }
+}
