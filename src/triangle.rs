@@ -260,8 +260,13 @@ impl<S: Scalar> StandardTriangle<S> {
 
     /// The heights of the sweep's ends above the triangle's plane (their standard-frame y):
     /// a third of the transform, and all that most rejections need.
+    // Inline on cores without a long multiply (a Cortex-M0: 16 fewer instructions per sweep
+    // settled by the heights, `embedded/count.sh`); out of line elsewhere, where inlining it
+    // costs `I16F16`'s face test on x86-64 about 30 instructions in spilled registers.
+    #[cfg_attr(ballcast_no_long_mul, inline(always))]
     pub(crate) fn heights(&self, s: &Sweep<S>) -> (S, S) {
-        frame::heights(self.origin, self.uy, s)
+        let y = |p: Vec3<S>| S::dot_unit(p - self.origin, self.uy);
+        (y(s.p0()), y(s.p1()))
     }
 
     /// [`standardize`](Self::standardize) given the [`heights`](Self::heights) already found.

@@ -20,13 +20,6 @@ pub(crate) struct Frame<S: Scalar> {
     uz: Vec3<S::Unit>,
 }
 
-/// The heights of the sweep's ends above the plane through `origin` with unit normal `uy`.
-#[inline(always)]
-pub(super) fn heights<S: Scalar>(origin: Vec3<S>, uy: Vec3<S::Unit>, s: &Sweep<S>) -> (S, S) {
-    let y = |p: Vec3<S>| S::dot_unit(p - origin, uy);
-    (y(s.p0()), y(s.p1()))
-}
-
 impl<S: Scalar> Frame<S> {
     /// Validates `t` and finds its frame; the errors of [`StandardTriangle::new`] but those of
     /// the shape, which [`finish`](Self::finish) gives.
@@ -71,7 +64,8 @@ impl<S: Scalar> Frame<S> {
     /// The heights of the sweep's ends above the plane, as the finished triangle's
     /// [`heights`](StandardTriangle::heights).
     pub(crate) fn heights(&self, s: &Sweep<S>) -> (S, S) {
-        heights(self.origin, self.uy, s)
+        let y = |p: Vec3<S>| S::dot_unit(p - self.origin, self.uy);
+        (y(s.p0()), y(s.p1()))
     }
 
     /// The rest of [`StandardTriangle::new`] for the triangle `t` this frame was found for.
