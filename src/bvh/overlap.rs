@@ -93,8 +93,17 @@ impl Walk {
                 // `n < 4` always holds (one entry per child at most); said here so that no
                 // bounds check, and no panic path, is left in the insertion below.
                 if meets && n < met.len() {
+                    // The sign applied by a choice, not a product: a 64-bit multiply is a
+                    // library call on a Cortex-M0.
                     let key = (0..3)
-                        .map(|a| self.toward[a] as i64 * (clo[a] as i64 + chi[a] as i64))
+                        .map(|a| {
+                            let centre = clo[a] as i64 + chi[a] as i64;
+                            match self.toward[a].signum() {
+                                1 => centre,
+                                -1 => -centre,
+                                _ => 0,
+                            }
+                        })
                         .sum::<i64>();
                     let mut at = n;
                     while at > 0 && met[at - 1].0 < key {
