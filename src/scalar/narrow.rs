@@ -1,7 +1,9 @@
 //! `I16F16`'s double-width arithmetic from 32-bit operations, for cores without a 32 × 32 → 64
 //! multiply or a divide instruction (Armv6-M, e.g. the Cortex-M0; `ballcast_no_long_mul`, see
 //! `build.rs`): products from 16 × 16 → 32-bit partial products, quotients from a remainder
-//! found by shift-and-subtract and an exact division by the divisor's odd part. Each function
+//! found by shift-and-subtract and an exact division by the divisor's odd part (or, for a few
+//! more bits of one, steps that gather them), a unit vector's reciprocal length by Newton's
+//! method. Each function
 //! gives exactly the integer of the 64-bit arithmetic it replaces (`wide.rs` chooses per
 //! target), so results are bit-identical on every target; the tests compare them bit for bit.
 
@@ -73,13 +75,13 @@ pub(super) fn split_mul_u32(a: u32, b: u32) -> u64 {
 }
 
 /// `round(a n / d)` to nearest, ties away from zero, saturating, for each `a`: exactly what
-/// `mul_div` gives. `F = floor(|n| 2^k / |d|)` (one division, `|n| < |d|` so `F < 2^k`)
+/// `mul_div` gives. `F = floor(|n| 2^k / |d|)` (`|n| < |d|` so `F < 2^k`)
 /// gives an estimate `floor(|a| F / 2^k)` short of `floor(|a n| / |d|)` by at most one
 /// (`|a| / 2^k < 1/2` lost to F, one to the floor) once `|a| < 2^(k-1)`: `k` is 16, or more in
 /// steps of 4 up to 32 for longer vectors. The exact remainder `|a n| - q |d|` corrects the
 /// estimate and decides the rounding. `q` is `round(n 2^16 / d)`, the fraction as
 /// [`split_div_i32`] rounds it, which gives `F` for `k = 16` ([`floor_of_rounded`]) with no
-/// division steps. `None` for `|n| >= |d|`.
+/// division steps; [`quotient_steps`] extend it four bits at a time. `None` for `|n| >= |d|`.
 pub(super) fn split_scale_fraction_i32(a: [i32; 3], n: i32, d: i32, q: i32) -> Option<[i32; 3]> {
     let (nm, dm) = (n.unsigned_abs(), d.unsigned_abs());
     if nm >= dm {

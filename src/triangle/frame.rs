@@ -1,6 +1,6 @@
 //! [`StandardTriangle::new`] in two halves: the frame (origin and axes), which is all the
 //! heights of a sweep need, and the rest (the standardized shape and edges). A triangle
-//! prepared on the spot (a compact mesh's, a heightfield's) can then be passed by on its
+//! prepared on the spot (a compact mesh's, behind its integer box) can then be passed by on its
 //! heights alone before the second half: two square roots, two normalisations and three dot
 //! products saved for each triangle the ball cannot reach, bit for bit the same triangle for
 //! those it can.
