@@ -20,7 +20,7 @@
 
 use crate::bvh::{self, Grid, Node};
 use crate::contact::within_reach;
-use crate::cull::{Path, SOFT_F64, UnitBox};
+use crate::cull::{Path, SOFT_F64, UnitBox, UnitHeights};
 use crate::merge::{Earliest, earliest};
 use crate::scalar::{largest, smallest};
 use crate::triangle::Frame;
@@ -275,6 +275,8 @@ impl<'a, S: Scalar, I: MeshIndex> CompactMesh<'a, S, I> {
         let units = integer
             .then(|| UnitBox::new(sweep, Path::pad(sweep, extent, self.class)))
             .flatten();
+        // Behind the integer box, the heights bounded in integers too (see `cull::heights`).
+        let heights = units.as_ref().and_then(|_| UnitHeights::new(sweep));
         let cull = match units {
             Some(b) => Err(b),
             None => Ok(Path::new(sweep, extent, self.class)),
@@ -302,7 +304,15 @@ impl<'a, S: Scalar, I: MeshIndex> CompactMesh<'a, S, I> {
             let c = corners(s)?;
             let path = match &cull {
                 Ok(path) => path,
-                Err(b) => return (!b.misses(triangle(self.vertices, c)?.vertices())).then_some(()),
+                Err(b) => {
+                    let v = triangle(self.vertices, c)?.vertices();
+                    let one_sided = self.bytes.get(s).is_some_and(|b| b & TWO_SIDED == 0);
+                    let out = b.misses(v)
+                        || heights
+                            .as_ref()
+                            .is_some_and(|h| h.rule_out(sweep, v, acc.reach(), one_sided));
+                    return (!out).then_some(());
+                }
             };
             let limit = S::to_f64(acc.reach()) + 1.0 / (1u64 << 50) as f64;
             let v = world(self.vertices, c)?;

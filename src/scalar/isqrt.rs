@@ -41,7 +41,7 @@ exact_isqrt_nearest!(exact_isqrt_nearest_128, u128);
 /// `round(√x)` for a 64-bit `x`. `I16F16`'s radicands fit 64 bits, and a 128-bit root costs a
 /// Cortex-M0 several times a 64-bit one.
 #[inline]
-pub(super) fn isqrt_nearest_64(x: u64) -> u64 {
+pub(crate) fn isqrt_nearest_64(x: u64) -> u64 {
     if HARDWARE_SQRT {
         float_isqrt_nearest_64(x)
     } else if cfg!(ballcast_no_long_mul) {

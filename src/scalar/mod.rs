@@ -19,6 +19,9 @@ mod isqrt;
 mod narrow;
 mod wide;
 
+pub(crate) use isqrt::isqrt_nearest_64;
+pub(crate) use wide::{wide_mul_i32, wide_mul_u32};
+
 use crate::vec3::Vec3;
 #[cfg(doc)]
 use ::fixed::types::{I16F16, I32F32};

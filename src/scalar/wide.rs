@@ -15,7 +15,7 @@ use super::narrow::*;
 /// multiplies ([`split_mul_i32`]). Either way it is the exact product: results are
 /// bit-identical on every target.
 #[inline]
-pub(super) fn wide_mul_i32(a: i32, b: i32) -> i64 {
+pub(crate) fn wide_mul_i32(a: i32, b: i32) -> i64 {
     if cfg!(ballcast_no_long_mul) {
         split_mul_i32(a, b)
     } else {
@@ -48,7 +48,7 @@ pub(super) fn no_narrow_mul(_: i64, _: i64) -> Option<i64> {
 
 /// `a * b` exactly for unsigned operands, as [`wide_mul_i32`].
 #[inline]
-pub(super) fn wide_mul_u32(a: u32, b: u32) -> u64 {
+pub(crate) fn wide_mul_u32(a: u32, b: u32) -> u64 {
     if cfg!(ballcast_no_long_mul) {
         split_mul_u32(a, b)
     } else {
