@@ -19,7 +19,7 @@
 //! the bound (the heights test lets no such sweep through).
 
 use crate::contact::within_reach;
-use crate::scalar::{isqrt_nearest_64, wide_mul_i32, wide_mul_u32};
+use crate::scalar::{LeadingZeros, isqrt_nearest_64, wide_mul_i32, wide_mul_u32};
 use crate::{Scalar, Sweep, Vec3};
 
 /// The largest magnitude of a vertex or sweep coordinate's bits this bound is made for.
@@ -28,6 +28,7 @@ const RANGE: i64 = 1 << 28;
 /// A fixed-point sweep in its scalar's units (`2^-frac`), with what every triangle's bound needs.
 pub(crate) struct UnitHeights {
     p0: [i64; 3],
+    p1: [i64; 3],
     d: [i64; 3],
     frac: u32,
     /// `r`, the allowance of `above_at` (`4 · 8` units and twice `4 EPSILON` times the path's
@@ -55,6 +56,7 @@ impl UnitHeights {
         let height = r as u64 + 32 + 2 * tie + 16;
         Some(Self {
             p0,
+            p1,
             d,
             frac,
             height: u32::try_from(height).ok()?,
@@ -117,8 +119,8 @@ impl UnitHeights {
             return Some(within_reach(sweep, heights, !one_sided, reach).is_none());
         }
         // N' = N / 2^s rounded down, below 2^30 per component.
-        let s = (64 - big.leading_zeros()).saturating_sub(30);
-        let n = n.map(|x| (x >> s) as i32);
+        let s = (64 - big.clz()).saturating_sub(30);
+        let n = n.map(|x| low_word(x, s));
         let n2 = n
             .iter()
             .fold(0u64, |sum, &x| sum + wide_mul_i32(x, x) as u64);
@@ -130,9 +132,13 @@ impl UnitHeights {
             .ok()
             .filter(|&t| t <= (1 << self.frac) + 8)?;
         let q0 = sub(self.p0, a);
-        let qr = zip(q0, self.d, |q, d| {
-            q + (wide_mul_i32(d as i32, t) >> self.frac) as i32
-        });
+        let qr = if t == 1 << self.frac {
+            sub(self.p1, a)
+        } else {
+            zip(q0, self.d, |q, d| {
+                q + low_word(wide_mul_i32(d as i32, t), self.frac)
+            })
+        };
         let dot = |q: [i32; 3]| zip(q, n, wide_mul_i32).iter().sum::<i64>();
         let (h0, hr) = (dot(q0), dot(qr));
         // The tilt times |N'|: twice a unit vector's step (2^-(frac+6)) times the two longest
@@ -151,6 +157,17 @@ impl UnitHeights {
         let beyond = (h0 > limit && hr > limit) || (h0 < -limit && hr < -limit);
         let behind = one_sided && h0 < -i64::try_from(stray + 2 * norm as u64).ok()?;
         Some(beyond || behind)
+    }
+}
+
+/// `x / 2^s` rounded down, for `s < 32` and a quotient that fits 32 bits: from the two 32-bit
+/// halves (a 64-bit shift is a library call on a Cortex-M0).
+fn low_word(x: i64, s: u32) -> i32 {
+    let (low, high) = (x as u32, (x >> 32) as u32);
+    if s == 0 {
+        low as i32
+    } else {
+        ((low >> s) | (high << (32 - s))) as i32
     }
 }
 

@@ -20,7 +20,7 @@ mod narrow;
 mod wide;
 
 pub(crate) use isqrt::isqrt_nearest_64;
-pub(crate) use wide::{wide_mul_i32, wide_mul_u32};
+pub(crate) use wide::{LeadingZeros, wide_mul_i32, wide_mul_u32};
 
 use crate::vec3::Vec3;
 #[cfg(doc)]

@@ -153,7 +153,7 @@ pub(super) fn wide_mul_u64(a: u64, b: u64) -> u128 {
 /// call to `__clzsi2` (about 33 instructions there, two calls for 64 bits), made several times
 /// per prepared triangle. There the count is a search by halves, bytes and nibbles, the last
 /// four bits from a table: the same count, inline. Elsewhere it is the instruction.
-pub(super) trait LeadingZeros {
+pub(crate) trait LeadingZeros {
     fn clz(self) -> u32;
 }
 
