@@ -5,29 +5,26 @@
 //! # Layout
 //! The prepared mesh's [`Node`]s and [`Grid`] as they are; per triangle, in the tree's leaf
 //! order, its three vertex indices, its input index (both [`MeshIndex`]: `u16` for up to 65 535
-//! vertices and triangles, else `u32`) and one byte: the [`Features`] bits (active edges and
+//! vertices and triangles, else `u32`) and one byte: the [`Features`](crate::Features) bits (active edges and
 //! vertices) and bit 6 for a two-sided triangle. The vertices are the caller's, shared.
 //!
 //! # Query
 //! The tree is walked as [`Mesh::cast`] walks it; each triangle of a leaf reached is rebuilt
-//! from its vertices, prepared by [`StandardTriangle::new`] (the prepared mesh's own
+//! from its vertices, prepared by [`StandardTriangle::new`](crate::StandardTriangle::new) (the prepared mesh's own
 //! preparation, so the result is the same, bit for bit) with its stored features, and cast.
-//! Behind the integer box (where `f64` is software) the preparation comes in two halves: the
-//! triangle's frame, and the rest only where the sweep's heights above its plane leave a
-//! contact possible.
+//! Where `f64` is software (a Cortex-M) a triangle is culled in integers: its box, then the
+//! sweep's heights above its plane bounded from the vertices' exact normal (`cull/heights.rs`);
+//! its preparation then comes in two halves, the
+//! frame, and the rest only where the frame's heights leave a contact possible. Elsewhere the
+//! culls are the `f64` box, plane and edge-line tests, and the triangle is prepared at once
+//! (`query.rs`).
 //! Preparing costs a few hundred instructions per triangle reached: a query costs more than on
 //! the prepared mesh, in exchange for a sixth of the memory.
 
 use crate::bvh::{self, Grid, Node};
-use crate::contact::within_reach;
-use crate::cull::{Path, SOFT_F64, UnitBox, UnitHeights};
-use crate::merge::{Earliest, earliest};
-use crate::scalar::{largest, smallest};
-use crate::triangle::Frame;
-use crate::{
-    Features, Geometry, Hit, Mesh, Scalar, SceneHit, StandardTriangle, Sweep, Triangle, Vec3,
-};
+use crate::{Mesh, Scalar, Vec3};
 use core::fmt;
+use query::{prepare, triangle};
 
 /// The two-sided bit of a triangle's byte.
 const TWO_SIDED: u8 = 1 << 6;
@@ -257,190 +254,8 @@ impl<'a, S: Scalar, I: MeshIndex> CompactMesh<'a, S, I> {
             self.class,
         )
     }
-
-    /// The earliest contact along the sweep: the prepared mesh's answer, bit for bit.
-    pub fn cast(&self, sweep: &Sweep<S>) -> Option<SceneHit<S>> {
-        self.cast_culled(sweep, SOFT_F64)
-    }
-
-    /// [`cast`](Self::cast), passing triangles by before preparing them with the `f64` box and
-    /// plane tests, or (`integer`, for a fixed-point sweep) with its box in integers alone: where
-    /// `f64` is software (a Cortex-M) the `f64` tests cost more than the preparations they
-    /// save. Either way the answer is the same.
-    fn cast_culled(&self, sweep: &Sweep<S>, integer: bool) -> Option<SceneHit<S>> {
-        let cells = self.grid.lo.iter().chain(&self.grid.hi);
-        let extent =
-            cells.fold(0.0f64, |m, &c| m.max((c as f64).abs())) / Grid::scale(self.grid.exponent);
-        // The `f64` path only where it is used: its reciprocals are software on a Cortex-M.
-        let units = integer
-            .then(|| UnitBox::new(sweep, Path::pad(sweep, extent, self.class)))
-            .flatten();
-        // Behind the integer box, the heights bounded in integers too (see `cull::heights`).
-        let heights = units.as_ref().and_then(|_| UnitHeights::new(sweep));
-        let cull = match units {
-            Some(b) => Err(b),
-            None => Ok(Path::new(sweep, extent, self.class)),
-        };
-        let corners = |s: usize| Some(self.triangles.get(s)?.map(I::get));
-        let slot = |s: usize| -> Option<(usize, StandardTriangle<S>)> {
-            let t = triangle(self.vertices, corners(s)?)?;
-            Some((self.order.get(s)?.get(), prepare(&t, *self.bytes.get(s)?)?))
-        };
-        // Slot `s`'s contact within the reach. Behind the integer box (whose triangles the
-        // heights often pass by: it tests no plane) the triangle's frame comes first, and the
-        // rest of its preparation only where the heights leave a contact possible; behind the
-        // `f64` plane test they seldom do, and the triangle is prepared at once.
-        let cast_slot = |s: usize, reach: S| -> Option<(usize, Hit<S>)> {
-            let (t, byte) = (triangle(self.vertices, corners(s)?)?, *self.bytes.get(s)?);
-            let hit = if cull.is_err() {
-                cast_lazily(&t, byte, sweep, reach)
-            } else {
-                prepare(&t, byte)?.cast_within(sweep, reach)
-            };
-            Some((self.order.get(s)?.get(), hit?))
-        };
-        // Whether slot `s` may hold a contact within the reach (preparing costs far more).
-        let near = |acc: &Earliest<S>, s: usize| -> Option<()> {
-            let c = corners(s)?;
-            let path = match &cull {
-                Ok(path) => path,
-                Err(b) => {
-                    let v = triangle(self.vertices, c)?.vertices();
-                    let one_sided = self.bytes.get(s).is_some_and(|b| b & TWO_SIDED == 0);
-                    let out = b.misses(v)
-                        || heights
-                            .as_ref()
-                            .is_some_and(|h| h.rule_out(sweep, v, acc.reach(), one_sided));
-                    return (!out).then_some(());
-                }
-            };
-            let limit = S::to_f64(acc.reach()) + 1.0 / (1u64 << 50) as f64;
-            let v = world(self.vertices, c)?;
-            // Coordinates of validated vertices: never NaN.
-            let lo = [0, 1, 2].map(|a| smallest(v[0][a], v[1][a], v[2][a]));
-            let hi = [0, 1, 2].map(|a| largest(v[0][a], v[1][a], v[2][a]));
-            let two_sided = self.bytes.get(s).is_some_and(|b| b & TWO_SIDED != 0);
-            let span = path.clip(lo, hi, limit)?;
-            path.near_triangle(v, span, !two_sided).then_some(())
-        };
-        let mut sound = true;
-        let hit = earliest(|acc: &mut Earliest<S>| {
-            sound &= bvh::leaves_along(self.nodes, &self.grid, sweep, acc, |acc, slots, _| {
-                for s in slots {
-                    if near(acc, s).is_some()
-                        && let Some((i, hit)) = cast_slot(s, acc.reach())
-                    {
-                        acc.offer(i, hit);
-                    }
-                }
-            });
-        });
-        if sound {
-            return hit;
-        }
-        // Malformed parts (never from `compact`): test every triangle.
-        earliest(|acc| {
-            for s in 0..self.triangles.len() {
-                if let Some((i, t)) = slot(s)
-                    && let Some(hit) = t.cast(sweep)
-                {
-                    acc.offer(i, hit);
-                }
-            }
-        })
-    }
 }
 
-/// The corners of `vertices` at `corners` in `f64`, if they exist.
-fn world<S: Scalar>(vertices: &[Vec3<S>], corners: [usize; 3]) -> Option<[[f64; 3]; 3]> {
-    let v = |k: usize| vertices.get(corners[k]);
-    Some([v(0)?, v(1)?, v(2)?].map(|p| p.to_array().map(S::to_f64)))
-}
-
-/// The triangle of `vertices` at `corners`, if they exist.
-fn triangle<S: Scalar>(vertices: &[Vec3<S>], corners: [usize; 3]) -> Option<Triangle<S>> {
-    let v = |k: usize| vertices.get(corners[k]).copied();
-    Some(Triangle::new(v(0)?, v(1)?, v(2)?))
-}
-
-/// `t` prepared with the features and sidedness of `byte`.
-fn prepare<S: Scalar>(t: &Triangle<S>, byte: u8) -> Option<StandardTriangle<S>> {
-    Some(with_byte(StandardTriangle::new(t).ok()?, byte))
-}
-
-/// The contact of `t` (a triangle with `byte`) with the sweep at alpha `reach` or earlier, its
-/// preparation finished only if the heights of the sweep above its plane leave one possible.
-#[inline(never)]
-fn cast_lazily<S: Scalar>(t: &Triangle<S>, byte: u8, sweep: &Sweep<S>, reach: S) -> Option<Hit<S>> {
-    let frame = Frame::of(t).ok()?;
-    let heights = frame.heights(sweep);
-    within_reach(sweep, heights, byte & TWO_SIDED != 0, reach)?;
-    with_byte(frame.finish(t).ok()?, byte).cast_within_heights(sweep, heights, reach)
-}
-
-/// A prepared triangle with the active edges and sidedness of its byte.
-fn with_byte<S: Scalar>(st: StandardTriangle<S>, byte: u8) -> StandardTriangle<S> {
-    let features = Features::from_bits(byte & Features::ALL.bits());
-    st.with_features(features)
-        .with_two_sided(byte & TWO_SIDED != 0)
-}
-
-impl<S: Scalar, I: MeshIndex> Geometry<S> for CompactMesh<'_, S, I> {
-    fn cast(&self, sweep: &Sweep<S>) -> Option<SceneHit<S>> {
-        CompactMesh::cast(self, sweep)
-    }
-
-    /// Every triangle of the leaves whose boxes meet the box (the tree's box query) whose
-    /// vertices' box meets it too, prepared.
-    fn visit(&self, min: Vec3<S>, max: Vec3<S>, f: &mut dyn FnMut(usize, &StandardTriangle<S>)) {
-        let (lo, hi) = (min.to_array().map(S::to_f64), max.to_array().map(S::to_f64));
-        let query = bvh::query_cells(&self.grid, lo, hi);
-        // A first walk that only checks the tree, so malformed parts (never from `compact`)
-        // are scanned instead without a triangle given twice.
-        if bvh::overlapping(self.nodes, &self.grid, query, |_| {}) {
-            bvh::overlapping(self.nodes, &self.grid, query, |slots| {
-                slots.for_each(|s| self.visit_slot(s, lo, hi, f))
-            });
-        } else {
-            (0..self.triangles.len()).for_each(|s| self.visit_slot(s, lo, hi, f));
-        }
-    }
-}
-
-impl<S: Scalar, I: MeshIndex> CompactMesh<'_, S, I> {
-    /// Calls `f` with triangle slot `s`, prepared, if its vertices' box meets `lo..hi`.
-    fn visit_slot(
-        &self,
-        s: usize,
-        lo: [f64; 3],
-        hi: [f64; 3],
-        f: &mut dyn FnMut(usize, &StandardTriangle<S>),
-    ) {
-        let Some(corners) = self.triangles.get(s) else {
-            return;
-        };
-        let Some(v) = world(self.vertices, corners.map(I::get)) else {
-            return;
-        };
-        let apart = (0..3).any(|a| {
-            let (l, u) = (
-                v[0][a].min(v[1][a]).min(v[2][a]),
-                v[0][a].max(v[1][a]).max(v[2][a]),
-            );
-            u < lo[a] || l > hi[a]
-        });
-        if apart {
-            return;
-        }
-        let t = triangle(self.vertices, corners.map(I::get));
-        let byte = self.bytes.get(s).copied();
-        if let (Some(t), Some(b), Some(i)) = (t, byte, self.order.get(s))
-            && let Some(st) = prepare(&t, b)
-        {
-            f(i.get(), &st);
-        }
-    }
-}
-
+mod query;
 #[cfg(test)]
 mod tests;
