@@ -100,6 +100,7 @@ use crate::{Scalar, Triangle};
 pub use build::nodes_for;
 pub(crate) use build::{BuildError, build, item, key_index, set_classes};
 pub(crate) use overlap::{overlapping, query_cells};
+pub(crate) use short::unit_pad;
 pub(crate) use traverse::{leaf_slots, leaves_along, rounding_pad};
 
 /// Most triangles in a leaf.

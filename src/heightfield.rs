@@ -34,6 +34,7 @@
 //! contacts merge in index order whatever the visiting order.
 
 mod build;
+mod units;
 mod walk;
 
 use crate::adjacency::deactivate;

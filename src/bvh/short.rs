@@ -47,6 +47,24 @@ fn shift_up(v: i64, s: i32) -> Option<i64> {
     shift_down(v.checked_neg()?, s)?.checked_neg()
 }
 
+/// The pad of [`rounding_pad`](super::rounding_pad) in a fixed-point scalar's units (of
+/// `EPSILON`, `2^-frac`), rounded up, for a radius of `r` units, a path whose largest component
+/// is `length` units and coordinates up to `magnitude` units: `r`, 64 units, 8 units per unit
+/// of the path's largest component, 3/16 unit per unit of the coordinates' magnitude and
+/// `3 · 2^-40` of the magnitude. `None` on overflow.
+pub(crate) fn unit_pad(r: i64, frac: u32, length: i64, magnitude: i64) -> Option<i64> {
+    let f = frac as i32;
+    let thrice = (magnitude <= i64::MAX / 3).then(|| 3 * magnitude)?;
+    [
+        64,
+        shift_up(length, f - 3)?,
+        shift_up(thrice, f + 4)?,
+        shift_up(thrice, 40)?,
+    ]
+    .iter()
+    .try_fold(r, |sum, &term| sum.checked_add(term))
+}
+
 /// Where the cells are clamped: beyond every grid (built grids lie within about `±2^25`).
 const BOUND: i64 = 1 << 30;
 
@@ -79,18 +97,7 @@ impl ShortBox {
         )?;
         let length = big(d)?;
         let magnitude = big(p0)?.max(big(p1)?).max(mesh);
-        let thrice = (magnitude <= i64::MAX / 3).then(|| 3 * magnitude)?;
-        // The pad of [`rounding_pad`](super::rounding_pad) in units (of `EPSILON`), rounded up:
-        // r, 64 units, 8 units per unit of the path's largest component, 3/16 unit per unit of
-        // the coordinates' magnitude and 3 · 2^-40 of the magnitude.
-        let pad = [
-            64,
-            shift_up(length, f - 3)?,
-            shift_up(thrice, f + 4)?,
-            shift_up(thrice, 40)?,
-        ]
-        .iter()
-        .try_fold(r, |sum, &term| sum.checked_add(term))?;
+        let pad = unit_pad(r, frac, length, magnitude)?;
         if length > pad {
             return None;
         }

@@ -1,8 +1,9 @@
 //! The heightfield's query: rows of cells along the sweep, nearest first (see the module docs of
 //! [`heightfield`](super)).
 
+use super::units::UnitGrid;
 use super::{HOLE, Heightfield};
-use crate::cull::{Path, is_less};
+use crate::cull::{Path, SOFT_F64, is_less};
 use crate::merge::{Earliest, earliest};
 use crate::{Geometry, Scalar, SceneHit, StandardTriangle, Sweep, Vec3};
 
@@ -33,6 +34,11 @@ impl<S: Scalar> Heightfield<'_, S> {
     /// Its cost grows with the cells the grown path crosses.
     pub fn cast(&self, sweep: &Sweep<S>) -> Option<SceneHit<S>> {
         self.cells_count()?;
+        // Where `f64` is software, a fixed-point sweep's short query runs in integers.
+        if SOFT_F64 && let Some(hit) = UnitGrid::new(self, sweep).and_then(|g| g.cast(self, sweep))
+        {
+            return hit;
+        }
         let path = Path::new(sweep, self.extent(), self.class);
         let o = self.origin.to_array().map(S::to_f64);
         earliest(|acc| self.walk(sweep, &path, o, acc))
