@@ -237,8 +237,8 @@ pub(crate) fn is_less(a: f64, b: f64) -> bool {
 /// Whether `f64` arithmetic is software on this target: bare-metal Arm, whose Cortex-M FPUs,
 /// where present, are single precision. There a [`CompactMesh`](crate::CompactMesh) passes a
 /// fixed-point sweep's triangles by with its [`UnitBox`] and [`UnitHeights`] alone, in
-/// integers (a heightfield's walk stays in `f64`): on a Cortex-M0 the `f64` box and plane
-/// tests cost several times the preparations they save. Culls only pass triangles by, so the answers are the same on every target.
+/// integers (and a heightfield's short query runs in integers: `heightfield/units.rs`): on a
+/// Cortex-M0 the `f64` box and plane tests cost several times the preparations they save. Culls only pass triangles by, so the answers are the same on every target.
 pub(crate) const SOFT_F64: bool = cfg!(all(target_arch = "arm", target_os = "none"));
 
 /// The box the grown path of a fixed-point sweep stays within, in its scalar's units

@@ -31,7 +31,10 @@
 //! the earliest contact found so far is prepared on the spot and cast. Rows beyond that contact
 //! end the walk. The cost grows with the path's length in cells, not with the grid's size; the
 //! answer is the linear scan's, bit for bit, because the bounds are conservative and simultaneous
-//! contacts merge in index order whatever the visiting order.
+//! contacts merge in index order whatever the visiting order. Where `f64` is software (a
+//! Cortex-M), a fixed-point sweep's short query runs in integers instead (`units.rs`): the
+//! cells under the box of its grown path, culled by their heights and each triangle by a bound
+//! on the sweep's heights above its plane, the same answer.
 
 mod build;
 mod units;
