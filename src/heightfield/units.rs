@@ -55,7 +55,15 @@ impl UnitGrid {
             ],
         );
         let big = |v: [i64; 3]| v.iter().map(|x| x.unsigned_abs()).max().unwrap_or(0);
-        let magnitude = [p0, p1, terrain.0, terrain.1].map(big).into_iter().max();
+        // The `f64` walk's magnitude for the grid (any height, `32768 |unit|`, counts), so the
+        // pad is never below its.
+        let reach = (unit.unsigned_abs()).checked_mul(32768)?;
+        let grid = o[1].unsigned_abs().checked_add(reach)?;
+        let magnitude = [p0, p1, terrain.0, terrain.1]
+            .map(big)
+            .into_iter()
+            .chain([grid])
+            .max();
         let ([x0, y0, z0], [x1, y1, z1]) = (p0, p1);
         let length = x1.abs_diff(x0).max(y1.abs_diff(y0)).max(z1.abs_diff(z0));
         let magnitude = i64::try_from(magnitude.unwrap_or(0)).ok()?;
