@@ -8,6 +8,13 @@ mod heights;
 
 pub(crate) use heights::UnitHeights;
 
+/// A fixed-point point's coordinates as the integers of their bits (units of `2^-frac`);
+/// `None` for floats.
+pub(crate) fn unit_bits<S: Scalar>(p: Vec3<S>) -> Option<[i64; 3]> {
+    let b = |v: S| v.fixed_bits().map(|(b, _)| b);
+    Some([b(p.x)?, b(p.y)?, b(p.z)?])
+}
+
 use crate::scalar::largest;
 use crate::{Scalar, Sweep, Vec3};
 

@@ -9,6 +9,7 @@
 
 use super::overlap::Walk;
 use super::{Cells, Grid};
+use crate::cull::unit_bits;
 use crate::{Scalar, Sweep};
 
 /// A short sweep in its scalar's units (`2^-frac`): the start, the motion and the pad.
@@ -74,11 +75,7 @@ impl ShortBox {
     /// for floats, long sweeps, and terms beyond 64 bits.
     pub(crate) fn new<S: Scalar>(sweep: &Sweep<S>, grid: &Grid) -> Option<(Self, Walk)> {
         let (r, frac) = sweep.radius().fixed_bits()?;
-        let bits = |p: crate::Vec3<S>| -> Option<[i64; 3]> {
-            let b = |v: S| v.fixed_bits().map(|(b, _)| b);
-            Some([b(p.x)?, b(p.y)?, b(p.z)?])
-        };
-        let (p0, p1) = (bits(sweep.p0())?, bits(sweep.p1())?);
+        let (p0, p1) = (unit_bits(sweep.p0())?, unit_bits(sweep.p1())?);
         let f = frac as i32;
         let shift = f.checked_add(grid.exponent)?;
         let d = [

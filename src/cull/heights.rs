@@ -18,6 +18,7 @@
 //! A one-sided triangle is also passed by where the path starts behind its plane by more than
 //! the bound (the heights test lets no such sweep through).
 
+use super::unit_bits;
 use crate::contact::within_reach;
 use crate::scalar::{LeadingZeros, isqrt_nearest_64, wide_mul_i32, wide_mul_u32};
 use crate::{Scalar, Sweep, Vec3};
@@ -41,11 +42,7 @@ impl UnitHeights {
     /// coordinates lie within `±2^28` units (all of `I16F16`'s range); `None` otherwise.
     pub(crate) fn new<S: Scalar>(sweep: &Sweep<S>) -> Option<Self> {
         let (r, frac) = sweep.radius().fixed_bits()?;
-        let bits = |p: Vec3<S>| -> Option<[i64; 3]> {
-            let b = |v: S| v.fixed_bits().map(|(b, _)| b).filter(|b| b.abs() <= RANGE);
-            Some([b(p.x)?, b(p.y)?, b(p.z)?])
-        };
-        let (p0, p1) = (bits(sweep.p0())?, bits(sweep.p1())?);
+        let (p0, p1) = (in_range(sweep.p0())?, in_range(sweep.p1())?);
         if frac > 30 || r > RANGE {
             return None;
         }
@@ -85,11 +82,7 @@ impl UnitHeights {
         reach: S,
         one_sided: bool,
     ) -> Option<bool> {
-        let bits = |p: Vec3<S>| -> Option<[i64; 3]> {
-            let b = |v: S| v.fixed_bits().map(|(b, _)| b).filter(|b| b.abs() <= RANGE);
-            Some([b(p.x)?, b(p.y)?, b(p.z)?])
-        };
-        let [a, b, c] = [bits(v[0])?, bits(v[1])?, bits(v[2])?];
+        let [a, b, c] = [in_range(v[0])?, in_range(v[1])?, in_range(v[2])?];
         // Within 2^29: 32-bit operands.
         let sub = |p: [i64; 3], q: [i64; 3]| zip(p, q, |a, b| (a - b) as i32);
         let (e, f, g) = (sub(b, a), sub(c, a), sub(c, b));
@@ -185,6 +178,11 @@ fn axis([x, y, z]: [i64; 3]) -> Option<(usize, bool)> {
         (false, false, true) => Some((2, z > 0)),
         _ => None,
     }
+}
+
+/// A point's [`unit_bits`], if every one lies within [`RANGE`].
+fn in_range<S: Scalar>(p: Vec3<S>) -> Option<[i64; 3]> {
+    unit_bits(p).filter(|b| b.iter().all(|x| x.abs() <= RANGE))
 }
 
 /// Three values, largest first.

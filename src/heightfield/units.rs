@@ -11,10 +11,10 @@ use super::{HOLE, Heightfield, half};
 use crate::adjacency::deactivate;
 use crate::bvh;
 use crate::contact::within_reach;
-use crate::cull::UnitHeights;
+use crate::cull::{UnitHeights, unit_bits};
 use crate::merge::earliest;
 use crate::triangle::Frame;
-use crate::{Hit, Scalar, SceneHit, Sweep, Triangle, Vec3};
+use crate::{Hit, Scalar, SceneHit, Sweep, Triangle};
 
 /// The most cells a query's box may span for the integer query.
 pub(super) const MAX_CELLS: i64 = 64;
@@ -36,8 +36,8 @@ impl UnitGrid {
     pub(super) fn new<S: Scalar>(field: &Heightfield<'_, S>, sweep: &Sweep<S>) -> Option<Self> {
         let (r, frac) = sweep.radius().fixed_bits()?;
         let b = |v: S| v.fixed_bits().map(|(b, _)| b);
-        let bits = |p: Vec3<S>| -> Option<[i64; 3]> { Some([b(p.x)?, b(p.y)?, b(p.z)?]) };
-        let (p0, p1, o) = (bits(sweep.p0())?, bits(sweep.p1())?, bits(field.origin)?);
+        let (p0, p1) = (unit_bits(sweep.p0())?, unit_bits(sweep.p1())?);
+        let o = unit_bits(field.origin)?;
         let (spacing, unit) = (b(field.spacing)?, b(field.unit)?);
         if spacing <= 0 {
             return None;
