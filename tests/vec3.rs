@@ -57,6 +57,31 @@ fn dot_cross_and_length_hold_inside_the_safe_range<S: Tolerance>() {
     assert_eq!(Vec3::<S>::ZERO.normalize_or_zero(), Vec3::ZERO);
 }
 
+/// `length` of vectors anywhere in the type's range, up to its largest values: the exact length
+/// where the type holds it, else the largest value (fixed point saturates, floats give
+/// infinity only beyond their range); never a wrapped or negative length.
+fn length_saturates_beyond_the_range<S: Tolerance>() {
+    let largest = S::from_f64(f64::MAX).to_f64();
+    let top = largest.min(1e30);
+    let mut rng = Rng(0x1E47);
+    let mut cases: Vec<[f64; 3]> = vec![[30000.0, 30000.0, 0.0], [top, top, top], [-top, top, 0.0]];
+    for _ in 0..10_000 {
+        let scale = top * rng.next().powi(4);
+        cases.push(rng.point(1.0).map(|c| c * scale));
+    }
+    for p in cases {
+        let a = v::<S>(p);
+        let exact = common::norm(back(a)).min(largest);
+        let got = a.length().to_f64();
+        let tol = S::spacing(exact) + exact * 4.0 * f32::EPSILON as f64;
+        assert!(
+            (got - exact).abs() <= tol,
+            "{}: |{p:?}| = {got}, not {exact}",
+            S::NAME
+        );
+    }
+}
+
 fn conversions_round_trip<S: Tolerance>() {
     let p = [0.5, -2.25, 1000.125];
     let a = v::<S>(p);
@@ -91,6 +116,10 @@ macro_rules! per_scalar {
         #[test]
         fn dot_cross_length() {
             dot_cross_and_length_hold_inside_the_safe_range::<$t>();
+        }
+        #[test]
+        fn length_saturates() {
+            length_saturates_beyond_the_range::<$t>();
         }
         #[test]
         fn conversions() {

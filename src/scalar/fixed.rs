@@ -262,6 +262,8 @@ macro_rules! fixed_scalar {
                 // Components below 2^(BITS-1) square to below 2^(2 BITS - 2): three fit unsigned.
                 let u = v.map(|c| c.to_bits().unsigned_abs());
                 let len = $isqrt($uwmul(u.x, u.x) + $uwmul(u.y, u.y) + $uwmul(u.z, u.z));
+                // Up to sqrt(3) times the largest value: saturated, not wrapped.
+                let len = len.min(<$bits>::MAX as _);
                 Some((
                     <$t>::from_bits(len as $bits),
                     Self::unit_normalize(Self::scaled(v)?),

@@ -144,9 +144,10 @@ pub(crate) mod sealed {
         /// the same numbers, for a core that can share the work of the three divisions. Needs
         /// `q == n.div(d)`, the fraction as already rounded, whose division a core may reuse.
         fn scale_fraction(v: Vec3<Self>, n: Self, d: Self, q: Self) -> Vec3<Self>;
-        /// The length of `v` and its unit direction; `None` for the zero vector. Needs
-        /// components within `8 * LIMIT` (fixed-point: the length is the exact integer square root
-        /// of the exact sum of squares, rounded to nearest).
+        /// The length of `v` and its unit direction; `None` for the zero vector. Within the
+        /// tolerance table for components within `8 * LIMIT`; any finite `v` is valid (fixed
+        /// point: the length is the exact integer square root of the exact sum of squares,
+        /// rounded to nearest, and saturates at the type's largest value).
         fn direction(v: Vec3<Self>) -> Option<(Self, Vec3<Self::Unit>)>;
         /// The x component of [`direction`](Self::direction)'s unit vector for `(−len, 0, 0)`,
         /// whose other components are zero and whose length is `len`: the same numbers with no
