@@ -483,6 +483,19 @@ fn errors_not_panics<S: Scalar>() {
         "triangle 5: degenerate (coincident or collinear vertices)"
     );
     assert_eq!(attempt(&src, full, Degenerates::Skip), Ok((n - 2, 2)));
+    // A node buffer sized for the kept triangles only will do.
+    let kept_only = [nodes_for(n - 2), n, n, 6 * n];
+    assert_eq!(attempt(&src, kept_only, Degenerates::Skip), Ok((n - 2, 2)));
+    // Skipping builds the mesh of the kept triangles alone, byte for byte.
+    let skipped = build(&src, Degenerates::Skip).unwrap();
+    let rest: Vec<_> = [&src[..5], &src[6..9], &src[10..]].concat();
+    let alone = build(&rest, Degenerates::Refuse).unwrap();
+    let parts = |m: &meshes::Owned<S>| m.tris.iter().map(|t| t.to_parts()).collect::<Vec<_>>();
+    assert_eq!(skipped.nodes, alone.nodes);
+    assert_eq!(parts(&skipped), parts(&alone));
+    let input = |i: u32| i - (i > 5) as u32 - (i > 9) as u32;
+    let renumbered: Vec<u32> = skipped.order.iter().map(|&i| input(i)).collect();
+    assert_eq!(renumbered, alone.order);
     // Out of range is never skipped.
     src[7] = Triangle::new(
         v([0.0, 0.0, 0.0]),
