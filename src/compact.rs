@@ -198,7 +198,7 @@ impl<'a, S: Scalar, I: MeshIndex> CompactMesh<'a, S, I> {
             let rebuilt = triangle(vertices, corners.map(|c| c as usize)).ok_or(mismatch)?;
             let byte = prepared.features().bits() | (TWO_SIDED * prepared.is_two_sided() as u8);
             let again = prepare(&rebuilt, byte).ok_or(mismatch)?;
-            if again.to_parts() != prepared.to_parts() {
+            if !again.to_parts().identical(&prepared.to_parts()) {
                 return Err(mismatch);
             }
             class = class.max(bvh::class_of(prepared) as u8);

@@ -8,7 +8,10 @@
 //!
 //! The test runs in the edge's triangle's standard frame: a neighbour's edge counts when both
 //! its ends lie on the edge's line (within the rounding of a height there) and it runs the other
-//! way; the edge is covered when those intervals, joined, span it from end to end.
+//! way; the edge is covered when those intervals, joined, span it from end to end. An edge no
+//! longer than twice that tolerance, or whose triangle's far vertex lies within it (geometry
+//! near the scalar's resolution at its coordinates), cannot be told from its neighbours' lines
+//! and stays active.
 
 use crate::merge::same_plane;
 use crate::scalar::largest;
@@ -52,6 +55,12 @@ fn spans<S: Scalar>(
     intervals: impl Iterator<Item = (S, S)> + Clone,
 ) -> bool {
     let (len, tol) = (t.edge(i).len, tolerance(t, i));
+    // Where the tolerance is not small against the triangle (coordinates near the scalar's
+    // resolution), the test cannot tell the edge's line from its neighbours': the edge stays.
+    let far = S::dot_unit(t.corner((i + 2) % 3) - t.corner(i), t.edge(i).out()).abs();
+    if len <= tol + tol || far <= tol + tol {
+        return false;
+    }
     // Extend the covered stretch [0, reach] from the edge's start until no interval extends it.
     let mut reach = S::ZERO;
     loop {

@@ -135,10 +135,13 @@ impl<S: Scalar> Triangle<S> {
 pub type Welded<S> = (Vec<Vec3<S>>, Vec<[u32; 3]>);
 
 /// Shared vertices and index triples from a triangle soup (what most loaders give; what
-/// [`CompactMesh::compact`](crate::CompactMesh::compact) takes): corners equal in value
-/// (`-0.0` and `0.0` included) become one vertex, numbered in order of first appearance, and
-/// each triangle keeps its corners' order, so the triangles rebuilt from the two are the input's,
-/// bit for bit. `O(N log N)`: the corners sorted by value. Needs the `alloc` feature.
+/// [`CompactMesh::compact`](crate::CompactMesh::compact) takes): corners equal bit for bit
+/// become one vertex, numbered in order of first appearance, and each triangle keeps its
+/// corners' order, so the triangles rebuilt from the two are the input's, bit for bit. A
+/// corner at `-0.0` stays apart from one at `0.0`: a triangle prepared from one can answer
+/// with zeros of the other sign than one prepared from the other (the mesh's adjacency counts
+/// them as one point all the same). `O(N log N)`: the corners sorted by value. Needs the
+/// `alloc` feature.
 ///
 /// Errors: [`Error::NaN`] naming the first triangle with a NaN coordinate (equal to nothing, it
 /// could not be welded, nor prepared); [`Error::Full`] beyond `u32::MAX / 3` triangles (the
@@ -149,7 +152,7 @@ pub type Welded<S> = (Vec<Vec3<S>>, Vec<[u32; 3]>);
 /// let v = Vec3::new;
 /// let quad = [
 ///     Triangle::new(v(0.0f32, 0.0, 0.0), v(0.0, 0.0, 2.0), v(2.0, 0.0, 2.0)),
-///     Triangle::new(v(-0.0, 0.0, 0.0), v(2.0, 0.0, 2.0), v(2.0, 0.0, 0.0)),
+///     Triangle::new(v(0.0, 0.0, 0.0), v(2.0, 0.0, 2.0), v(2.0, 0.0, 0.0)),
 /// ];
 /// let (vertices, indices) = weld(&quad)?;
 /// assert_eq!(vertices.len(), 4);
@@ -173,19 +176,23 @@ pub fn weld<S: Scalar>(triangles: &[Triangle<S>]) -> Result<Welded<S>, Error> {
             triangle: Some(k / 3),
         });
     }
-    // Without NaN the order by value (x, then y, then z), then by position, is total, and equal
-    // values (`-0.0` with `0.0`) form runs that begin with their first appearance.
+    // Without NaN the order by value (x, then y, then z), then by the signs of zeros, then by
+    // position, is total, and corners equal bit for bit form runs that begin with their first
+    // appearance.
+    let signs = |k: usize| corners[k].to_array().map(|c| c.to_f64().is_sign_negative());
     let by_value = |a: &usize, b: &usize| {
         let (p, q) = (corners[*a].to_array(), corners[*b].to_array());
         let mut axes = p.iter().zip(&q).map(|(x, y)| x.partial_cmp(y));
         let first = axes.find(|o| *o != Some(Ordering::Equal)).flatten();
-        first.unwrap_or(Ordering::Equal).then(a.cmp(b))
+        let value = first.unwrap_or(Ordering::Equal);
+        value.then(signs(*a).cmp(&signs(*b))).then(a.cmp(b))
     };
     let mut sorted: Vec<usize> = (0..corners.len()).collect();
     sorted.sort_unstable_by(by_value);
-    // Each corner's first equal corner.
+    // Each corner's first corner equal bit for bit.
+    let same = |a: usize, b: usize| corners[a] == corners[b] && signs(a) == signs(b);
     let mut first: Vec<usize> = (0..corners.len()).collect();
-    for run in sorted.chunk_by(|&a, &b| corners[a] == corners[b]) {
+    for run in sorted.chunk_by(|&a, &b| same(a, b)) {
         for &k in run {
             first[k] = run[0];
         }

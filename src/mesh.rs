@@ -199,7 +199,9 @@ impl<'a, S: Scalar> Mesh<'a, S> {
         scratch: &mut [u64],
     ) -> Result<(), MeshError> {
         let (built, _) = Mesh::build(sources, degenerates, nodes, triangles, order, scratch)?;
-        if built == *self {
+        let mut pairs = built.triangles.iter().zip(self.triangles);
+        let identical = pairs.all(|(a, b)| a.to_parts().identical(&b.to_parts()));
+        if built == *self && identical {
             Ok(())
         } else {
             Err(MeshError::Mismatch)

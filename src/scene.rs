@@ -176,7 +176,7 @@ impl<S: Scalar, const N: usize> Scene<S, N> {
             return Err(Error::Full { capacity: N });
         }
         let st = st.with_two_sided(two_sided);
-        let bounds = Bounds::of(&[t.v0, t.v1, t.v2], S::ZERO);
+        let bounds = Bounds::of(&[t.v0, t.v1, t.v2], rounding(&t));
         // Capacity was checked: none of these can fail.
         let _ = (
             self.bounds.push(bounds),
@@ -250,6 +250,8 @@ impl<S: Scalar, const N: usize> Scene<S, N> {
 /// (`r / 64 + 4 EPSILON`, bounded by the triangle's box grown by as much), and the rounding of
 /// the contact tests (sixteen height errors at the path's magnitude, and four steps of alpha
 /// twice over the path's length), so the box test never drops a contact the triangle reports.
+/// The heights' rounding at the triangle's own magnitude (its frame's origin can lie far from
+/// the path) grows the triangle's box instead: see [`rounding`].
 fn reach<S: Scalar>(sweep: &Sweep<S>) -> S {
     let (p0, p1, r) = (sweep.p0(), sweep.p1(), sweep.radius());
     let size = |p: Vec3<S>| largest(p.x.abs(), p.y.abs(), p.z.abs());
@@ -260,6 +262,18 @@ fn reach<S: Scalar>(sweep: &Sweep<S>) -> S {
     }
     let steps = tie::<S>().mul(size(d));
     r + seam_margin(r) + e + steps + steps
+}
+
+/// How far a triangle's box is grown for the rounding of heights in its frame at its own
+/// coordinates: sixteen height errors at its largest. With [`reach`]'s share at the path's
+/// magnitude, the two add up to the rounding at the larger of the two.
+fn rounding<S: Scalar>(t: &Triangle<S>) -> S {
+    let size = |p: Vec3<S>| largest(p.x.abs(), p.y.abs(), p.z.abs());
+    let mut e = S::height_error(largest(size(t.v0), size(t.v1), size(t.v2)));
+    for _ in 0..4 {
+        e = e + e;
+    }
+    e
 }
 
 /// Anything a ball can be cast against: a [`Scene`], or a slice of prepared triangles such as

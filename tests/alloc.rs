@@ -63,17 +63,19 @@ fn welded_soups_compact<S: Tolerance>() {
     }
 }
 
-/// Corners equal in value are one vertex, `-0.0` and `0.0` included. A NaN corner, equal to
-/// nothing, is refused with its triangle named: it was once kept as a vertex of its own, and
-/// 20 000 copies of one such triangle took seconds (each NaN corner compared with every other).
+/// Corners equal bit for bit are one vertex; `-0.0` and `0.0` are not, so the rebuilt
+/// triangles are the input's bit for bit. A NaN corner, equal to nothing, is refused with its
+/// triangle named: it was once kept as a vertex of its own, and 20 000 copies of one such
+/// triangle took seconds (each NaN corner compared with every other).
 #[test]
-fn weld_merges_signed_zeros_and_refuses_nans() {
+fn weld_keeps_signed_zeros_apart_and_refuses_nans() {
     let v = Vec3::new;
     let a = Triangle::new(v(0.0f32, 0.0, 0.0), v(0.0, 0.0, 1.0), v(1.0, 0.0, 0.0));
     let b = Triangle::new(v(-0.0, -0.0, 0.0), v(1.0, 0.0, 0.0), v(2.0, 0.0, 0.0));
-    let (vertices, indices) = weld(&[a, b, a]).unwrap();
-    assert_eq!(indices, [[0, 1, 2], [0, 2, 3], [0, 1, 2]]);
-    assert_eq!(vertices.len(), 4);
+    let (vertices, indices) = weld(&[a, b, a, b]).unwrap();
+    assert_eq!(indices, [[0, 1, 2], [3, 2, 4], [0, 1, 2], [3, 2, 4]]);
+    assert_eq!(vertices.len(), 5);
+    assert_eq!(vertices[3].x.to_bits(), (-0.0f32).to_bits());
     assert_eq!(weld::<f32>(&[]).unwrap(), (vec![], vec![]));
     let nan = Triangle::new(v(f32::NAN, 0.0, 0.0), v(1.0, 0.0, 0.0), v(0.0, 0.0, 1.0));
     let mut soup = vec![a; 5];
@@ -92,3 +94,27 @@ macro_rules! per_scalar {
 }
 
 per_scalar!(f64_: f64, f32_: f32, i32f32: I32F32, i16f16: I16F16);
+
+/// A soup whose shared corner is `-0.0` in one triangle and `0.0` in the next (`f64`): welded
+/// and compacted, a resting ball's contact is the prepared mesh's to the sign of every zero.
+/// `weld` once merged the two corners, and `CompactMesh::compact`'s check (`==`) let the
+/// changed triangle through, answering with zeros of the other sign.
+#[test]
+fn compact_after_weld_keeps_the_sign_of_zero() {
+    let v = Vec3::new;
+    let tris = [
+        Triangle::new(v(0.0f64, -0.0, 0.0), v(5.0, 0.0, 5.0), v(5.0, 0.0, 0.0)),
+        Triangle::new(v(-1.0, 0.0, 2.0), v(0.0, 0.0, 2.0), v(0.0, 0.0, 0.0)),
+    ];
+    let owned = MeshBuf::build(&tris, Degenerates::Refuse).unwrap();
+    let mesh = owned.mesh();
+    let (vertices, indices) = weld(&tris).unwrap();
+    let (mut t, mut o, mut b) = (vec![[0u32; 3]; 2], vec![0u32; 2], vec![0u8; 2]);
+    let compact =
+        CompactMesh::<f64, u32>::compact(&mesh, &vertices, &indices, &mut t, &mut o, &mut b)
+            .unwrap();
+    let p = v(0.0, 0.075_568_628_832_092_84, 0.954_599_129_279_815_3);
+    let sweep = Sweep::new(p, p, 0.151_137_257_664_185_68).unwrap();
+    let (want, got) = (mesh.cast(&sweep).unwrap(), compact.cast(&sweep).unwrap());
+    assert_eq!(format!("{got:?}"), format!("{want:?}"));
+}

@@ -570,3 +570,47 @@ meshes::per_scalar!(
     edge_cases_match_the_scan,
     matches_linear_scan_long #[ignore = "10^5 sweeps per scalar: run with --release -- --ignored"],
 );
+
+/// Cells only a few dozen steps of the scalar wide at their coordinates (`f32` 0.5-unit cells at
+/// 400 000; `f64` 1-unit cells at `2^53 - 20`): the T-junction test cannot tell the border
+/// edges' lines from their neighbours' there, so the mesh keeps them, as the heightfield does.
+/// They once went off in the mesh (and a `Scene`), which let a ball pass through the border
+/// vertex the heightfield stops it at.
+#[test]
+fn far_from_the_origin_as_the_mesh() {
+    fn case<S: Scalar>(origin: [f64; 3], spacing: f64, sweep: (P, P)) {
+        let heights = vec![0i16; 6];
+        let mut cells = [0u8; 2];
+        let o = v::<S>(origin);
+        let hf = Heightfield::build(
+            o,
+            S::from_f64(spacing),
+            S::from_f64(0.25),
+            2,
+            1,
+            &heights,
+            |_, _| false,
+            &mut cells,
+        )
+        .unwrap();
+        let (input, _) = triangles(&hf);
+        let owned = meshes::build(&input, Degenerates::Refuse).unwrap();
+        for t in 0..input.len() {
+            let (a, b) = (hf.prepared(t).unwrap(), *owned.mesh().triangle(t).unwrap());
+            assert_eq!(a.to_parts(), b.to_parts(), "triangle {t}");
+        }
+        let sweep = Sweep::new(v::<S>(sweep.0), v(sweep.1), S::from_f64(0.5)).unwrap();
+        let (got, want) = (hf.cast(&sweep), owned.mesh().cast(&sweep));
+        let name = core::any::type_name::<S>();
+        assert!(want.is_some(), "{name}: the border vertex stops the ball");
+        same_hit(got, want, name);
+    }
+    let (x, z) = (400_000.0, 400_000.5);
+    case::<f32>([x, 0.0, x], 0.5, ([x - 2.0, 0.0, z], [x + 2.0, 0.0, z]));
+    let (x, y, z) = (
+        -9_007_199_254_740_975.0,
+        -9_007_199_254_740_974.0,
+        9_007_199_254_740_975.0,
+    );
+    case::<f64>([x, y, z - 1.0], 1.0, ([x - 1.0, y, z], [x + 2.0, y, z]));
+}

@@ -644,13 +644,14 @@ mod baked {
     const H: f32 = core::f32::consts::FRAC_1_SQRT_2;
     static TRIANGLES: [StandardTriangle<f32>; 1] = [StandardTriangle::from_parts(Parts {
         origin: Vec3::new(0.0, 0.0, 0.0),
+        // The build's axes, zeros' signs included (the check is bit for bit).
         axes: [
             Vec3::new(1.0, 0.0, 0.0),
-            Vec3::new(0.0, 1.0, 0.0),
-            Vec3::new(0.0, 0.0, 1.0),
+            Vec3::new(-0.0, 1.0, 0.0),
+            Vec3::new(0.0, -0.0, 1.0),
         ],
         shape: [0.0, 1.0, 1.0],
-        normal: Vec3::new(0.0, 1.0, 0.0),
+        normal: Vec3::new(-0.0, 1.0, 0.0),
         edges: [
             Edge {
                 dir: [0.0, 1.0],
@@ -717,4 +718,41 @@ mod baked {
         );
         assert_eq!(checked, Ok(()));
     }
+}
+
+/// A lone triangle 0.01 across at x = 10 000 (`f32`; `f64` at 10^13), shorter than the
+/// T-junction test's tolerance there: with no neighbour, nothing covers its edges, and a ball
+/// moving into its vertex stops there in a `Scene` and a `Mesh` as on the triangle alone. The
+/// test once found such edges covered by nothing and let the ball through.
+#[test]
+fn small_triangle_far_out_keeps_its_edges() {
+    fn case<S: Scalar>(x: f64, side: f64) {
+        let t = Triangle::new(
+            v::<S>([x, 0.0, 0.0]),
+            v([x, 0.0, side]),
+            v([x + side, 0.0, 0.0]),
+        );
+        let lone = ballcast::StandardTriangle::new(&t).unwrap();
+        let mut scene: Scene<S, 1> = Scene::new();
+        scene.push(t).unwrap();
+        let mesh = build(&[t], Degenerates::Refuse).unwrap();
+        let sweep = Sweep::new(
+            v::<S>([x + 1.0, 0.0, 0.0]),
+            v([x - 1.0, 0.0, 0.0]),
+            S::from_f64(0.5),
+        );
+        let want = lone.cast(&sweep.unwrap()).unwrap();
+        for got in [
+            scene.cast(&sweep.unwrap()),
+            mesh.mesh().cast(&sweep.unwrap()),
+        ] {
+            let got = got.expect("the vertex stops the ball");
+            assert_eq!(
+                (got.alpha, got.normal, got.contact),
+                (want.alpha, want.normal, want.contact)
+            );
+        }
+    }
+    case::<f32>(10_000.0, 0.01);
+    case::<f64>(1e13, 0.01);
 }

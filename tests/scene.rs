@@ -255,3 +255,56 @@ macro_rules! per_scalar {
 }
 
 per_scalar!(f64_: f64, f32_: f32, i32f32: I32F32, i16f16: I16F16);
+
+/// Triangles whose frames lie millions of units from a resting ball near the origin (`f32`):
+/// their heights round at their own magnitude, and the scene's box test allows for that, so
+/// it keeps every contact the triangles report (the slice, which tests every triangle, is the
+/// reference). The box test once allowed for rounding at the path's magnitude only, and
+/// dropped the large triangle's contact, or the quad's nearer edge.
+#[test]
+fn box_test_keeps_what_far_frames_report() {
+    let v = |x: f32, y: f32, z: f32| ballcast::Vec3::new(x, y, z);
+    let big = [Triangle::new(
+        v(-4194304.0, 2097152.0, -4194304.0),
+        v(0.0, 0.0, 0.0),
+        v(0.0, 0.0, -4194304.0),
+    )];
+    let (s, h) = (65536.0, 16384.0);
+    let quads: Vec<Triangle<f32>> = [
+        v(-s, 0.0, -s),
+        v(0.0, 0.0, -s),
+        v(-s, 0.0, 0.0),
+        v(0.0, 0.0, 0.0),
+    ]
+    .into_iter()
+    .flat_map(|o| {
+        let (a, b, c) = (o + v(0.0, 0.0, s), o + v(s, h, s), o + v(s, 0.0, 0.0));
+        [Triangle::new(o, a, b), Triangle::new(o, b, c)]
+    })
+    .collect();
+    let cases = [
+        (
+            &big[..],
+            v(-0.093_671_53, 0.187_343_06, 0.187_343_06),
+            0.140_507_3,
+        ),
+        (
+            &quads[..],
+            v(0.012_810_832, 0.008_039_312, 0.010_721_519),
+            0.01,
+        ),
+    ];
+    for (tris, p, r) in cases {
+        let mut scene: Scene<f32, 8> = Scene::new();
+        for &t in tris {
+            scene.push(t).unwrap();
+        }
+        let slice: Vec<StandardTriangle<f32>> = (0..tris.len())
+            .map(|i| *scene.triangle(i).unwrap())
+            .collect();
+        let sweep = Sweep::new(p, p, r).unwrap();
+        let want = ballcast::Geometry::cast(&slice[..], &sweep);
+        assert!(want.is_some());
+        assert_eq!(scene.cast(&sweep), want);
+    }
+}
