@@ -95,7 +95,7 @@ mod overlap;
 mod short;
 mod traverse;
 
-use crate::{Scalar, Triangle};
+use crate::{Scalar, Triangle, Vec3};
 
 pub use build::nodes_for;
 pub(crate) use build::{BuildError, build, item, key_index, set_classes};
@@ -230,6 +230,24 @@ impl Grid {
     pub(crate) fn exponent_for(largest: f64) -> i32 {
         let e = ((largest.to_bits() >> 52) & 0x7ff) as i32 - 1023;
         (e + 1 - 24).clamp(-900, 1000)
+    }
+
+    /// The largest coordinate's magnitude of the root box, world units.
+    pub(crate) fn magnitude(&self) -> f64 {
+        let cells = self.lo.iter().chain(self.hi.iter());
+        cells.fold(0.0f64, |m, &c| m.max((c as f64).abs())) / Self::scale(self.exponent)
+    }
+
+    /// The box a query from `min` to `max` (a [`Geometry::visit`](crate::Geometry::visit))
+    /// takes, world units: grown by every rounding of the exact tests its triangles go to, at
+    /// the magnitude of the box or of the mesh (as a heightfield's query is), so a triangle
+    /// those tests find within reach is never left out.
+    pub(crate) fn visit_box<S: Scalar>(&self, min: Vec3<S>, max: Vec3<S>) -> [[f64; 3]; 2] {
+        let (lo, hi) = (min.to_array().map(S::to_f64), max.to_array().map(S::to_f64));
+        let big = |a: [f64; 3]| a.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+        let magnitude = big(lo).max(big(hi)).max(self.magnitude());
+        let slack = traverse::rounding_pad::<S>(0.0, 0.0, magnitude);
+        [lo.map(|v| v - slack), hi.map(|v| v + slack)]
     }
 
     /// The bounding box of a triangle in world units, `f64`.

@@ -256,7 +256,7 @@ impl<S: Scalar> Geometry<S> for Mesh<'_, S> {
 
     /// The triangles of the leaves whose boxes meet the box (the tree's box query).
     fn visit(&self, min: Vec3<S>, max: Vec3<S>, f: &mut dyn FnMut(usize, &StandardTriangle<S>)) {
-        let (lo, hi) = (min.to_array().map(S::to_f64), max.to_array().map(S::to_f64));
+        let [lo, hi] = self.grid.visit_box(min, max);
         let query = bvh::query_cells(&self.grid, lo, hi);
         // A first walk that only checks the tree, so malformed parts (never from `build`) are
         // scanned instead without a triangle given twice.

@@ -176,7 +176,7 @@ impl<S: Scalar, const N: usize> Scene<S, N> {
             return Err(Error::Full { capacity: N });
         }
         let st = st.with_two_sided(two_sided);
-        let bounds = Bounds::of(&[t.v0, t.v1, t.v2], rounding(&t));
+        let bounds = Bounds::of(&[t.v0, t.v1, t.v2], rounding(t.vertices()));
         // Capacity was checked: none of these can fail.
         let _ = (
             self.bounds.push(bounds),
@@ -251,7 +251,8 @@ impl<S: Scalar, const N: usize> Scene<S, N> {
 /// the contact tests (sixteen height errors at the path's magnitude, and four steps of alpha
 /// twice over the path's length), so the box test never drops a contact the triangle reports.
 /// The heights' rounding at the triangle's own magnitude (its frame's origin can lie far from
-/// the path) grows the triangle's box instead: see [`rounding`].
+/// the path) grows the triangle's box instead: see [`rounding`]; `reach`'s sixteen height
+/// errors are the path's share.
 fn reach<S: Scalar>(sweep: &Sweep<S>) -> S {
     let (p0, p1, r) = (sweep.p0(), sweep.p1(), sweep.radius());
     let size = |p: Vec3<S>| largest(p.x.abs(), p.y.abs(), p.z.abs());
@@ -264,12 +265,14 @@ fn reach<S: Scalar>(sweep: &Sweep<S>) -> S {
     r + seam_margin(r) + e + steps + steps
 }
 
-/// How far a triangle's box is grown for the rounding of heights in its frame at its own
-/// coordinates: sixteen height errors at its largest. With [`reach`]'s share at the path's
-/// magnitude, the two add up to the rounding at the larger of the two.
-fn rounding<S: Scalar>(t: &Triangle<S>) -> S {
+/// How far a box is grown for the rounding of heights at its points' coordinates: sixteen
+/// height errors at their largest. A triangle's box takes its share at its own coordinates, a
+/// query's (the path's in [`reach`], a box's in `visit`) at its: the two add up to the
+/// rounding at the larger of the two.
+fn rounding<S: Scalar>(points: [Vec3<S>; 3]) -> S {
     let size = |p: Vec3<S>| largest(p.x.abs(), p.y.abs(), p.z.abs());
-    let mut e = S::height_error(largest(size(t.v0), size(t.v1), size(t.v2)));
+    let [a, b, c] = points;
+    let mut e = S::height_error(largest(size(a), size(b), size(c)));
     for _ in 0..4 {
         e = e + e;
     }
@@ -294,7 +297,7 @@ impl<S: Scalar, const N: usize> Geometry<S> for Scene<S, N> {
     }
 
     fn visit(&self, min: Vec3<S>, max: Vec3<S>, f: &mut dyn FnMut(usize, &StandardTriangle<S>)) {
-        let reach = Bounds { min, max };
+        let reach = Bounds::of(&[min, max], rounding([min, max, max]));
         for (i, (b, t)) in self.bounds.iter().zip(self.triangles.iter()).enumerate() {
             if b.overlaps(&reach) {
                 f(i, t);

@@ -218,3 +218,27 @@ fn sliver_tilted_plane_f64_ray() {
         0.0,
     );
 }
+
+/// A ball whose lowest point meets a triangle's top edge to within rounding (`f32`): the
+/// prepared triangle's overlap test finds a depth of a step or two, and the compact mesh's box
+/// query, grown by the tests' rounding, offers the triangle as the mesh's does, so both answer
+/// alike. Its query once took the vertices' bare box and missed it.
+#[test]
+fn penetration_at_rounding_depth_as_the_mesh() {
+    let verts = [
+        Vec3::new(-2.985_123_9_f32, -2.214_315_2, -2.855_390_3),
+        Vec3::new(-2.985_123_9, 0.858_943_6, -2.855_390_3),
+        Vec3::new(-1.934_750_2, 0.858_943_6, -2.855_390_3),
+    ];
+    let tris = [ballcast::Triangle::new(verts[0], verts[1], verts[2])];
+    let owned = build(&tris, Degenerates::Refuse).unwrap();
+    let mesh = owned.mesh();
+    let (mut t, mut o, mut b) = ([[0u16; 3]; 1], [0u16; 1], [0u8; 1]);
+    let compact =
+        CompactMesh::<f32, u16>::compact(&mesh, &verts, &[[0, 1, 2]], &mut t, &mut o, &mut b)
+            .unwrap();
+    let centre = Vec3::new(-2.459_937, 1.479_974_2, -2.855_390_3);
+    let want = penetration(&mesh, centre, 0.621_030_5).unwrap();
+    assert!(want.is_some_and(|p| p.depth < 1e-6), "{want:?}");
+    assert_eq!(penetration(&compact, centre, 0.621_030_5).unwrap(), want);
+}

@@ -614,3 +614,37 @@ fn far_from_the_origin_as_the_mesh() {
     );
     case::<f64>([x, y, z - 1.0], 1.0, ([x - 1.0, y, z], [x + 2.0, y, z]));
 }
+
+/// `f32` cells one step of the scalar wide at `2^24 - 20`, their heights rounded by half a
+/// unit: a ball moving along a grid line 1 010 units touches the vertex two triangles share at
+/// the same alpha, and the heightfield reports the smaller index, as the slice of its prepared
+/// triangles does. Its plane cull once took the heights unrounded, tilting a plane by half a
+/// unit per unit over the long path, and never offered the smaller.
+#[test]
+fn tie_near_the_range_edge_as_the_slice() {
+    let heights: [i16; 6] = [0, 32767, 0, 1, 32767, 1];
+    let mut cells = [0u8; 2];
+    let o = Vec3::new(-16_777_199.0f32, 16_777_198.0, 16_777_195.0);
+    let hf = Heightfield::build(
+        o,
+        1.0,
+        1.0 / 65536.0,
+        1,
+        2,
+        &heights,
+        |_, _| false,
+        &mut cells,
+    )
+    .unwrap();
+    let slice: Vec<_> = (0..hf.len()).map(|t| hf.prepared(t).unwrap()).collect();
+    let (y, z) = (16_777_198.0, 16_777_196.0);
+    let sweep = Sweep::new(
+        Vec3::new(-16_776_189.0, y, z),
+        Vec3::new(-16_777_199.0, y, z),
+        0.5,
+    )
+    .unwrap();
+    let want = Geometry::cast(slice.as_slice(), &sweep);
+    assert!(want.is_some());
+    same_hit(hf.cast(&sweep), want, "f32");
+}

@@ -64,8 +64,7 @@ impl Segment {
         let r = sweep.radius().to_f64();
         let s = Grid::scale(grid.exponent);
         let big = |a: [f64; 3]| a.iter().fold(0.0f64, |m, x| m.max(x.abs()));
-        let cells = grid.lo.iter().chain(grid.hi.iter());
-        let mesh = cells.fold(0.0f64, |m, &c| m.max((c as f64).abs())) / s;
+        let mesh = grid.magnitude();
         let d = [p1[0] - p0[0], p1[1] - p0[1], p1[2] - p0[2]];
         let magnitude = big(p0).max(big(p1)).max(mesh);
         let pad = rounding_pad::<S>(r, big(d), magnitude);

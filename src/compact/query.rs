@@ -148,9 +148,9 @@ impl<S: Scalar, I: MeshIndex> Geometry<S> for CompactMesh<'_, S, I> {
     }
 
     /// Every triangle of the leaves whose boxes meet the box (the tree's box query) whose
-    /// vertices' box meets it too, prepared.
+    /// vertices' box meets it too, prepared; the box grown by the tests' rounding first.
     fn visit(&self, min: Vec3<S>, max: Vec3<S>, f: &mut dyn FnMut(usize, &StandardTriangle<S>)) {
-        let (lo, hi) = (min.to_array().map(S::to_f64), max.to_array().map(S::to_f64));
+        let [lo, hi] = self.grid.visit_box(min, max);
         let query = bvh::query_cells(&self.grid, lo, hi);
         // A first walk that only checks the tree, so malformed parts (never from `compact`)
         // are scanned instead without a triangle given twice.

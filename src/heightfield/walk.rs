@@ -63,11 +63,24 @@ impl<S: Scalar> Heightfield<'_, S> {
         let (w, h) = (self.columns as i64, self.rows as i64);
         let (sp, unit) = (self.spacing.to_f64(), self.unit.to_f64());
         let limit = |acc: &Earliest<S>| acc.reach().to_f64() + 1.0 / (1u64 << 50) as f64;
-        let y = |h: f64| o[1] + h * unit;
-        let (ylo, yhi) = (y(self.bounds[0] as f64), y(self.bounds[1] as f64));
+        // The culls take the vertices as the triangles have them. Fixed point makes heights and
+        // grid lines exactly (an integer times a step, plus the origin, in range); a float
+        // rounds them, and near the range's edge that can tilt a plane far more than the pad
+        // allows for over a long path: there they are made in `S`, as the triangles' are.
+        let float = S::PRECISION.relative;
+        let y = |h: i16| match float {
+            true => (self.origin.y + self.unit.mul(S::from_int(h as i32))).to_f64(),
+            false => o[1] + h as f64 * unit,
+        };
+        let line = |o: S, n: i64| match float {
+            true => self.along(o, n as u32).to_f64(),
+            false => o.to_f64() + sp * n as f64,
+        };
+        let (ylo, yhi) = (y(self.bounds[0]), y(self.bounds[1]));
+        let (o3, o0) = (self.origin.z, self.origin.x);
         let whole = (
             [o[0], ylo.min(yhi), o[2]],
-            [o[0] + sp * w as f64, ylo.max(yhi), o[2] + sp * h as f64],
+            [line(o0, w), ylo.max(yhi), line(o3, h)],
         );
         // The part of the path near the terrain at all: above or below it nothing is reached.
         let Some((ta, tb)) = path.clip(whole.0, whole.1, limit(acc)) else {
@@ -98,7 +111,7 @@ impl<S: Scalar> Heightfield<'_, S> {
             // The part of the path within this row's strip, grown. Strips come in travel order:
             // once one's slab starts beyond the reach, so do the rest's (a strip missed for
             // another reason, behind the start or beside a path along it, ends nothing).
-            let z = [o[2] + sp * k as f64, o[2] + sp * (k + 1) as f64];
+            let z = [line(o3, k), line(o3, k + 1)];
             let lim = limit(acc).min(tb);
             if path.inv[2].is_finite() {
                 let near = if up { z[0] - path.pad } else { z[1] + path.pad };
@@ -114,7 +127,7 @@ impl<S: Scalar> Heightfield<'_, S> {
             let (i0, i1) = (cells(xlo, 0, w).0, cells(xhi, 0, w).1);
             for m in 0..=(i1 - i0) {
                 let i = if right { i0 + m } else { i1 - m };
-                let x = [o[0] + sp * i as f64, o[0] + sp * (i + 1) as f64];
+                let x = [line(o0, i), line(o0, i + 1)];
                 let lim = limit(acc);
                 // Cells come in travel order along x too: once one's slab starts beyond the
                 // reach, so do the rest of the row's.
@@ -136,7 +149,7 @@ impl<S: Scalar> Heightfield<'_, S> {
                 };
                 let at = |di: i64, dk: i64| {
                     let v = (k + dk) * (w + 1) + i + di;
-                    y(self.heights.get(v as usize).map_or(0.0, |&h| h as f64))
+                    y(self.heights.get(v as usize).map_or(0, |&h| h))
                 };
                 let (p00, p01) = ([x[0], at(0, 0), z[0]], [x[0], at(0, 1), z[1]]);
                 let (p11, p10) = ([x[1], at(1, 1), z[1]], [x[1], at(1, 0), z[0]]);
