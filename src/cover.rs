@@ -8,10 +8,9 @@
 //!
 //! The test runs in the edge's triangle's standard frame: a neighbour's edge counts when both
 //! its ends lie on the edge's line (within the rounding of a height there) and it runs the other
-//! way; the edge is covered when those intervals, joined, span it from end to end. An edge no
-//! longer than twice that tolerance, or whose triangle's far vertex lies within it (geometry
-//! near the scalar's resolution at its coordinates), cannot be told from its neighbours' lines
-//! and stays active.
+//! way, its triangle lying on the edge's other side (its third vertex beyond the line); the
+//! edge is covered when those intervals, joined, span it from end to end (one at least, however
+//! short the edge).
 
 use crate::merge::same_plane;
 use crate::scalar::largest;
@@ -44,7 +43,7 @@ fn intervals<'a, S: Scalar>(
     // Only a flat neighbour has any (`interval` asks again, for its other callers).
     let flat = !same_triangle(o, t) && same_plane(o.normal(), t.normal());
     let edges = if flat { 0..3 } else { 0..0 };
-    edges.filter_map(move |j| interval(t, i, o, (v[j], v[(j + 1) % 3])))
+    edges.filter_map(move |j| interval(t, i, o, v, j))
 }
 
 /// Whether the stretches `[lo, hi]` (distances along edge `i` of `t`), joined, span the edge
@@ -55,16 +54,12 @@ fn spans<S: Scalar>(
     intervals: impl Iterator<Item = (S, S)> + Clone,
 ) -> bool {
     let (len, tol) = (t.edge(i).len, tolerance(t, i));
-    // Where the tolerance is not small against the triangle (coordinates near the scalar's
-    // resolution), the test cannot tell the edge's line from its neighbours': the edge stays.
-    let far = S::dot_unit(t.corner((i + 2) % 3) - t.corner(i), t.edge(i).out()).abs();
-    if len <= tol + tol || far <= tol + tol {
-        return false;
-    }
     // Extend the covered stretch [0, reach] from the edge's start until no interval extends it.
-    let mut reach = S::ZERO;
+    // It takes one interval at least: an edge shorter than the tolerance allows at its ends
+    // (coordinates near the scalar's resolution) is not spanned by nothing.
+    let (mut reach, mut any) = (S::ZERO, false);
     loop {
-        if reach >= len - tol {
+        if any && reach >= len - tol {
             return true;
         }
         let next = intervals
@@ -73,7 +68,7 @@ fn spans<S: Scalar>(
             .map(|(_, hi)| hi)
             .reduce(|a, b| if b > a { b } else { a });
         match next {
-            Some(hi) => reach = hi,
+            Some(hi) => (reach, any) = (hi, true),
             None => return false,
         }
     }
@@ -145,23 +140,27 @@ pub(crate) fn cover_open<'a, S: Scalar + 'a>(
     changed
 }
 
-/// The stretch `[lo, hi]` of edge `i` of `t` (as distances from its start) that the edge
-/// `(a, b)` of the flat neighbour `o` runs along in the opposite direction, if it does.
+/// The stretch `[lo, hi]` of edge `i` of `t` (as distances from its start) that edge `j` of the
+/// flat neighbour `o` (whose source's vertices are `v`) runs along in the opposite direction,
+/// from the edge's other side, if it does.
 pub(crate) fn interval<S: Scalar>(
     t: &StandardTriangle<S>,
     i: usize,
     o: &StandardTriangle<S>,
-    (a, b): (Vec3<S>, Vec3<S>),
+    v: [Vec3<S>; 3],
+    j: usize,
 ) -> Option<(S, S)> {
     if same_triangle(o, t) || !same_plane(o.normal(), t.normal()) {
         return None;
     }
     let (corner, edge, tol) = (t.corner(i), t.edge(i), tolerance(t, i));
-    let (a, b) = (t.standard_point(a), t.standard_point(b));
-    let on_line = |p: Vec3<S>| p.y.abs() <= tol && S::dot_unit(p - corner, edge.out()).abs() <= tol;
+    let [a, b, apex] = [j, j + 1, j + 2].map(|k| t.standard_point(v[k % 3]));
+    let out = |p: Vec3<S>| S::dot_unit(p - corner, edge.out());
+    let on_line = |p: Vec3<S>| p.y.abs() <= tol && out(p).abs() <= tol;
     let along = |p: Vec3<S>| S::dot_unit(p - corner, edge.along());
     let (ua, ub) = (along(a), along(b));
-    (on_line(a) && on_line(b) && ub < ua).then_some((ub, ua))
+    // A neighbour on the edge's own side (a strip of slivers along it) hides nothing.
+    (on_line(a) && on_line(b) && ub < ua && out(apex) > S::ZERO).then_some((ub, ua))
 }
 
 /// Whether `o` is `t` or an identical copy, whatever edges either has switched off so far: a

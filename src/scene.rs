@@ -201,8 +201,7 @@ impl<S: Scalar, const N: usize> Scene<S, N> {
                 if !tj.features().edge(k) {
                     continue;
                 }
-                let near =
-                    j == t || (0..3).any(|e| interval(tj, k, tt, (v[e], v[(e + 1) % 3])).is_some());
+                let near = j == t || (0..3).any(|e| interval(tj, k, tt, v, e).is_some());
                 let all = self.triangles.iter().zip(self.sources.iter());
                 if near && covered(tj, k, all) {
                     deactivate(&mut self.triangles[j], k);

@@ -756,3 +756,79 @@ fn small_triangle_far_out_keeps_its_edges() {
     case::<f32>(10_000.0, 0.01);
     case::<f64>(1e13, 0.01);
 }
+
+/// The edges of a T-junction `(A edge 0, B edge 2, C edge 2)` as a `Scene` and a `Mesh` set
+/// them, for a floor where sliver A (below z = 0, its far vertex `h` below its long edge)
+/// covers the short edges of B and C above the line, at `x0`.
+fn t_junction_edges<S: Scalar>(x0: f64, h: f64) -> [[bool; 3]; 2] {
+    let p = |x: f64, z: f64| v::<S>([x0 + x, 0.0, z]);
+    let tris = [
+        Triangle::new(p(0.0, 0.0), p(2.0, 0.0), p(1.0, -h)),
+        Triangle::new(p(0.0, 0.0), p(0.0, 1.0), p(1.0, 0.0)),
+        Triangle::new(p(1.0, 0.0), p(1.0, 1.0), p(2.0, 0.0)),
+        Triangle::new(p(0.0, 1.0), p(1.0, 1.0), p(1.0, 0.0)),
+    ];
+    let mut scene: Scene<S, 4> = Scene::new();
+    for t in tris {
+        scene.push(t).unwrap();
+    }
+    let owned = build(&tris, Degenerates::Refuse).unwrap();
+    let at = |t: &ballcast::StandardTriangle<S>, e: usize| t.features().edge(e);
+    let of = |t: &dyn Fn(usize) -> ballcast::StandardTriangle<S>| {
+        [at(&t(0), 0), at(&t(1), 2), at(&t(2), 2)]
+    };
+    [
+        of(&|i| *scene.triangle(i).unwrap()),
+        of(&|i| *owned.mesh().triangle(i).unwrap()),
+    ]
+}
+
+/// A sliver (its far vertex 10^-4 below its long edge, within the T-junction test's tolerance
+/// in `I16F16`) and its neighbours cover each other's edges along their shared line: all go
+/// off, as in thicker floors. An earlier rule kept the neighbours' edges on wherever a triangle
+/// was thinner than the tolerance, and balls crossing the seam met them.
+#[test]
+fn a_sliver_covers_its_neighbours_edges() {
+    let off = [[false; 3]; 2];
+    for (x0, h) in [(10.0, 1e-4), (1000.0, 2e-4), (1000.0, 0.1)] {
+        assert_eq!(t_junction_edges::<I16F16>(x0, h), off, "I16F16 {x0} {h}");
+    }
+    for (x0, h) in [(100.0, 1e-4), (4000.0, 1e-3), (1.0, 1.0)] {
+        assert_eq!(t_junction_edges::<f32>(x0, h), off, "f32 {x0} {h}");
+    }
+}
+
+/// Slivers lying along one side of a triangle's long edge, their edges on its line and
+/// running the other way, but on the triangle's own side (`f32`, 10 000 out, 0.005 thin): they
+/// hide nothing beyond it, so the edge stays on and a ball falling beside it lands on the edge.
+/// The test once counted them as covering it.
+#[test]
+fn slivers_on_the_edges_own_side_leave_it_active() {
+    let (x0, h) = (1e4, 0.005);
+    let p = |x: f64, z: f64| v::<f32>([x0 + x, 0.0, z]);
+    let up = |a, b, c| {
+        let t = Triangle::new(a, b, c);
+        let facing = ballcast::StandardTriangle::new(&t).is_ok_and(|s| s.normal().y > 0.0);
+        if facing { t } else { Triangle::new(a, c, b) }
+    };
+    let tris = [
+        Triangle::new(p(0.0, 0.0), p(2.0, 0.0), p(1.0, -h)),
+        up(p(0.0, 0.0), p(1.0, -h), p(-1.0, -h * 0.5)),
+        up(p(2.0, 0.0), p(1.0, -h), p(3.0, -h * 0.5)),
+    ];
+    let mut scene: Scene<f32, 3> = Scene::new();
+    for t in tris {
+        scene.push(t).unwrap();
+    }
+    let owned = build(&tris, Degenerates::Refuse).unwrap();
+    assert!(scene.triangle(0).unwrap().features().edge(0));
+    assert!(owned.mesh().triangle(0).unwrap().features().edge(0));
+    let sweep = Sweep::new(p(1.3, 1.0), p(1.3, -1.0), 0.5).unwrap();
+    let sweep = Sweep::new(
+        sweep.p0() + v([0.0, 0.0, 0.3]),
+        sweep.p1() + v([0.0, 0.0, 0.3]),
+        0.5,
+    );
+    let hit = scene.cast(&sweep.unwrap()).unwrap();
+    assert_eq!((hit.contact, hit.index), (ballcast::Contact::Edge(0), 0));
+}

@@ -15,8 +15,8 @@ impl<'a, S: Scalar> Mesh<'a, S> {
     /// edge is off where the surface is flat or a valley there; an open edge (one sharing its
     /// vertex pair with no opposite edge but that of its own triangle's reverse) is off where
     /// flat neighbours cover it from end to end (a T-junction), found by walking the tree along
-    /// it (an edge too short or on a triangle too thin to tell its line from theirs at the
-    /// rounding of its coordinates stays active). Unlike a `Scene`, a mesh applies the second rule to open edges only (an edge both
+    /// it (neighbours on the edge's other side only). Unlike a `Scene`, a mesh applies the
+    /// second rule to open edges only (an edge both
     /// shared and covered, which takes three or more triangles along one line, stays as the
     /// pair decides); an edge along more than 64 neighbours' edges, or with more than 256
     /// triangles near it, stays active, and after `256 N` triangles met near edges in all (only
