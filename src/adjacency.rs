@@ -1,8 +1,8 @@
 //! Active edges from adjacency: the one rule [`Scene`](crate::Scene) and [`Mesh`](crate::Mesh)
 //! both apply, and the sort that finds a mesh's shared edges in `O(N)` (a radix sort).
 //!
-//! An edge shared by two triangles with opposite winding (the same two vertices in value: `-0.0` is `0.0`) is
-//! switched off in both when the surface continues flat there (front normals within 1/1024 per
+//! An edge shared by two triangles with opposite winding (the same two vertices in value:
+//! `-0.0` is `0.0`) is switched off in both when the surface continues flat there (front normals within 1/1024 per
 //! component) or, for one-sided triangles, folds towards the front (a valley: the neighbour's far
 //! vertex lies in front of the triangle's plane). Ridges and open edges stay active. A vertex stays
 //! active while one of the triangle's two edges through it does. These are Jolt's *active edges*
