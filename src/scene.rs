@@ -176,7 +176,7 @@ impl<S: Scalar, const N: usize> Scene<S, N> {
             return Err(Error::Full { capacity: N });
         }
         let st = st.with_two_sided(two_sided);
-        let bounds = Bounds::of(&[t.v0, t.v1, t.v2], rounding(t.vertices()));
+        let bounds = Bounds::of(&[t.v0, t.v1, t.v2], rounding(&t.vertices()));
         // Capacity was checked: none of these can fail.
         let _ = (
             self.bounds.push(bounds),
@@ -254,24 +254,18 @@ impl<S: Scalar, const N: usize> Scene<S, N> {
 /// errors are the path's share.
 fn reach<S: Scalar>(sweep: &Sweep<S>) -> S {
     let (p0, p1, r) = (sweep.p0(), sweep.p1(), sweep.radius());
-    let size = |p: Vec3<S>| largest(p.x.abs(), p.y.abs(), p.z.abs());
     let d = p1 - p0;
-    let mut e = S::height_error(largest(size(p0), size(p1), r));
-    for _ in 0..4 {
-        e = e + e;
-    }
-    let steps = tie::<S>().mul(size(d));
-    r + seam_margin(r) + e + steps + steps
+    let steps = tie::<S>().mul(largest(d.x.abs(), d.y.abs(), d.z.abs()));
+    r + seam_margin(r) + rounding(&[p0, p1, Vec3::new(r, r, r)]) + steps + steps
 }
 
 /// How far a box is grown for the rounding of heights at its points' coordinates: sixteen
 /// height errors at their largest. A triangle's box takes its share at its own coordinates, a
 /// query's (the path's in [`reach`], a box's in `visit`) at its: the two add up to the
 /// rounding at the larger of the two.
-fn rounding<S: Scalar>(points: [Vec3<S>; 3]) -> S {
-    let size = |p: Vec3<S>| largest(p.x.abs(), p.y.abs(), p.z.abs());
-    let [a, b, c] = points;
-    let mut e = S::height_error(largest(size(a), size(b), size(c)));
+fn rounding<S: Scalar>(points: &[Vec3<S>]) -> S {
+    let size = |m: S, p: &Vec3<S>| largest(m, largest(p.x.abs(), p.y.abs(), p.z.abs()), S::ZERO);
+    let mut e = S::height_error(points.iter().fold(S::ZERO, size));
     for _ in 0..4 {
         e = e + e;
     }
@@ -296,7 +290,7 @@ impl<S: Scalar, const N: usize> Geometry<S> for Scene<S, N> {
     }
 
     fn visit(&self, min: Vec3<S>, max: Vec3<S>, f: &mut dyn FnMut(usize, &StandardTriangle<S>)) {
-        let reach = Bounds::of(&[min, max], rounding([min, max, max]));
+        let reach = Bounds::of(&[min, max], rounding(&[min, max]));
         for (i, (b, t)) in self.bounds.iter().zip(self.triangles.iter()).enumerate() {
             if b.overlaps(&reach) {
                 f(i, t);

@@ -68,13 +68,19 @@ impl<S: Scalar> Heightfield<'_, S> {
         // rounds them, and near the range's edge that can tilt a plane far more than the pad
         // allows for over a long path: there they are made in `S`, as the triangles' are.
         let float = S::PRECISION.relative;
-        let y = |h: i16| match float {
-            true => (self.origin.y + self.unit.mul(S::from_int(h as i32))).to_f64(),
-            false => o[1] + h as f64 * unit,
+        let y = |h: i16| {
+            if float {
+                (self.origin.y + self.unit.mul(S::from_int(h as i32))).to_f64()
+            } else {
+                o[1] + h as f64 * unit
+            }
         };
-        let line = |o: S, n: i64| match float {
-            true => self.along(o, n as u32).to_f64(),
-            false => o.to_f64() + sp * n as f64,
+        let line = |o: S, n: i64| {
+            if float {
+                self.along(o, n as u32).to_f64()
+            } else {
+                o.to_f64() + sp * n as f64
+            }
         };
         let (ylo, yhi) = (y(self.bounds[0]), y(self.bounds[1]));
         let (o3, o0) = (self.origin.z, self.origin.x);
