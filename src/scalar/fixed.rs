@@ -192,7 +192,7 @@ macro_rules! fixed_scalar {
                     <$unit>::from_bits(((num + half) / len) as _)
                 })
             }
-            fn unit_cross(a: Vec3<$unit>, b: Vec3<$unit>) -> Option<Vec3<$unit>> {
+            fn scaled_cross(a: Vec3<$unit>, b: Vec3<$unit>) -> Option<Vec3<$unit>> {
                 let (a, b) = (a.map(|c| c.to_bits()), b.map(|c| c.to_bits()));
                 let c = Vec3::new(
                     $wmul(a.y, b.z) - $wmul(a.z, b.y),
@@ -205,9 +205,7 @@ macro_rules! fixed_scalar {
                     return None;
                 }
                 let shift = (<$wide>::BITS - m.clz()) as i32 - $ufrac;
-                Some(Self::unit_normalize(
-                    c.map(|x| <$unit>::from_bits(round_shift!(x, shift) as _)),
-                ))
+                Some(c.map(|x| <$unit>::from_bits(round_shift!(x, shift) as _)))
             }
             #[inline]
             fn div_pow2(v: Self, k: u32) -> Self {

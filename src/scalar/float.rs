@@ -91,13 +91,13 @@ macro_rules! float_scalar {
                 s.map(|c| c / len)
             }
             #[inline]
-            fn unit_cross(a: Vec3<Self>, b: Vec3<Self>) -> Option<Vec3<Self>> {
+            fn scaled_cross(a: Vec3<Self>, b: Vec3<Self>) -> Option<Vec3<Self>> {
                 let c = crate::vec3::cross(a, b);
                 let m = largest(c.x.abs(), c.y.abs(), c.z.abs());
                 if m.is_nan() || m < 1024.0 * <$t>::EPSILON {
                     return None;
                 }
-                Some(Self::unit_normalize(c.map(|x| x / m)))
+                Some(c.map(|x| x / m))
             }
             #[inline]
             fn mul_div(a: Self, n: Self, d: Self) -> Self {

@@ -118,10 +118,12 @@ pub(crate) mod sealed {
         fn scaled(v: Vec3<Self>) -> Option<Vec3<Self::Unit>>;
         /// Normalises a vector whose largest component has magnitude in `[1/2, 1]`.
         fn unit_normalize(s: Vec3<Self::Unit>) -> Vec3<Self::Unit>;
-        /// The normalised cross product of two vectors with components in `[-1, 1]`, or `None`
-        /// when its direction is uncertain: the cross product's largest component is below
-        /// 1024 units of roundoff of `Unit`, so the direction error would exceed about 1e-3 rad.
-        fn unit_cross(a: Vec3<Self::Unit>, b: Vec3<Self::Unit>) -> Option<Vec3<Self::Unit>>;
+        /// The cross product of two vectors with components in `[-1, 1]`, scaled by a positive
+        /// factor (as [`scaled`](Self::scaled)) so its largest component has magnitude in
+        /// `[1/2, 1]`, ready for [`unit_normalize`](Self::unit_normalize); or `None` when its
+        /// direction is uncertain: the cross product's largest component is below 1024 units of
+        /// roundoff of `Unit`, so the direction error would exceed about 1e-3 rad.
+        fn scaled_cross(a: Vec3<Self::Unit>, b: Vec3<Self::Unit>) -> Option<Vec3<Self::Unit>>;
         /// `v / 2^k` rounded to nearest (exact for floats short of underflow), `1 <= k < 32`.
         fn div_pow2(v: Self, k: u32) -> Self;
         /// `a · b` rounded once. Needs components within `2 * LIMIT` and a result in range.

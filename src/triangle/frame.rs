@@ -47,12 +47,19 @@ impl<S: Scalar> Frame<S> {
         } else {
             (2, 0)
         };
-        let scaled = |i: usize| S::scaled(edges[i]).ok_or(DEGENERATE);
-        let n = S::unit_cross(scaled(a)?, scaled(b)?).ok_or(DEGENERATE)?;
-
-        let ux = S::unit_normalize(S::scaled(t.v2 - t.v0).ok_or(DEGENERATE)?);
-        let uz = S::unit_cross(ux, n).ok_or(DEGENERATE)?;
-        let uy = S::unit_cross(uz, ux).ok_or(DEGENERATE)?;
+        let scaled = |v: Vec3<S>| S::scaled(v).ok_or(DEGENERATE);
+        let cross = |a, b| S::scaled_cross(a, b).ok_or(DEGENERATE);
+        // The axes are found as scaled directions (largest component in [1/2, 1]) and are
+        // normalised at the end, each on its own: no normalisation waits for another.
+        let n = cross(scaled(edges[a])?, scaled(edges[b])?)?;
+        let x = scaled(t.v2 - t.v0)?;
+        let z = cross(x, n)?;
+        let y = cross(z, x)?;
+        let (ux, uy, uz) = (
+            S::unit_normalize(x),
+            S::unit_normalize(y),
+            S::unit_normalize(z),
+        );
         Ok(Self {
             origin: t.v0,
             ux,
