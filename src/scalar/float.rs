@@ -90,7 +90,7 @@ macro_rules! float_scalar {
                 let len = $sqrt(crate::vec3::dot3(s, s));
                 s.map(|c| c / len)
             }
-            #[inline]
+            #[inline(always)]
             fn scaled_cross(a: Vec3<Self>, b: Vec3<Self>) -> Option<Vec3<Self>> {
                 let c = crate::vec3::cross(a, b);
                 let m = largest(c.x.abs(), c.y.abs(), c.z.abs());
