@@ -1,7 +1,7 @@
 //! The heights of a fixed-point sweep above a triangle's plane, bounded in 64-bit integers
 //! before the triangle is prepared: where `f64` is software (a Cortex-M0), a compact mesh's
 //! triangle behind the integer box is passed by here when the heights its frame would give
-//! certainly fail [`within_reach`], without the frame's four
+//! certainly fail [`within_reach`], without the frame's three
 //! square roots and normalisations.
 //!
 //! The exact normal `N = (v1 − v0) × (v2 − v0)` of the vertices' bits (`I16F16` vertices lie
