@@ -83,10 +83,10 @@ impl<S: Scalar> Heightfield<'_, S> {
             }
         };
         let (ylo, yhi) = (y(self.bounds[0]), y(self.bounds[1]));
-        let (o3, o0) = (self.origin.z, self.origin.x);
+        let (ox, oz) = (self.origin.x, self.origin.z);
         let whole = (
             [o[0], ylo.min(yhi), o[2]],
-            [line(o0, w), ylo.max(yhi), line(o3, h)],
+            [line(ox, w), ylo.max(yhi), line(oz, h)],
         );
         // The part of the path near the terrain at all: above or below it nothing is reached.
         let Some((ta, tb)) = path.clip(whole.0, whole.1, limit(acc)) else {
@@ -117,7 +117,7 @@ impl<S: Scalar> Heightfield<'_, S> {
             // The part of the path within this row's strip, grown. Strips come in travel order:
             // once one's slab starts beyond the reach, so do the rest's (a strip missed for
             // another reason, behind the start or beside a path along it, ends nothing).
-            let z = [line(o3, k), line(o3, k + 1)];
+            let z = [line(oz, k), line(oz, k + 1)];
             let lim = limit(acc).min(tb);
             if path.inv[2].is_finite() {
                 let near = if up { z[0] - path.pad } else { z[1] + path.pad };
@@ -133,7 +133,7 @@ impl<S: Scalar> Heightfield<'_, S> {
             let (i0, i1) = (cells(xlo, 0, w).0, cells(xhi, 0, w).1);
             for m in 0..=(i1 - i0) {
                 let i = if right { i0 + m } else { i1 - m };
-                let x = [line(o0, i), line(o0, i + 1)];
+                let x = [line(ox, i), line(ox, i + 1)];
                 let lim = limit(acc);
                 // Cells come in travel order along x too: once one's slab starts beyond the
                 // reach, so do the rest of the row's.
