@@ -80,7 +80,7 @@ fn ours<S: Scalar>(c: &mut Criterion, name: &str, w: usize) {
 
 fn parry(c: &mut Criterion, w: usize) {
     use parry3d::math::Vector;
-    use parry3d::shape::TriMesh;
+    use parry3d::shape::{TriMesh, TriMeshFlags};
     let tris = heightfield(w);
     let n = tris.len();
     let vertices: Vec<Vector> = tris.iter().flatten().map(|&a| peer::point(a)).collect();
@@ -92,6 +92,13 @@ fn parry(c: &mut Criterion, w: usize) {
     g.bench_function(BenchmarkId::from_parameter("parry3d_TriMesh"), |b| {
         b.iter(|| TriMesh::new(vertices.clone(), indices.clone()).unwrap())
     });
+    // The same work as `Mesh::build`: shared vertices found and internal edges fixed (the
+    // pseudo-normals that keep balls from catching on them), as ballcast's active edges do.
+    let fix = TriMeshFlags::FIX_INTERNAL_EDGES;
+    g.bench_function(
+        BenchmarkId::from_parameter("parry3d_TriMesh_fix_internal_edges"),
+        |b| b.iter(|| TriMesh::with_flags(vertices.clone(), indices.clone(), fix).unwrap()),
+    );
     g.finish();
     let mesh = TriMesh::new(vertices.clone(), indices.clone()).unwrap();
     let (short, long) = terrain::queries(w);
