@@ -53,7 +53,7 @@ pub(super) fn stand_off<S: Scalar>(
         // as `constrain` leaves a slide) yet met: it started closer than that. Lifted by its
         // approach, all of it clears the plane; left where it is, it would be met again at
         // once, call after call.
-        if into >= -S::height_error(magnitude(rest)) {
+        if into >= -along(rest) {
             return (S::ZERO, hit.normal.scale(-into));
         }
         let back = S::div(skin, -into);
@@ -66,6 +66,16 @@ pub(super) fn stand_off<S: Scalar>(
         return (if settled { S::ZERO } else { alpha }, zero);
     }
     (hit.alpha, hit.normal.scale(skin))
+}
+
+/// How far a motion `v`, constrained by planes, may still run into one of them as rounded and
+/// count as running along it: the rounding of a height at its magnitude, plus that of a unit
+/// normal times the push taken off, which grows with the motion (a tie of its magnitude). In
+/// fixed point the first is a constant few steps: without the second a fast landing on a slope
+/// (above about 10 units a second in `I16F16`) had its slide refused and stopped dead.
+pub(super) fn along<S: Scalar>(v: Vec3<S>) -> S {
+    let m = magnitude(v);
+    S::height_error(m) + S::mul(m, crate::scalar::tie::<S>())
 }
 
 /// The largest coordinate magnitude of a point.
@@ -116,7 +126,7 @@ pub(super) fn steep_wall<S: Scalar>(n: Vec3<S>, (up, min_cos): (Vec3<S>, S)) -> 
 /// down to the floor.
 pub(super) fn constrain<S: Scalar>(v: Vec3<S>, planes: &[Vec3<S>], primal: Vec3<S>) -> Vec3<S> {
     let zero = Vec3::ZERO;
-    let slack = -S::height_error(magnitude(v));
+    let slack = -along(v);
     let clear = |w: Vec3<S>| planes.iter().all(|n| S::dot(w, *n) >= slack);
     // What is left after removing a large push into a plane carries the normal's rounding
     // times the push (four steps of resolution of it at most), and in fixed point also the
