@@ -54,9 +54,11 @@ impl<'a, S: Scalar> Heightfield<'a, S> {
         }
         // The grid's far corner and heights in f64 first: a scalar's conversion saturates.
         let limit = S::LIMIT.to_f64();
+        // The heights' own range (none: zero), so the terrain's box is no taller than it.
+        let first = heights.first().map_or(0, |&v| v);
         let (lo, hi) = heights
             .iter()
-            .fold((0i16, 0i16), |(l, u), &v| (l.min(v), u.max(v)));
+            .fold((first, first), |(l, u), &v| (l.min(v), u.max(v)));
         let o = origin.to_array().map(S::to_f64);
         let (sp, u) = (spacing.to_f64(), unit.to_f64());
         let ends = [
