@@ -39,6 +39,9 @@ fn roll<S: Scalar>(tris: &[[P; 3]], bar: &ProgressBar) -> Result<(Vec<P>, usize)
         &mut scratch,
     )
     .map_err(|e| e.to_string())?;
+    if mesh.is_empty() {
+        return Err(format!("all {n} triangles are degenerate"));
+    }
     // Drops above the level: at fixed fractions of its extent, one unit over its top.
     let (lo, hi) = bounds(tris);
     let at = |fx: f64, fz: f64| {

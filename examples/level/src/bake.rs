@@ -153,7 +153,8 @@ pub fn triangles<S: Scalar + Emit>(level: &Level) -> Result<Vec<Triangle<S>>, Le
 /// Bakes `level` for scalar `S`: builds the mesh as [`Mesh::build`] does at run time (degenerate
 /// triangles skipped and listed) and writes it as source.
 ///
-/// Errors: [`Problem::OutOfRange`], or [`Problem::Mesh`] when the build refuses a triangle.
+/// Errors: [`Problem::OutOfRange`], [`Problem::AllDegenerate`] when no triangle is left, or
+/// [`Problem::Mesh`] when the build refuses a triangle.
 pub fn bake<S: Scalar + Emit>(level: &Level) -> Result<Baked, LevelError> {
     let sources = triangles::<S>(level)?;
     let n = sources.len();
@@ -178,6 +179,12 @@ pub fn bake<S: Scalar + Emit>(level: &Level) -> Result<Baked, LevelError> {
         &mut scratch,
     )
     .map_err(|e| LevelError::new(&level.path, Problem::Mesh(e)))?;
+    if mesh.is_empty() {
+        return Err(LevelError::new(
+            &level.path,
+            Problem::AllDegenerate { count: n },
+        ));
+    }
     let extent = level
         .triangles
         .iter()

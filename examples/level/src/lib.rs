@@ -55,6 +55,12 @@ pub enum Problem {
     Malformed(String),
     /// It holds no triangle.
     NoTriangles,
+    /// Every one of its triangles is degenerate in the chosen scalar (zero area, or too thin
+    /// for it): nothing would be left to collide with.
+    AllDegenerate {
+        /// How many triangles it holds.
+        count: usize,
+    },
     /// A coordinate is NaN or infinite.
     NotFinite {
         /// The triangle's index in the level.
@@ -83,6 +89,12 @@ impl fmt::Display for LevelError {
             Problem::UnknownFormat => f.write_str("unknown format (expected .obj, .gltf or .glb)"),
             Problem::Malformed(m) => write!(f, "malformed: {m}"),
             Problem::NoTriangles => f.write_str("no triangles"),
+            Problem::AllDegenerate { count } => {
+                write!(
+                    f,
+                    "all {count} triangles are degenerate (zero area or too thin)"
+                )
+            }
             Problem::NotFinite { triangle } => {
                 write!(f, "triangle {triangle} has a NaN or infinite coordinate")
             }

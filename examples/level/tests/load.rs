@@ -230,3 +230,17 @@ fn degenerate_triangles_are_skipped_and_named() {
     order.sort();
     assert_eq!(order, vec![0, 2, 3, 4]);
 }
+
+/// A level whose every triangle is degenerate (collinear corners here) is refused, naming the
+/// file, instead of baking an empty mesh a firmware would fall through.
+#[test]
+fn a_level_of_only_degenerate_triangles_is_refused() {
+    let mut level = load(data("quads.obj")).unwrap();
+    level.triangles = vec![[[0.0; 3], [1.0, 0.0, 0.0], [2.0, 0.0, 0.0]]; 3];
+    let e = bake::<f32>(&level).expect_err("nothing left");
+    assert!(
+        matches!(e.problem, Problem::AllDegenerate { count: 3 }),
+        "{e}"
+    );
+    assert!(e.to_string().contains("quads.obj"), "{e}");
+}
