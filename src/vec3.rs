@@ -1,12 +1,20 @@
 //! A three-component vector with public fields, generic over its component type.
 
 use crate::Scalar;
-use core::ops::{Add, AddAssign, Div, Mul, Neg, Sub, SubAssign};
+use core::ops::{Add, AddAssign, Div, DivAssign, Mul, MulAssign, Neg, Sub, SubAssign};
 
 /// A point or direction in 3-space: a plain `Copy` struct with no invariant.
 ///
 /// Components are any [`Scalar`] (or the scalar's unit-vector component type inside
 /// the crate). Arithmetic is component-wise; `v * s` scales by a scalar.
+///
+/// Overflow (fixed point only; coordinates within the safe range [`Scalar::LIMIT`] never
+/// overflow a sum or difference of two of them): `+`, `-` and unary `-` are the component
+/// type's own operators, which, as Rust's integers do, panic in debug builds and wrap in
+/// release builds; `*`, `/`, [`dot`](Self::dot), [`cross`](Self::cross) and
+/// [`length`](Self::length) round through the scalar and saturate. Check values that may
+/// grow without bound (a velocity under gravity) with [`try_cast`](Self::try_cast) or keep
+/// them within the range.
 ///
 /// ```
 /// use ballcast::Vec3;
@@ -65,6 +73,37 @@ impl<T> From<Vec3<T>> for [T; 3] {
 impl<S: Scalar> Vec3<S> {
     /// The zero vector.
     pub const ZERO: Self = Self::new(S::ZERO, S::ZERO, S::ZERO);
+    /// The unit vector along x.
+    pub const X: Self = Self::new(S::ONE, S::ZERO, S::ZERO);
+    /// The unit vector along y (up, in this crate's examples).
+    pub const Y: Self = Self::new(S::ZERO, S::ONE, S::ZERO);
+    /// The unit vector along z.
+    pub const Z: Self = Self::new(S::ZERO, S::ZERO, S::ONE);
+
+    /// The distance to `o`: [`length`](Self::length) of the difference (which, for points
+    /// within the safe range, does not overflow).
+    ///
+    /// ```
+    /// use ballcast::Vec3;
+    /// assert_eq!(Vec3::new(1.0f32, 2.0, 3.0).distance(Vec3::new(4.0, 6.0, 3.0)), 5.0);
+    /// ```
+    pub fn distance(self, o: Self) -> S {
+        (o - self).length()
+    }
+
+    /// The point a fraction `t` of the way to `o`: `self * (1 - t) + o * t`, each product
+    /// rounded as [`scale`](Self::scale) rounds, so `t = 0` gives `self` and `t = 1` gives `o`
+    /// exactly (where `self + (o - self) * t` could miss `o` by a rounding).
+    ///
+    /// ```
+    /// use ballcast::Vec3;
+    /// let (a, b) = (Vec3::new(0.0f64, 2.0, -4.0), Vec3::new(1.0, 0.0, 4.0));
+    /// assert_eq!(a.lerp(b, 0.25), Vec3::new(0.25, 1.5, -2.0));
+    /// assert_eq!(a.lerp(b, 1.0), b);
+    /// ```
+    pub fn lerp(self, o: Self, t: S) -> Self {
+        self.scale(S::ONE - t) + o.scale(t)
+    }
 
     /// Every component times `s`, each rounded to nearest through the scalar
     /// ([`Scalar::mul`]): unlike `*` on fixed-point types, which rounds towards −∞, this has no
@@ -230,6 +269,20 @@ impl<S: Scalar> Mul<S> for Vec3<S> {
     type Output = Self;
     fn mul(self, s: S) -> Self {
         self.scale(s)
+    }
+}
+
+/// `v *= s` is `v = v * s`.
+impl<S: Scalar> MulAssign<S> for Vec3<S> {
+    fn mul_assign(&mut self, s: S) {
+        *self = self.scale(s);
+    }
+}
+
+/// `v /= s` is `v = v / s`.
+impl<S: Scalar> DivAssign<S> for Vec3<S> {
+    fn div_assign(&mut self, s: S) {
+        *self = *self / s;
     }
 }
 

@@ -106,6 +106,44 @@ fn conversions_round_trip<S: Tolerance>() {
     assert_eq!(nan, Err(ballcast::Error::NaN { triangle: None }));
 }
 
+/// The axes, `distance`, `lerp` and the compound `*=` and `/=`: against `f64` on the same
+/// rounded inputs, ends of `lerp` exact.
+fn helpers_agree_with_f64<S: Tolerance>() {
+    let (x, y, z) = (Vec3::<S>::X, Vec3::<S>::Y, Vec3::<S>::Z);
+    assert_eq!(x.cross(y), z, "{}", S::NAME);
+    assert_eq!(y.cross(z), x, "{}", S::NAME);
+    assert_eq!(x.length(), S::ONE, "{}", S::NAME);
+    let mut rng = Rng(0x1E7);
+    for _ in 0..10_000 {
+        let (a, b) = (v::<S>(rng.point(100.0)), v::<S>(rng.point(100.0)));
+        let t = S::from_f64(rng.range(0.0, 1.0));
+        let gap = common::norm(common::sub(back(b), back(a)));
+        let err = (a.distance(b).to_f64() - gap).abs();
+        assert!(
+            err <= 2.0 * S::spacing(400.0),
+            "{}: distance {err:e}",
+            S::NAME
+        );
+        assert_eq!(
+            (a.lerp(b, S::ZERO), a.lerp(b, S::ONE)),
+            (a, b),
+            "{}",
+            S::NAME
+        );
+        let exact = common::add(
+            back(a),
+            common::scale(common::sub(back(b), back(a)), t.to_f64()),
+        );
+        let err = common::norm(common::sub(back(a.lerp(b, t)), exact));
+        assert!(err <= 2.0 * S::spacing(400.0), "{}: lerp {err:e}", S::NAME);
+        let (mut m, mut d) = (a, a);
+        m *= t;
+        d /= S::from_f64(rng.range(0.5, 4.0));
+        assert_eq!(m, a * t, "{}", S::NAME);
+        assert_ne!(d, a, "{}", S::NAME);
+    }
+}
+
 macro_rules! per_scalar {
     ($($m:ident: $t:ty),*) => {$(mod $m {
         use super::*;
@@ -120,6 +158,10 @@ macro_rules! per_scalar {
         #[test]
         fn length_saturates() {
             length_saturates_beyond_the_range::<$t>();
+        }
+        #[test]
+        fn helpers() {
+            helpers_agree_with_f64::<$t>();
         }
         #[test]
         fn conversions() {
