@@ -198,7 +198,38 @@ impl<'a, S: Scalar> Mesh<'a, S> {
         order: &mut [u32],
         scratch: &mut [u64],
     ) -> Result<(), MeshError> {
-        let (built, _) = Mesh::build(sources, degenerates, nodes, triangles, order, scratch)?;
+        self.verify_sided(
+            sources,
+            |_| false,
+            degenerates,
+            nodes,
+            triangles,
+            order,
+            scratch,
+        )
+    }
+
+    /// [`verify`](Self::verify) against the mesh [`build_sided`](Self::build_sided) makes.
+    #[allow(clippy::too_many_arguments)]
+    pub fn verify_sided(
+        &self,
+        sources: &[Triangle<S>],
+        two_sided: impl Fn(usize) -> bool,
+        degenerates: Degenerates,
+        nodes: &mut [Node],
+        triangles: &mut [StandardTriangle<S>],
+        order: &mut [u32],
+        scratch: &mut [u64],
+    ) -> Result<(), MeshError> {
+        let (built, _) = Mesh::build_sided(
+            sources,
+            two_sided,
+            degenerates,
+            nodes,
+            triangles,
+            order,
+            scratch,
+        )?;
         let mut pairs = built.triangles.iter().zip(self.triangles);
         let identical = pairs.all(|(a, b)| a.to_parts().identical(&b.to_parts()));
         if built == *self && identical {

@@ -34,14 +34,25 @@ impl<S: Scalar> MeshBuf<S> {
     ///
     /// Errors: those of [`Mesh::build`] (never [`MeshError::Capacity`]).
     pub fn build(sources: &[Triangle<S>], degenerates: Degenerates) -> Result<Self, MeshError> {
+        Self::build_sided(sources, |_| false, degenerates)
+    }
+
+    /// [`build`](Self::build) as [`Mesh::build_sided`] builds: the triangles for which
+    /// `two_sided(index)` holds stop balls from either side.
+    pub fn build_sided(
+        sources: &[Triangle<S>],
+        two_sided: impl Fn(usize) -> bool,
+        degenerates: Degenerates,
+    ) -> Result<Self, MeshError> {
         let n = sources.len();
         let mut nodes = vec![Node::default(); nodes_for(n)];
         let mut triangles = vec![Mesh::<S>::filler(); n];
         let mut order = vec![0u32; n];
         let mut scratch = vec![0u64; 6 * n];
         let (used, kept, grid, skipped) = {
-            let (mesh, skipped) = Mesh::build(
+            let (mesh, skipped) = Mesh::build_sided(
                 sources,
+                two_sided,
                 degenerates,
                 &mut nodes,
                 &mut triangles,

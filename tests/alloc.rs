@@ -10,7 +10,7 @@ use ballcast::import::weld;
 use ballcast::{CompactMesh, Degenerates, Error, MeshBuf, Sweep, Triangle, Vec3};
 use common::{Rng, Tolerance, v};
 use fixed::types::{I16F16, I32F32};
-use meshes::{boxes, build, heightfield, soup, tri};
+use meshes::{boxes, build_sided, heightfield, soup, tri};
 
 /// A welded soup rebuilds the input's triangles bit for bit, shares the corners equal in value
 /// (a `w × w` terrain has `(w + 1)²` vertices), and its compact mesh answers as the prepared
@@ -45,11 +45,20 @@ fn welded_soups_compact<S: Tolerance>() {
         if let Some(n) = expected {
             assert_eq!(vertices.len(), n, "{}", S::NAME);
         }
-        let owned = MeshBuf::build(&input, Degenerates::Skip).unwrap();
+        // Every third triangle two-sided: `MeshBuf::build_sided` as `Mesh::build_sided`.
+        let sided = |i: usize| i.is_multiple_of(3);
+        let owned = MeshBuf::build_sided(&input, sided, Degenerates::Skip).unwrap();
         let mesh = owned.mesh();
-        let reference = build(&input, Degenerates::Skip).unwrap();
+        let reference = build_sided(&input, sided, Degenerates::Skip).unwrap();
         assert_eq!(mesh.nodes(), reference.mesh().nodes(), "{}", S::NAME);
         assert_eq!(mesh.order(), reference.mesh().order(), "{}", S::NAME);
+        let same = mesh.triangles().iter().zip(reference.mesh().triangles());
+        assert!(
+            same.clone().all(|(a, b)| a.to_parts() == b.to_parts()),
+            "{}",
+            S::NAME
+        );
+        assert!(same.clone().any(|(a, _)| a.is_two_sided()), "{}", S::NAME);
         let n = mesh.len();
         let (mut t, mut o, mut b) = (vec![[0u32; 3]; n], vec![0u32; n], vec![0u8; n]);
         let compact =

@@ -1,6 +1,7 @@
 //! `CompactMesh` against the prepared `Mesh` it compacts: the same answers, bit for bit, on
-//! heightfields, closed boxes and soups; buffers too small, indices beyond `u16` and triangles
-//! that are not the mesh's are errors. Every property in every scalar.
+//! heightfields, closed boxes and soups (a fourth of their triangles two-sided); buffers too
+//! small, indices beyond `u16` and triangles that are not the mesh's are errors. Every property
+//! in every scalar.
 
 mod common;
 mod meshes;
@@ -13,7 +14,7 @@ use ballcast::{
 };
 use common::{P, Rng, v};
 use fixed::types::{I16F16, I32F32};
-use meshes::{boxes, build, heightfield, indexed, soup, tri};
+use meshes::{boxes, build, build_sided, heightfield, indexed, soup, tri};
 
 fn matches_prepared_mesh<S: Scalar>() {
     let mut rng = Rng(0xc0_4ac7);
@@ -26,7 +27,8 @@ fn matches_prepared_mesh<S: Scalar>() {
     for (src, half) in shapes {
         let (vertices, indices) = indexed::<S>(&src);
         let input: Vec<_> = src.iter().map(|&t| tri::<S>(t)).collect();
-        let owned = build(&input, Degenerates::Skip).unwrap();
+        // Every fourth triangle two-sided: the compact form keeps the side in its byte.
+        let owned = build_sided(&input, |i: usize| i.is_multiple_of(4), Degenerates::Skip).unwrap();
         let mesh = owned.mesh();
         let n = mesh.len();
         let (mut t, mut o, mut b) = (vec![[0u16; 3]; n], vec![0u16; n], vec![0u8; n]);
@@ -145,7 +147,8 @@ fn box_queries_as_mesh<S: Scalar>() {
     for src in shapes {
         let (vertices, indices) = indexed::<S>(&src);
         let input: Vec<_> = src.iter().map(|&t| tri::<S>(t)).collect();
-        let owned = build(&input, Degenerates::Skip).unwrap();
+        // Every fourth triangle two-sided: the compact form keeps the side in its byte.
+        let owned = build_sided(&input, |i: usize| i.is_multiple_of(4), Degenerates::Skip).unwrap();
         let mesh = owned.mesh();
         let n = mesh.len();
         let (mut t, mut o, mut b) = (vec![[0u16; 3]; n], vec![0u16; n], vec![0u8; n]);

@@ -16,7 +16,8 @@ use ballcast::{
 use common::{P, Rng, v};
 use fixed::types::{I16F16, I32F32};
 use meshes::{
-    against_linear, against_linear_by, boxes, build, heightfield, soup, t_junctions, tri,
+    against_linear, against_linear_by, against_linear_sided, boxes, build, build_sided,
+    heightfield, soup, t_junctions, tri,
 };
 
 fn sweeps_on_all<S: Scalar>(per_shape: usize) {
@@ -267,6 +268,30 @@ fn box_queries_as_linear<S: Scalar>() {
 
 /// The mesh's prepared triangles, features included, are `Scene`'s on the same input.
 fn active_edges_are_scenes<S: Scalar>() {
+    active_edges_are_scenes_sided::<S>(|_| false);
+}
+
+/// As [`active_edges_are_scenes`] with every third triangle two-sided (`build_sided` and
+/// `Scene::push_sided`): the valley rule only between one-sided triangles, the rest alike.
+fn two_sided_active_edges_are_scenes<S: Scalar>() {
+    active_edges_are_scenes_sided::<S>(|i| i.is_multiple_of(3));
+}
+
+/// Mixed sides on heightfields, boxes and soups: the mesh answers as the linear scan of what it
+/// built (whose triangles carry their sides), so the tree's culling allows for balls coming at
+/// a two-sided triangle from behind.
+fn two_sided_as_linear<S: Scalar>() {
+    let mut rng = Rng(0x5eed_2515);
+    for (src, half) in [
+        (heightfield(&mut rng, 10, 1.0, 0.65), 6.0),
+        (boxes(&mut rng, 12, 5.0), 6.0),
+        (soup(&mut rng, 150, 4.0), 5.0),
+    ] {
+        against_linear_sided::<S>(&mut rng, &src, |i| i % 3 != 1, 1500, half);
+    }
+}
+
+fn active_edges_are_scenes_sided<S: Scalar>(sided: fn(usize) -> bool) {
     let mut rng = Rng(0x5eed_0002);
     let mut shapes = vec![
         heightfield(&mut rng, 12, 1.0, 0.65),
@@ -289,10 +314,11 @@ fn active_edges_are_scenes<S: Scalar>() {
     ]);
     for src in shapes {
         let input: Vec<Triangle<S>> = src.iter().map(|&t| tri(t)).collect();
-        let owned = build(&input, Degenerates::Skip).unwrap();
+        let owned = build_sided(&input, sided, Degenerates::Skip).unwrap();
         let mesh = owned.mesh();
         let mut scene: Box<Scene<S, 512>> = Box::default();
-        let pushed: Vec<Option<usize>> = input.iter().map(|t| scene.push(*t).ok()).collect();
+        let push = |(i, t): (usize, &Triangle<S>)| scene.push_sided(*t, sided(i)).ok();
+        let pushed: Vec<Option<usize>> = input.iter().enumerate().map(push).collect();
         let mut inactive = 0;
         for (i, k) in pushed.into_iter().enumerate() {
             let Some(k) = k else {
@@ -619,6 +645,8 @@ meshes::per_scalar!(
     along_a_plane,
     box_queries_as_linear,
     active_edges_are_scenes,
+    two_sided_active_edges_are_scenes,
+    two_sided_as_linear,
     t_junction_seams_as_linear,
     sliding_over_t_junctions_meets_no_edge,
     duplicate_slivers_cover_alike,

@@ -39,6 +39,52 @@ impl<'a, S: Scalar> Mesh<'a, S> {
         order: &'a mut [u32],
         scratch: &mut [u64],
     ) -> Result<(Self, usize), MeshError> {
+        Self::build_sided(
+            sources,
+            |_| false,
+            degenerates,
+            nodes,
+            triangles,
+            order,
+            scratch,
+        )
+    }
+
+    /// [`build`](Self::build) with the triangles for which `two_sided(index)` holds two-sided
+    /// (as [`Scene::push_two_sided`](crate::Scene::push_two_sided) makes them: they stop balls
+    /// from either side, at their edges and vertices too); the same active-edge rules as a
+    /// `Scene` given the same sides. A level exported with mixed winding, thin walls and
+    /// floors seen from below need them: a triangle added a second time reversed stops a ball
+    /// at its face from behind, but not one that passes its plane beside it and comes back at
+    /// an edge from behind.
+    ///
+    /// ```
+    /// use ballcast::{bvh::nodes_for, Degenerates, Mesh, Node, Sweep, Triangle, Vec3};
+    /// let v = Vec3::new;
+    /// // A fence panel in the plane x = 0, two-sided.
+    /// let tris = [
+    ///     Triangle::new(v(0.0f32, 0.0, 0.0), v(0.0, 2.0, 0.0), v(0.0, 2.0, 2.0)),
+    ///     Triangle::new(v(0.0, 0.0, 0.0), v(0.0, 2.0, 2.0), v(0.0, 0.0, 2.0)),
+    /// ];
+    /// let (mut nodes, mut prepared) = ([Node::default(); nodes_for(2)], [Mesh::filler(); 2]);
+    /// let (mut order, mut scratch) = ([0u32; 2], [0u64; 12]);
+    /// let (mesh, _) = Mesh::build_sided(&tris, |_| true, Degenerates::Refuse,
+    ///     &mut nodes, &mut prepared, &mut order, &mut scratch)?;
+    /// for x in [-2.0, 2.0] {
+    ///     let hit = mesh.cast(&Sweep::new(v(x, 1.0, 1.0), v(-x, 1.0, 1.0), 0.5)?).unwrap();
+    ///     assert_eq!(hit.alpha, 0.375); // the centre half a unit from the panel, either way
+    /// }
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    pub fn build_sided(
+        sources: &[Triangle<S>],
+        two_sided: impl Fn(usize) -> bool,
+        degenerates: Degenerates,
+        nodes: &'a mut [Node],
+        triangles: &'a mut [StandardTriangle<S>],
+        order: &'a mut [u32],
+        scratch: &mut [u64],
+    ) -> Result<(Self, usize), MeshError> {
         let n = sources.len();
         if n > MAX_TRIANGLES {
             return Err(MeshError::TooMany);
@@ -61,7 +107,7 @@ impl<'a, S: Scalar> Mesh<'a, S> {
         for (index, t) in sources.iter().enumerate() {
             match StandardTriangle::new(t) {
                 Ok(st) => {
-                    triangles[kept] = st;
+                    triangles[kept] = st.with_two_sided(two_sided(index));
                     order[kept] = index as u32;
                     kept += 1;
                     for p in t.vertices().map(Vec3::to_array) {

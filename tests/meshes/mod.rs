@@ -52,12 +52,29 @@ impl<S: Scalar> Owned<S> {
 }
 
 pub fn build<S: Scalar>(src: &[Triangle<S>], deg: Degenerates) -> Result<Owned<S>, MeshError> {
+    build_sided(src, |_| false, deg)
+}
+
+/// [`build`] with the triangles for which `sided(index)` holds two-sided.
+pub fn build_sided<S: Scalar>(
+    src: &[Triangle<S>],
+    sided: impl Fn(usize) -> bool,
+    deg: Degenerates,
+) -> Result<Owned<S>, MeshError> {
     let n = src.len();
     let mut nodes = vec![Node::default(); nodes_for(n)];
     let mut tris = vec![Mesh::<S>::filler(); n];
     let mut order = vec![0u32; n];
     let mut scratch = vec![0u64; 6 * n];
-    let (mesh, _) = Mesh::build(src, deg, &mut nodes, &mut tris, &mut order, &mut scratch)?;
+    let (mesh, _) = Mesh::build_sided(
+        src,
+        sided,
+        deg,
+        &mut nodes,
+        &mut tris,
+        &mut order,
+        &mut scratch,
+    )?;
     let (used, kept, grid) = (mesh.nodes().len(), mesh.len(), mesh.grid());
     nodes.truncate(used);
     tris.truncate(kept);
@@ -249,7 +266,18 @@ pub fn shapes(rng: &mut Rng) -> [Vec<[P; 3]>; 3] {
 /// Builds the mesh of `src` (skipping degenerates) and checks `sweeps` random sweeps within
 /// ±`half` against the linear scan; long paths, short moves, and paths aimed at vertices.
 pub fn against_linear<S: Scalar>(rng: &mut Rng, src: &[[P; 3]], sweeps: usize, half: f64) {
-    against_linear_by::<S>(rng, src, sweeps, |rng, k| {
+    against_linear_sided::<S>(rng, src, |_| false, sweeps, half);
+}
+
+/// [`against_linear`] on the mesh whose triangles `sided(index)` picks are two-sided.
+pub fn against_linear_sided<S: Scalar>(
+    rng: &mut Rng,
+    src: &[[P; 3]],
+    sided: fn(usize) -> bool,
+    sweeps: usize,
+    half: f64,
+) {
+    against_linear_by_sided::<S>(rng, src, sided, sweeps, |rng, k| {
         let r = match k % 4 {
             0 => 0.0,
             1 => rng.range(0.01, 0.2),
@@ -279,10 +307,21 @@ pub fn against_linear_by<S: Scalar>(
     rng: &mut Rng,
     src: &[[P; 3]],
     sweeps: usize,
+    sweep: impl FnMut(&mut Rng, usize) -> (P, P, f64),
+) {
+    against_linear_by_sided::<S>(rng, src, |_| false, sweeps, sweep);
+}
+
+/// [`against_linear_by`] on the mesh whose triangles `sided(index)` picks are two-sided.
+pub fn against_linear_by_sided<S: Scalar>(
+    rng: &mut Rng,
+    src: &[[P; 3]],
+    sided: fn(usize) -> bool,
+    sweeps: usize,
     mut sweep: impl FnMut(&mut Rng, usize) -> (P, P, f64),
 ) {
     let input: Vec<Triangle<S>> = src.iter().map(|&t| tri(t)).collect();
-    let owned = build(&input, Degenerates::Skip).unwrap();
+    let owned = build_sided(&input, sided, Degenerates::Skip).unwrap();
     let (mesh, reference) = (owned.mesh(), owned.reference());
     let mut hits = 0;
     for k in 0..sweeps {
