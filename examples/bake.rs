@@ -2,7 +2,11 @@
 //! [`ballcast::Mesh`]: the tree's nodes, the prepared triangles and their order, built through
 //! `const` constructors, so firmware keeps the level in flash and does no work at start-up.
 //!
-//! Run: `cargo run --release --example bake -- LEVEL [--scalar f32|f64|i16f16|i32f32] [--radius R]`
+//! Run: `cargo run --release --example bake -- LEVEL [--scalar f32|f64|i16f16|i32f32] [--radius R]
+//! [--two-sided]`
+//!
+//! Triangles of a glTF material marked `doubleSided` are baked two-sided (they stop balls from
+//! both sides); `--two-sided` makes every triangle so (an OBJ file has no such mark).
 //!
 //! Writes the source to stdout (`include!` it in a module; `MESH` is the mesh) and one line of
 //! statistics to stderr: triangles, degenerate ones skipped (by index), nodes, bytes in flash
@@ -15,7 +19,7 @@ use ballcast_level::{Baked, LevelError, bake, load, verdicts};
 use fixed::types::{I16F16, I32F32};
 use std::process::ExitCode;
 
-const USAGE: &str = "usage: bake LEVEL [--scalar f32|f64|i16f16|i32f32] [--radius R]";
+const USAGE: &str = "usage: bake LEVEL [--scalar f32|f64|i16f16|i32f32] [--radius R] [--two-sided]";
 
 fn usage() -> ExitCode {
     eprintln!("{USAGE}");
@@ -25,6 +29,7 @@ fn usage() -> ExitCode {
 fn main() -> ExitCode {
     let mut args = std::env::args().skip(1);
     let (mut path, mut scalar, mut radius) = (None, "i16f16".to_string(), 0.5);
+    let mut two_sided = false;
     while let Some(a) = args.next() {
         match a.as_str() {
             "--scalar" => match args.next() {
@@ -35,6 +40,7 @@ fn main() -> ExitCode {
                 Some(r) if r >= 0.0 => radius = r,
                 _ => return usage(),
             },
+            "--two-sided" => two_sided = true,
             _ if path.is_none() && !a.starts_with("--") => path = Some(a),
             _ => return usage(),
         }
@@ -42,7 +48,7 @@ fn main() -> ExitCode {
     let Some(path) = path else {
         return usage();
     };
-    match run(&path, &scalar, radius) {
+    match run(&path, &scalar, radius, two_sided) {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {
             eprintln!("bake: {e}");
@@ -51,8 +57,16 @@ fn main() -> ExitCode {
     }
 }
 
-fn run(path: &str, scalar: &str, radius: f64) -> Result<(), Box<dyn std::error::Error>> {
-    let level = load(path)?;
+fn run(
+    path: &str,
+    scalar: &str,
+    radius: f64,
+    two_sided: bool,
+) -> Result<(), Box<dyn std::error::Error>> {
+    let mut level = load(path)?;
+    if two_sided {
+        level.two_sided = vec![true; level.triangles.len()];
+    }
     let all: [(&str, Result<Baked, LevelError>); 4] = [
         ("f32", bake::<f32>(&level)),
         ("f64", bake::<f64>(&level)),

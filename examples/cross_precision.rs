@@ -21,7 +21,11 @@ const RADIUS: f64 = 0.25;
 type P = [f64; 3];
 
 /// Every step's position of each scripted ball, in f64, plus the contacts.
-fn roll<S: Scalar>(tris: &[[P; 3]], bar: &ProgressBar) -> Result<(Vec<P>, usize), String> {
+fn roll<S: Scalar>(
+    tris: &[[P; 3]],
+    sides: &[bool],
+    bar: &ProgressBar,
+) -> Result<(Vec<P>, usize), String> {
     let v3 = |p: P| Vec3::new(S::from_f64(p[0]), S::from_f64(p[1]), S::from_f64(p[2]));
     let src: Vec<Triangle<S>> = tris
         .iter()
@@ -30,8 +34,10 @@ fn roll<S: Scalar>(tris: &[[P; 3]], bar: &ProgressBar) -> Result<(Vec<P>, usize)
     let n = src.len();
     let (mut nodes, mut prepared) = (vec![Node::default(); nodes_for(n)], vec![Mesh::filler(); n]);
     let (mut order, mut scratch) = (vec![0u32; n], vec![0u64; 6 * n]);
-    let (mesh, _) = Mesh::build(
+    // Two-sided where the level says so (a glTF material's `doubleSided`), as the bake does.
+    let (mesh, _) = Mesh::build_sided(
         &src,
+        |i| sides.get(i) == Some(&true),
         Degenerates::Skip,
         &mut nodes,
         &mut prepared,
@@ -93,7 +99,7 @@ fn main() {
             std::process::exit(1);
         }
     };
-    let tris = &level.triangles;
+    let (tris, sides) = (&level.triangles, &level.two_sided);
     let extent = tris
         .iter()
         .flatten()
@@ -108,10 +114,10 @@ fn main() {
     let runs: Vec<Result<(Vec<P>, usize), String>> = names
         .par_iter()
         .map(|&name| match name {
-            "f64" => roll::<f64>(tris, &bar),
-            "f32" => roll::<f32>(tris, &bar),
-            "I32F32" => roll::<I32F32>(tris, &bar),
-            _ => roll::<I16F16>(tris, &bar),
+            "f64" => roll::<f64>(tris, sides, &bar),
+            "f32" => roll::<f32>(tris, sides, &bar),
+            "I32F32" => roll::<I32F32>(tris, sides, &bar),
+            _ => roll::<I16F16>(tris, sides, &bar),
         })
         .collect();
     bar.finish_and_clear();

@@ -69,6 +69,8 @@ pub struct Stats {
     pub triangles: usize,
     /// Input indices of the degenerate triangles left out.
     pub skipped: Vec<usize>,
+    /// Two-sided triangles kept.
+    pub two_sided: usize,
     /// Tree nodes.
     pub nodes: usize,
     /// Bytes of the statics: prepared triangles, order and nodes.
@@ -88,11 +90,12 @@ impl fmt::Display for Stats {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         write!(
             f,
-            "{}: {} triangles, {} degenerate skipped {:?}, {} nodes, {} bytes in flash ({:.1} per triangle)",
+            "{}: {} triangles, {} degenerate skipped {:?}, {} two-sided, {} nodes, {} bytes in flash ({:.1} per triangle)",
             self.scalar,
             self.triangles,
             self.skipped.len(),
             self.skipped,
+            self.two_sided,
             self.nodes,
             self.bytes,
             self.per_triangle()
@@ -150,8 +153,9 @@ pub fn triangles<S: Scalar + Emit>(level: &Level) -> Result<Vec<Triangle<S>>, Le
     Ok(out)
 }
 
-/// Bakes `level` for scalar `S`: builds the mesh as [`Mesh::build`] does at run time (degenerate
-/// triangles skipped and listed) and writes it as source.
+/// Bakes `level` for scalar `S`: builds the mesh as [`Mesh::build_sided`] does at run time
+/// (degenerate triangles skipped and listed; the level's two-sided triangles two-sided) and
+/// writes it as source.
 ///
 /// Errors: [`Problem::OutOfRange`], [`Problem::AllDegenerate`] when no triangle is left, or
 /// [`Problem::Mesh`] when the build refuses a triangle.
@@ -170,8 +174,9 @@ pub fn bake<S: Scalar + Emit>(level: &Level) -> Result<Baked, LevelError> {
     let mut prepared = vec![Mesh::<S>::filler(); n];
     let mut order = vec![0u32; n];
     let mut scratch = vec![0u64; 6 * n];
-    let (mesh, _) = Mesh::build(
+    let (mesh, _) = Mesh::build_sided(
         &sources,
+        |i| level.is_two_sided(i),
         Degenerates::Skip,
         &mut nodes,
         &mut prepared,
@@ -195,6 +200,7 @@ pub fn bake<S: Scalar + Emit>(level: &Level) -> Result<Baked, LevelError> {
         scalar: S::NAME,
         triangles: n,
         skipped,
+        two_sided: mesh.triangles().iter().filter(|t| t.is_two_sided()).count(),
         nodes: mesh.nodes().len(),
         bytes: size_of_val(mesh.triangles())
             + size_of_val(mesh.order())

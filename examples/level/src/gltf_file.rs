@@ -16,7 +16,7 @@ fn malformed(m: impl Into<String>) -> Problem {
     Problem::Malformed(m.into())
 }
 
-pub(crate) fn load(path: &Path) -> Result<Vec<Tri>, Problem> {
+pub(crate) fn load(path: &Path) -> Result<(Vec<Tri>, Vec<bool>), Problem> {
     let bytes = std::fs::read(path).map_err(Problem::Io)?;
     let unchecked =
         Gltf::from_slice_without_validation(&bytes).map_err(|e| malformed(e.to_string()))?;
@@ -43,7 +43,7 @@ pub(crate) fn load(path: &Path) -> Result<Vec<Tri>, Problem> {
         .default_scene()
         .or_else(|| gltf.scenes().next())
         .ok_or_else(|| malformed("no scene"))?;
-    let mut out = Vec::new();
+    let mut out = (Vec::new(), Vec::new());
     let mut seen = vec![false; gltf.nodes().count()];
     for node in scene.nodes() {
         walk(&node, IDENTITY, &buffers, &mut out, &mut seen, 0)?;
@@ -123,7 +123,7 @@ fn walk(
     node: &Node,
     parent: Mat,
     buffers: &[Vec<u8>],
-    out: &mut Vec<Tri>,
+    out: &mut (Vec<Tri>, Vec<bool>),
     seen: &mut [bool],
     depth: usize,
 ) -> Result<(), Problem> {
@@ -215,11 +215,13 @@ fn walk(
                     corner(indices[b])?,
                     corner(indices[c])?,
                 ];
-                out.push(if mirrored {
+                out.0.push(if mirrored {
                     [tri[0], tri[2], tri[1]]
                 } else {
                     tri
                 });
+                // A material's `doubleSided` (glTF 2.0, 3.9.6): seen from both sides.
+                out.1.push(prim.material().double_sided());
             }
         }
     }

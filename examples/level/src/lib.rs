@@ -32,6 +32,17 @@ pub struct Level {
     pub path: PathBuf,
     /// The triangles, in world coordinates (glTF node transforms applied).
     pub triangles: Vec<Tri>,
+    /// Per triangle, whether it is two-sided (stops balls from both sides): a glTF material's
+    /// `doubleSided`; never for OBJ, which has no such notion. A triangle without an entry is
+    /// one-sided.
+    pub two_sided: Vec<bool>,
+}
+
+impl Level {
+    /// Whether triangle `index` is two-sided (see [`two_sided`](Self::two_sided)).
+    pub fn is_two_sided(&self, index: usize) -> bool {
+        self.two_sided.get(index).copied().unwrap_or(false)
+    }
 }
 
 /// Why a level could not be loaded or baked: the file and the problem.
@@ -133,8 +144,12 @@ pub fn load(path: impl AsRef<Path>) -> Result<Level, LevelError> {
         .extension()
         .and_then(|e| e.to_str())
         .map(str::to_ascii_lowercase);
-    let triangles = match ext.as_deref() {
-        Some("obj") => obj::load(path),
+    let one_sided = |t: Vec<Tri>| {
+        let n = t.len();
+        (t, vec![false; n])
+    };
+    let (triangles, two_sided) = match ext.as_deref() {
+        Some("obj") => obj::load(path).map(one_sided),
         Some("gltf" | "glb") => gltf_file::load(path),
         _ => Err(Problem::UnknownFormat),
     }
@@ -151,5 +166,6 @@ pub fn load(path: impl AsRef<Path>) -> Result<Level, LevelError> {
     Ok(Level {
         path: path.to_path_buf(),
         triangles,
+        two_sided,
     })
 }

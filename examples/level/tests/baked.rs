@@ -34,8 +34,9 @@ fn equals_run_time_build<S: Scalar + Emit>(
     let mut prepared = vec![Mesh::<S>::filler(); n];
     let mut order = vec![0u32; n];
     let mut scratch = vec![0u64; 6 * n];
-    let verdict = baked.verify(
+    let verdict = baked.verify_sided(
         &sources,
+        |i| level.is_two_sided(i),
         Degenerates::Skip,
         &mut nodes,
         &mut prepared,

@@ -244,3 +244,23 @@ fn a_level_of_only_degenerate_triangles_is_refused() {
     );
     assert!(e.to_string().contains("quads.obj"), "{e}");
 }
+
+/// A glTF material's `doubleSided` makes its triangles two-sided, in the level and in the bake
+/// (the one-sided material's copy of the same triangle stays one-sided).
+#[test]
+fn gltf_double_sided_material_bakes_two_sided() {
+    let level = load(data("double_sided.gltf")).unwrap();
+    assert_eq!(level.triangles.len(), 2);
+    assert_eq!(level.two_sided, vec![true, false]);
+    let baked = bake::<f32>(&level).unwrap();
+    assert_eq!(baked.stats.two_sided, 1);
+    assert!(
+        baked.stats.to_string().contains("1 two-sided"),
+        "{}",
+        baked.stats
+    );
+    // An OBJ file has no such mark.
+    let obj = load(data("quads.obj")).unwrap();
+    assert!(obj.two_sided.iter().all(|&s| !s) && obj.two_sided.len() == obj.triangles.len());
+    assert_eq!(bake::<f32>(&obj).unwrap().stats.two_sided, 0);
+}
