@@ -10,6 +10,14 @@ use std::path::Path;
 
 pub(crate) fn load(path: &Path) -> Result<Vec<Tri>, Problem> {
     let bytes = std::fs::read(path).map_err(Problem::Io)?;
+    // OBJ is text: a binary file (or another encoding) is named as such, at its line.
+    if let Err(e) = std::str::from_utf8(&bytes) {
+        let at = e.valid_up_to();
+        let line = 1 + bytes[..at].iter().filter(|&&b| b == b'\n').count();
+        return Err(Problem::Malformed(format!(
+            "line {line}: not text (byte {at} is not UTF-8): is this an OBJ file?"
+        )));
+    }
     if let Some(fault) = first_fault(&String::from_utf8_lossy(&bytes)) {
         return Err(Problem::Malformed(fault));
     }

@@ -264,3 +264,18 @@ fn gltf_double_sided_material_bakes_two_sided() {
     assert!(obj.two_sided.iter().all(|&s| !s) && obj.two_sided.len() == obj.triangles.len());
     assert_eq!(bake::<f32>(&obj).unwrap().stats.two_sided, 0);
 }
+
+/// A binary file named `.obj` is refused as not text, at its line, instead of the parser's
+/// bare "read error".
+#[test]
+fn binary_junk_named_obj_is_not_text() {
+    let path = std::env::temp_dir().join(format!("ballcast-junk-{}.obj", std::process::id()));
+    std::fs::write(&path, b"v 0 0 0\nv 1 0 0\n\xff\xfe\x00\x01junk\n").unwrap();
+    let e = load(&path).expect_err("binary");
+    std::fs::remove_file(&path).ok();
+    let text = e.to_string();
+    assert!(
+        matches!(e.problem, Problem::Malformed(_)) && text.contains("line 3: not text"),
+        "{text}"
+    );
+}
