@@ -91,9 +91,10 @@ impl<S: Scalar> Vec3<S> {
         (o - self).length()
     }
 
-    /// The point a fraction `t` of the way to `o`: `self * (1 - t) + o * t`, each product
-    /// rounded as [`scale`](Self::scale) rounds, so `t = 0` gives `self` and `t = 1` gives `o`
-    /// exactly (where `self + (o - self) * t` could miss `o` by a rounding).
+    /// The point a fraction `t` of the way to `o`: `self + (o - self) * t`, the product rounded
+    /// as [`scale`](Self::scale) rounds, and `o` itself at `t = 1` (where the sum could miss it
+    /// by a rounding): `t = 0` gives `self`, `t = 1` gives `o` and `a.lerp(a, t)` gives `a`,
+    /// exactly.
     ///
     /// ```
     /// use ballcast::Vec3;
@@ -102,7 +103,11 @@ impl<S: Scalar> Vec3<S> {
     /// assert_eq!(a.lerp(b, 1.0), b);
     /// ```
     pub fn lerp(self, o: Self, t: S) -> Self {
-        self.scale(S::ONE - t) + o.scale(t)
+        if t == S::ONE {
+            o
+        } else {
+            self + (o - self).scale(t)
+        }
     }
 
     /// Every component times `s`, each rounded to nearest through the scalar

@@ -497,6 +497,26 @@ fn i16f16_beyond_32767_columns() {
     );
 }
 
+/// An `I16F16` grid whose heights (17 000 steps of 2) are only in range with an origin far
+/// below the range (y = -32 000): the product of a height and its step saturates before the
+/// origin is added, so the vertices would lie at 768, not at 2 000 where the walk's box
+/// expects them (a ball fell through). Refused, as the origin's height is checked too.
+#[test]
+fn height_products_beyond_the_range_are_refused() {
+    let heights = vec![17_000i16; 9];
+    let mut cells = vec![0u8; 4];
+    let (one, two) = (I16F16::from_num(1), I16F16::from_num(2));
+    let origin = v::<I16F16>([0.0, -32_000.0, 0.0]);
+    let built = Heightfield::build(origin, one, two, 2, 2, &heights, |_, _| false, &mut cells);
+    assert_eq!(
+        built.map(|_| ()),
+        Err(HeightfieldError::OutOfRange {
+            value: 32_000.0,
+            limit: 4096.0
+        })
+    );
+}
+
 /// Parts from elsewhere with sides whose product overflows: wrong answers allowed, no panic.
 #[test]
 fn from_parts_huge_sides_do_not_panic() {

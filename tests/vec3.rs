@@ -130,6 +130,8 @@ fn helpers_agree_with_f64<S: Tolerance>() {
             "{}",
             S::NAME
         );
+        // Between a point and itself, the point (`a (1 - t) + a t` missed it by a rounding).
+        assert_eq!(a.lerp(a, t), a, "{}", S::NAME);
         let exact = common::add(
             back(a),
             common::scale(common::sub(back(b), back(a)), t.to_f64()),

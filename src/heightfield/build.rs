@@ -54,7 +54,9 @@ impl<'a, S: Scalar> Heightfield<'a, S> {
         }
         // The grid's far corner and heights in f64 first: a scalar's conversion saturates.
         let limit = S::LIMIT.to_f64();
-        // The heights' own range (none: zero), so the terrain's box is no taller than it.
+        // The heights' own range (none: zero), so the terrain's box is no taller than it; the
+        // range check takes height 0 too, the origin's: a height's product with the step must
+        // itself stay in range (it is formed before the origin is added).
         let first = heights.first().map_or(0, |&v| v);
         let (lo, hi) = heights
             .iter()
@@ -63,7 +65,7 @@ impl<'a, S: Scalar> Heightfield<'a, S> {
         let (sp, u) = (spacing.to_f64(), unit.to_f64());
         let ends = [
             [o[0], o[0] + sp * w as f64],
-            [o[1] + u * lo as f64, o[1] + u * hi as f64],
+            [o[1] + u * lo.min(0) as f64, o[1] + u * hi.max(0) as f64],
             [o[2], o[2] + sp * h as f64],
         ];
         // Every column and row number must be exact in the scalar (I16F16 stops at 32 767),

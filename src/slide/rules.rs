@@ -69,13 +69,21 @@ pub(super) fn stand_off<S: Scalar>(
 }
 
 /// How far a motion `v`, constrained by planes, may still run into one of them as rounded and
-/// count as running along it: the rounding of a height at its magnitude, plus that of a unit
-/// normal times the push taken off, which grows with the motion (a tie of its magnitude). In
-/// fixed point the first is a constant few steps: without the second a fast landing on a slope
-/// (above about 10 units a second in `I16F16`) had its slide refused and stopped dead.
+/// count as running along it: the rounding of a height at its magnitude, which for floats is
+/// relative and covers a unit normal's rounding times the push taken off too. In fixed point
+/// the height's rounding is a constant few steps, so the normal's (a tie of the motion's
+/// magnitude) is added: without it a fast landing on a slope (above about 10 units a second in
+/// `I16F16`) had its slide refused and stopped dead. Floats get no more: twice their allowance
+/// let a crease candidate of rounding size run into a third plane, and a ball pushed hard into
+/// a corner crept (`corner_pushed_hard_stays_put`).
 pub(super) fn along<S: Scalar>(v: Vec3<S>) -> S {
     let m = magnitude(v);
-    S::height_error(m) + S::mul(m, crate::scalar::tie::<S>())
+    let normal = if S::PRECISION.relative {
+        S::ZERO
+    } else {
+        S::mul(m, crate::scalar::tie::<S>())
+    };
+    S::height_error(m) + normal
 }
 
 /// The largest coordinate magnitude of a point.
