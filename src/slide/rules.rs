@@ -37,8 +37,9 @@ impl<S: Scalar> FloorStop<S> {
 /// other. What is left of the travel after backing off, if no more than `rounding` (the
 /// rounding of a position), is rounding too: a resting ball does not move at all, so float
 /// positions do not walk by an ulp a call. One that started within a skin of the plane stays
-/// where it is (lifted by its motion's approach, a few steps, if the motion runs along the
-/// plane as rounded). One met at once (already touching or overlapping) is lifted by a skin
+/// where it is; if its motion runs along the plane as rounded, it is lifted by the approach
+/// when met within the rounding of a position, and else travels to the contact and is lifted
+/// by a skin there. One met at once (already touching or overlapping) is lifted by a skin
 /// instead.
 pub(super) fn stand_off<S: Scalar>(
     hit: &SceneHit<S>,
@@ -49,12 +50,20 @@ pub(super) fn stand_off<S: Scalar>(
     let into = S::dot(rest, hit.normal);
     let zero = Vec3::ZERO;
     if hit.alpha > S::ZERO && into < S::ZERO {
-        // Along the plane as rounded (it comes closer by no more than the rounding of a height,
-        // as `constrain` leaves a slide) yet met: it started closer than that. Lifted by its
-        // approach, all of it clears the plane; left where it is, it would be met again at
-        // once, call after call.
+        // Along the plane as rounded (it comes closer by no more than `constrain` leaves a
+        // slide) yet met: it started closer than that, or a long slide's approach is more than
+        // the normal in `S` shows. Met within the rounding of a position, it stays, lifted by
+        // its approach: all of it then clears the plane, where left as it was it would be met
+        // again at once, call after call. Met farther on, it travels there and is lifted by a
+        // skin (or the approach, if more): stopped where it was, a slide of tens of units in
+        // `I16F16` met the plane again at each of its sweeps and ended where it started.
         if into >= -along(rest) {
-            return (S::ZERO, hit.normal.scale(-into));
+            return if magnitude(rest).mul(hit.alpha) <= rounding {
+                (S::ZERO, hit.normal.scale(-into))
+            } else {
+                let lift = if -into > skin { -into } else { skin };
+                (hit.alpha, hit.normal.scale(lift))
+            };
         }
         let back = S::div(skin, -into);
         if back >= hit.alpha {

@@ -374,3 +374,50 @@ pub fn stairs<S: Tolerance>(seed: u64, kind: u8, steps: usize) -> Monitor {
     });
     m
 }
+
+/// A ball on a wide slope of normal `n` through the origin (±900), slid `speed` units a call
+/// along it (the slope's direction under (1, 0, 0.3)), pressed `press` into it, turning back
+/// every 600 units: every call must carry it nine tenths of the way, and the monitor
+/// checks it never sinks. Fails a call that ends shorter.
+pub fn long_slide<S: Tolerance>(n: P, speed: f64, press: f64, steps: usize) -> Monitor {
+    let n = unit(n);
+    let helper = if n[2].abs() < 0.9 {
+        [0.0, 0.0, 1.0]
+    } else {
+        [1.0, 0.0, 0.0]
+    };
+    let a = unit(cross(n, helper));
+    let b = cross(n, a);
+    let p = |i: f64, j: f64| add(scale(a, 900.0 * i), scale(b, 900.0 * j));
+    let (p0, p1, p2, p3) = (p(-1.0, -1.0), p(1.0, -1.0), p(1.0, 1.0), p(-1.0, 1.0));
+    let w = World::<S>::new(&[[p0, p1, p2], [p0, p2, p3]], Rigid::IDENTITY);
+    let r = 0.5;
+    let start = back(v::<S>(scale(w.normals[0], r * (1.0 + 1.0 / 1024.0))));
+    let label = format!("slide of {speed} along n {n:.2?} pressed {press}");
+    let mut m = Monitor::new(label, &w, start, r);
+    let along = unit(across([1.0, 0.0, 0.3], n));
+    let turn = ((600.0 / speed) as usize).clamp(1, 40);
+    let (mut at, rs) = (v::<S>(start), S::from_f64(m.r));
+    for k in 0..steps {
+        let dir = if (k / turn).is_multiple_of(2) { speed } else { -speed };
+        let d = v::<S>(add(scale(along, dir), scale(w.normals[0], -press)));
+        match w.step(at, d, rs) {
+            Ok(out) => {
+                let (before, after) = (back(at), back(out.position));
+                m.call(&w, before, after, back(d));
+                let moved = norm(sub(after, before));
+                if moved < 0.9 * speed {
+                    m.fail(format!(
+                        "call {k}: moved {moved:.4} of {speed} from {before:?}"
+                    ));
+                }
+                at = out.position;
+            }
+            Err(e) => {
+                m.refused(e);
+                break;
+            }
+        }
+    }
+    m
+}
