@@ -167,6 +167,22 @@ mod serde_tests {
         );
     }
 
+    /// A vector's component that the scalar cannot hold is refused with its value and where it
+    /// stands in the text: the range check ran after the whole vector had been read, and
+    /// serde_json's message had no position.
+    #[test]
+    fn vec3_value_that_does_not_fit_says_where() {
+        let text = "{\"x\": 0,\n \"y\": 100000,\n \"z\": 0}";
+        assert!(serde_json::from_str::<Vec3<f32>>(text).is_ok());
+        let err = serde_json::from_str::<Vec3<I16F16>>(text).unwrap_err();
+        assert_eq!((err.line(), err.column()), (2, 12), "{err}");
+        let msg = err.to_string();
+        assert!(
+            msg.starts_with("100000 is outside the accepted range"),
+            "{msg}"
+        );
+    }
+
     /// A binary format (CBOR: not human-readable) gets every scalar as an exact pair: an
     /// `I32F32` level beyond f64's 53 bits round-trips bit for bit, and an f32 level reads into
     /// I16F16.

@@ -127,8 +127,28 @@ impl<S: Scalar> Serialize for Vec3<S> {
     }
 }
 
+/// A coordinate read straight into `S`: one that does not fit is refused while the reader is
+/// at it, so a text format's error says where (serde_json: "at line L column C").
+struct Coordinate<S>(S);
+
+impl<'de, S: Scalar> Deserialize<'de> for Coordinate<S> {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        deserialize(d).map(Coordinate)
+    }
+}
+
+/// A vector read straight into `S`, component by component.
+#[derive(Deserialize)]
+#[serde(rename = "Vec3", bound = "S: Scalar")]
+struct TypedVec<S> {
+    x: Coordinate<S>,
+    y: Coordinate<S>,
+    z: Coordinate<S>,
+}
+
 impl<'de, S: Scalar> Deserialize<'de> for Vec3<S> {
     fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
-        RawVec::deserialize(d)?.to().map_err(D::Error::custom)
+        let TypedVec { x, y, z } = TypedVec::deserialize(d)?;
+        Ok(Vec3::new(x.0, y.0, z.0))
     }
 }

@@ -399,7 +399,11 @@ pub fn long_slide<S: Tolerance>(n: P, speed: f64, press: f64, steps: usize) -> M
     let turn = ((600.0 / speed) as usize).clamp(1, 40);
     let (mut at, rs) = (v::<S>(start), S::from_f64(m.r));
     for k in 0..steps {
-        let dir = if (k / turn).is_multiple_of(2) { speed } else { -speed };
+        let dir = if (k / turn).is_multiple_of(2) {
+            speed
+        } else {
+            -speed
+        };
         let d = v::<S>(add(scale(along, dir), scale(w.normals[0], -press)));
         match w.step(at, d, rs) {
             Ok(out) => {
