@@ -136,7 +136,7 @@ pub(super) fn steep_wall<S: Scalar>(n: Vec3<S>, (up, min_cos): (Vec3<S>, S)) -> 
 /// longest of: `v` without its part into one plane, along the crease of two, that moves into
 /// no other plane (beyond rounding), runs along `primal` (the sign of their product taken
 /// exactly) and is larger than the rounding of the normals times `v` (in fixed point, plus
-/// two steps); else zero. The longest is the motion closest to `v` that runs into none of the
+/// two steps; for a crease, over the sine of the angle between its planes); else zero. The longest is the motion closest to `v` that runs into none of the
 /// planes (with one or two of them in the way), whatever order they were touched in. A
 /// candidate that runs against `primal` is passed over: in a corner wider than a right angle,
 /// sliding along one wall leads back out of the corner, while the crease of the two walls leads
@@ -168,8 +168,18 @@ pub(super) fn constrain<S: Scalar>(v: Vec3<S>, planes: &[Vec3<S>], primal: Vec3<
     let creases = planes.iter().enumerate().flat_map(|(i, a)| {
         let lines = planes[i + 1..]
             .iter()
-            .filter_map(|b| unit(cross_unit(*a, *b)));
-        lines.map(|c| c.scale(S::dot(v, c)))
+            .filter_map(|b| S::direction(cross_unit(*a, *b)));
+        lines.map(|(sin, c)| {
+            let c = c.map(S::unit_to_scalar);
+            let w = c.scale(S::dot(v, c));
+            // The crease's direction is uncertain by the normals' rounding over the sine of
+            // their angle: a slide along it no longer than that times `v` is noise.
+            if S::mul(magnitude(w), sin) > noise {
+                w
+            } else {
+                zero
+            }
+        })
     });
     // Of those kept, the one that removes least: each is a projection of `v`, so `v · w` is
     // `|w|²`, and the largest is the closest motion to `v` that runs into no plane. Only one
