@@ -80,6 +80,58 @@ impl<S: Scalar> Vec3<S> {
     /// The unit vector along z.
     pub const Z: Self = Self::new(S::ZERO, S::ZERO, S::ONE);
 
+    /// A vector with every component `s`.
+    pub const fn splat(s: S) -> Self {
+        Self::new(s, s, s)
+    }
+
+    /// The smaller of each pair of components (a NaN in `o` is passed over: `self`'s is kept).
+    pub fn min(self, o: Self) -> Self {
+        let m = |a: S, b: S| if b < a { b } else { a };
+        Self::new(m(self.x, o.x), m(self.y, o.y), m(self.z, o.z))
+    }
+
+    /// The larger of each pair of components (a NaN in `o` is passed over: `self`'s is kept).
+    pub fn max(self, o: Self) -> Self {
+        let m = |a: S, b: S| if b > a { b } else { a };
+        Self::new(m(self.x, o.x), m(self.y, o.y), m(self.z, o.z))
+    }
+
+    /// Every component's magnitude (fixed point: the type's own `abs`, which overflows at its
+    /// most negative value, far outside the safe range).
+    pub fn abs(self) -> Self {
+        self.map(|c| c.abs())
+    }
+
+    /// The squared length: [`dot`](Self::dot) with itself (fixed point saturates beyond the
+    /// type's range: in `I16F16` from a length of about 181; [`length`](Self::length) does not).
+    pub fn length_squared(self) -> S {
+        S::dot(self, self)
+    }
+
+    /// The part of this vector along the unit vector `n`: `n (self · n)`, the dot product
+    /// rounded once and each product as [`scale`](Self::scale) rounds it.
+    pub fn project_onto_normalized(self, n: Self) -> Self {
+        n.scale(S::dot(self, n))
+    }
+
+    /// The part of this vector across the unit vector `n`: `self - n (self · n)`. With `n` a
+    /// floor's normal (e.g. [`Slide::floor_normal`](crate::Slide::floor_normal)), a character's
+    /// wished velocity along the floor.
+    ///
+    /// ```
+    /// use ballcast::Vec3;
+    /// let wish = Vec3::new(2.0f32, 0.0, 1.0);
+    /// let up = Vec3::Y;
+    /// assert_eq!(wish.reject_from_normalized(up), wish);
+    /// let floor = Vec3::new(0.6f32, 0.8, 0.0); // a slope rising along -x
+    /// let along = wish.reject_from_normalized(floor);
+    /// assert!(along.dot(floor).abs() < 1e-6);
+    /// ```
+    pub fn reject_from_normalized(self, n: Self) -> Self {
+        self - self.project_onto_normalized(n)
+    }
+
     /// The distance to `o`: [`length`](Self::length) of the difference (which, for points
     /// within the safe range, does not overflow).
     ///

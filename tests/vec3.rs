@@ -146,6 +146,39 @@ fn helpers_agree_with_f64<S: Tolerance>() {
     }
 }
 
+/// `splat`, `min`, `max`, `abs` exactly as the components are; `length_squared` and the
+/// projections onto and across a unit vector against `f64` on the same rounded inputs.
+fn components_and_projections_agree_with_f64<S: Tolerance>() {
+    let mut rng = Rng(0x9_0C7);
+    for _ in 0..10_000 {
+        let (a, b) = (v::<S>(rng.point(100.0)), v::<S>(rng.point(100.0)));
+        let pick = |f: fn(f64, f64) -> f64| v::<S>([0, 1, 2].map(|i| f(back(a)[i], back(b)[i])));
+        assert_eq!(a.min(b), pick(f64::min), "{}", S::NAME);
+        assert_eq!(a.max(b), pick(f64::max), "{}", S::NAME);
+        assert_eq!(a.abs(), v::<S>(back(a).map(f64::abs)), "{}", S::NAME);
+        let s = S::from_f64(rng.range(-100.0, 100.0));
+        assert_eq!(Vec3::splat(s), Vec3::new(s, s, s), "{}", S::NAME);
+        let small = v::<S>(rng.point(10.0));
+        let sq = common::dot(back(small), back(small));
+        let err = (small.length_squared().to_f64() - sq).abs();
+        assert!(
+            err <= S::spacing(300.0),
+            "{}: length_squared {err:e}",
+            S::NAME
+        );
+        let Some(n) = b.try_normalize() else { continue };
+        let (a64, n64) = (back(a), back(n));
+        let along = common::scale(n64, common::dot(a64, n64));
+        let across = common::sub(a64, along);
+        // The dot product's rounding times the unit vector, and each product's.
+        let tol = 4.0 * S::spacing(200.0);
+        let err = common::norm(common::sub(back(a.project_onto_normalized(n)), along));
+        assert!(err <= tol, "{}: project {err:e}", S::NAME);
+        let err = common::norm(common::sub(back(a.reject_from_normalized(n)), across));
+        assert!(err <= tol, "{}: reject {err:e}", S::NAME);
+    }
+}
+
 macro_rules! per_scalar {
     ($($m:ident: $t:ty),*) => {$(mod $m {
         use super::*;
@@ -164,6 +197,10 @@ macro_rules! per_scalar {
         #[test]
         fn helpers() {
             helpers_agree_with_f64::<$t>();
+        }
+        #[test]
+        fn components_and_projections() {
+            components_and_projections_agree_with_f64::<$t>();
         }
         #[test]
         fn conversions() {
