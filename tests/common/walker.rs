@@ -46,7 +46,7 @@ pub fn walk<S: Scalar, G: Geometry<S>>(
             Some(n) => {
                 let press = Vec3::ZERO - n * g.mul(dt).mul(dt);
                 let pressed = ball.slide(level, p, press).unwrap();
-                vel = wish - n * wish.dot(n);
+                vel = wish.reject_from_normalized(n);
                 let out = ball
                     .step_slide(level, pressed.position, vel * dt, up, walkable, step)
                     .unwrap();
