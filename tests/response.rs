@@ -170,6 +170,72 @@ fn nearly_flat_corner_pushed_hard_keeps_off_a_noisy_crease() {
     assert_all(&all);
 }
 
+/// A ball resting on a level floor a skin up, pressed 0.01 into it and slid 5 steps a call
+/// (`I16F16`, at the origin) or 1e-3 a call (`f32`, at x = 3000), moves the whole way. A rule
+/// that dropped a slide no longer than the rounding of a height left both where they were.
+#[test]
+fn a_slow_pressed_slide_keeps_moving() {
+    fn slide<S: Tolerance>(x: f64, along: f64) {
+        use ballcast::{Scene, Triangle, move_and_slide, slide::skin};
+        let mut floor: Scene<S, 2> = Scene::new();
+        let (a, b) = (
+            common::v([x - 50.0, 0.0, -50.0]),
+            common::v([x + 50.0, 0.0, 50.0]),
+        );
+        for c in [[x - 50.0, 0.0, 50.0], [x + 50.0, 0.0, -50.0]] {
+            floor.push(Triangle::new(a, common::v(c), b)).unwrap();
+        }
+        let r = S::from_f64(0.5);
+        let lift = skin(r, S::from_f64(x.max(1.0))).to_f64();
+        let at = common::v::<S>([x, 0.5 + lift, 0.0]);
+        let d = common::v::<S>([along, -0.01, 0.0]);
+        let moved = (move_and_slide(&floor, at, d, r).unwrap().position.x - at.x).to_f64();
+        // All of it, to within the rounding of the position (an ulp at 3000 in `f32`).
+        let err = (moved - d.x.to_f64()).abs();
+        assert!(err <= S::spacing(x), "{}: slid {moved} of {along}", S::NAME);
+    }
+    slide::<I16F16>(0.0, 5.0 / 65536.0);
+    slide::<I32F32>(0.0, 5.0 / 4294967296.0);
+    slide::<f32>(3000.0, 1e-3);
+}
+
+/// A ball walked along a level floor at 480 Hz under gravity (the plain loop: add gravity,
+/// move, clip the velocity), in `I16F16`: it rests on the floor every frame at a steady height.
+/// Lifted by a whole skin where a press of a few steps met the floor along the walk, it rose
+/// 47 steps and fell back, touching on 107 of 400 frames.
+#[test]
+fn a_walk_pressed_by_gravity_at_480_hz_rests_steadily() {
+    use ballcast::{Scene, Triangle, Vec3, move_and_slide};
+    type S = I16F16;
+    let mut floor: Scene<S, 2> = Scene::new();
+    let (a, b) = (common::v([-50.0, 0.0, -50.0]), common::v([50.0, 0.0, 50.0]));
+    for c in [[-50.0, 0.0, 50.0], [50.0, 0.0, -50.0]] {
+        floor.push(Triangle::new(a, common::v(c), b)).unwrap();
+    }
+    let (r, dt) = (S::from_num(0.5), S::from_num(1.0 / 480.0));
+    for speed in [0.2, 2.0] {
+        let mut p = common::v::<S>([-40.0, 0.5005, 0.0]);
+        let mut vel: Vec3<S> = common::v([speed, 0.0, 0.0]);
+        let mut heights = Vec::new();
+        for k in 0..800 {
+            vel += common::v::<S>([0.0, -9.81, 0.0]) * dt;
+            let out = move_and_slide(&floor, p, vel * dt, r).unwrap();
+            p = out.position;
+            vel = out.clip(vel).unwrap();
+            vel.x = S::from_num(speed);
+            if k >= 400 {
+                assert!(
+                    out.contacts[0].is_some(),
+                    "{speed} u/s: frame {k} in the air"
+                );
+                heights.push((p.y - r).to_bits());
+            }
+        }
+        let (lo, hi) = (heights.iter().min(), heights.iter().max());
+        assert_eq!(lo, hi, "{speed} u/s: heights from {lo:?} to {hi:?} steps");
+    }
+}
+
 /// A ball pushed ten radii a call into a corner of two walls on a floor (seed 2 at 120°,
 /// seed 4 at 60°) stays where it settled. When floats allowed a slide to run into a plane by
 /// twice their rounding of the motion, a crease candidate of rounding size ran into the floor

@@ -361,12 +361,7 @@ fn run<S: Scalar, G: Geometry<S> + ?Sized>(
         rest = if stop.is_some_and(|s| s.stops_at(&hit)) {
             zero
         } else if add_planes(&mut planes, &hit, ball.max_slope) {
-            let w = constrain(left, &planes, displacement);
-            // A slide no longer than the rounding of a position is rounding, as a stop short
-            // of a contact is ([`rules::stand_off`]): added to a float position it would move
-            // a coordinate by an ulp or not at all, the same way call after call (a ball
-            // pushed into a corner crept along its crease by an ulp a call).
-            if magnitude(w) <= rounding { zero } else { w }
+            constrain(left, &planes, displacement)
         } else {
             zero
         };

@@ -37,10 +37,11 @@ impl<S: Scalar> FloorStop<S> {
 /// other. What is left of the travel after backing off, if no more than `rounding` (the
 /// rounding of a position), is rounding too: a resting ball does not move at all, so float
 /// positions do not walk by an ulp a call. One that started within a skin of the plane stays
-/// where it is; if its motion runs along the plane as rounded, it is lifted by the approach
-/// when met within the rounding of a position, and else travels to the contact and is lifted
-/// by a skin there. One met at once (already touching or overlapping) is lifted by a skin
-/// instead.
+/// where it is. A motion that runs along the plane as rounded yet meets it is lifted by its
+/// approach: where it is, if met within the rounding of a position, else at the contact it
+/// travels to, the approach then taken with the normal's rounding times the motion (which a
+/// long slide's approach, measured with the normal in `S`, can hide). One met at once (already
+/// touching or overlapping) is lifted by a skin instead.
 pub(super) fn stand_off<S: Scalar>(
     hit: &SceneHit<S>,
     rest: Vec3<S>,
@@ -52,16 +53,18 @@ pub(super) fn stand_off<S: Scalar>(
     if hit.alpha > S::ZERO && into < S::ZERO {
         // Along the plane as rounded (it comes closer by no more than `constrain` leaves a
         // slide) yet met: it started closer than that, or a long slide's approach is more than
-        // the normal in `S` shows. Met within the rounding of a position, it stays, lifted by
-        // its approach: all of it then clears the plane, where left as it was it would be met
-        // again at once, call after call. Met farther on, it travels there and is lifted by a
-        // skin (or the approach, if more): stopped where it was, a slide of tens of units in
-        // `I16F16` met the plane again at each of its sweeps and ended where it started.
+        // the normal in `S` shows. Lifted by its approach, all of it clears the plane; left as
+        // it was, it would be met again at once, call after call. Met farther on than a
+        // position's rounding, it travels there first: kept where it was, a slide of tens of
+        // units in `I16F16` met the plane again at each of its sweeps and went nowhere. (A
+        // skin's lift there instead made a ball pressed by gravity at 480 Hz hop a skin.)
         if into >= -along(rest) {
             return if magnitude(rest).mul(hit.alpha) <= rounding {
                 (S::ZERO, hit.normal.scale(-into))
             } else {
-                let lift = if -into > skin { -into } else { skin };
+                // The approach as the cast saw it can exceed `into`, measured with the normal
+                // rounded to `S`, by that normal's rounding times the slide.
+                let lift = S::mul(magnitude(rest), crate::scalar::tie::<S>()) - into;
                 (hit.alpha, hit.normal.scale(lift))
             };
         }
@@ -136,8 +139,9 @@ pub(super) fn steep_wall<S: Scalar>(n: Vec3<S>, (up, min_cos): (Vec3<S>, S)) -> 
 /// longest of: `v` without its part into one plane, along the crease of two, that moves into
 /// no other plane (beyond rounding), runs along `primal` (the sign of their product taken
 /// exactly) and is larger than the rounding of the normals times `v` (in fixed point, plus
-/// two steps; for a crease, over the sine of the angle between its planes); else zero. The longest is the motion closest to `v` that runs into none of the
-/// planes (with one or two of them in the way), whatever order they were touched in. A
+/// two steps; for a crease, four times that over the sine of the angle between its planes);
+/// else zero. The longest is the motion closest to `v` that runs into none of the planes
+/// (with one or two of them in the way), whatever order they were touched in. A
 /// candidate that runs against `primal` is passed over: in a corner wider than a right angle,
 /// sliding along one wall leads back out of the corner, while the crease of the two walls leads
 /// down to the floor.
@@ -172,9 +176,12 @@ pub(super) fn constrain<S: Scalar>(v: Vec3<S>, planes: &[Vec3<S>], primal: Vec3<
         lines.map(|(sin, c)| {
             let c = c.map(S::unit_to_scalar);
             let w = c.scale(S::dot(v, c));
-            // The crease's direction is uncertain by the normals' rounding over the sine of
-            // their angle: a slide along it no longer than that times `v` is noise.
-            if S::mul(magnitude(w), sin) > noise {
+            // The crease's direction is uncertain by the normals' rounding, that of the frames
+            // they come from included (in floats a few ulps of one each, eight seen), over the
+            // sine of their angle: a slide along it within four times the noise is noise, and
+            // taken call after call it would creep (an ulp a call into a 120° corner, `f64`).
+            let twice = noise + noise;
+            if S::mul(magnitude(w), sin) > twice + twice {
                 w
             } else {
                 zero
