@@ -37,11 +37,9 @@ impl<S: Scalar> FloorStop<S> {
 /// other. What is left of the travel after backing off, if no more than `rounding` (the
 /// rounding of a position), is rounding too: a resting ball does not move at all, so float
 /// positions do not walk by an ulp a call. One that started within a skin of the plane stays
-/// where it is. A motion that runs along the plane as rounded yet meets it is lifted by its
-/// approach: where it is, if met within the rounding of a position, else at the contact it
-/// travels to, the approach then taken with the normal's rounding times the motion (which a
-/// long slide's approach, measured with the normal in `S`, can hide). One met at once (already
-/// touching or overlapping) is lifted by a skin instead.
+/// where it is (lifted by its motion's approach, a few steps, if the motion runs along the
+/// plane as rounded). One met at once (already touching or overlapping) is lifted by a skin
+/// instead.
 pub(super) fn stand_off<S: Scalar>(
     hit: &SceneHit<S>,
     rest: Vec3<S>,
@@ -51,22 +49,12 @@ pub(super) fn stand_off<S: Scalar>(
     let into = S::dot(rest, hit.normal);
     let zero = Vec3::ZERO;
     if hit.alpha > S::ZERO && into < S::ZERO {
-        // Along the plane as rounded (it comes closer by no more than `constrain` leaves a
-        // slide) yet met: it started closer than that, or a long slide's approach is more than
-        // the normal in `S` shows. Lifted by its approach, all of it clears the plane; left as
-        // it was, it would be met again at once, call after call. Met farther on than a
-        // position's rounding, it travels there first: kept where it was, a slide of tens of
-        // units in `I16F16` met the plane again at each of its sweeps and went nowhere. (A
-        // skin's lift there instead made a ball pressed by gravity at 480 Hz hop a skin.)
+        // Along the plane as rounded (it comes closer by no more than the rounding of a height,
+        // as `constrain` leaves a slide) yet met: it started closer than that. Lifted by its
+        // approach, all of it clears the plane; left where it is, it would be met again at
+        // once, call after call.
         if into >= -along(rest) {
-            return if magnitude(rest).mul(hit.alpha) <= rounding {
-                (S::ZERO, hit.normal.scale(-into))
-            } else {
-                // The approach as the cast saw it can exceed `into`, measured with the normal
-                // rounded to `S`, by that normal's rounding times the slide.
-                let lift = S::mul(magnitude(rest), crate::scalar::tie::<S>()) - into;
-                (hit.alpha, hit.normal.scale(lift))
-            };
+            return (S::ZERO, hit.normal.scale(-into));
         }
         let back = S::div(skin, -into);
         if back >= hit.alpha {
