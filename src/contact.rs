@@ -43,6 +43,10 @@ impl<S: Scalar> StandardTriangle<S> {
     ///   go: nothing is reported until it is clear of the triangle, including what it reaches
     ///   while still overlapping (for a lone triangle, nothing at all). Overlap is never
     ///   reported later along the path.
+    /// - Across an inactive edge (a seam), a centre already below height `r` that comes over
+    ///   the face (the face widened at its seams) within a quarter radius of height `r` meets
+    ///   the face there: the neighbour's frame may have rounded the plane a step higher and
+    ///   seen the centre reach `r` only beyond the seam.
     /// - A ray (radius 0) touches only the face, which includes its boundary.
     /// - The normal is the unit vector from the touched point to the ball's centre.
     ///
@@ -161,7 +165,14 @@ impl<S: Scalar> StandardTriangle<S> {
         if r == S::ZERO || !self.near_path(band, p1, r) || self.beyond_an_edge(band, p1, r) {
             return None;
         }
-        self.edges_and_vertices(p0, d, r)
+        let edge = self.edges_and_vertices(p0, d, r);
+        let from = face.map_or(S::ZERO, |f| f.0);
+        match self.seam_entry(p0, d, r, from) {
+            Some((alpha, key)) if edge.is_none_or(|e| alpha < e.0) => {
+                Some((alpha, None, Contact::Face, key))
+            }
+            _ => edge,
+        }
     }
 
     /// [`cast_front`](Self::cast_front) for a ball moving away from the plane, its centre

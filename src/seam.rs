@@ -2,9 +2,13 @@
 //! standard frames must not open a gap a ball could fall through. The face test therefore
 //! treats each inactive edge as lying a small margin further out, so neighbouring faces overlap
 //! slightly along their seam (a scene merges the two contacts); active edges keep the exact test.
+//! And where a centre already below height `r` crosses a seam into the face, it meets the face
+//! there ([`seam_entry`](StandardTriangle::seam_entry)): the two frames' heights differ by
+//! their rounding, which a path nearly along the plane stretches far beyond any margin.
 
 use crate::scalar::tie;
 use crate::{Scalar, StandardTriangle, Vec3};
+use core::cmp::Ordering;
 
 impl<S: Scalar> StandardTriangle<S> {
     /// Whether `q'` lies inside the triangle once each inactive edge is moved out by
@@ -33,6 +37,70 @@ impl<S: Scalar> StandardTriangle<S> {
                     margin
                 }
             })
+    }
+}
+
+impl<S: Scalar> StandardTriangle<S> {
+    /// Where a centre already below height `r` (in front) comes over the face widened at its
+    /// seams, entering across a seam at alpha `from` or later: the alpha and its unrounded
+    /// fraction. Two neighbours' frames round the plane's height differently (a few steps of
+    /// the coordinates' magnitude), and a path that runs nearly along the plane carries that
+    /// difference far along it: one frame may see the centre reach height `r` beyond the seam,
+    /// the other see it below `r` already, over the first. This frame then meets it as it
+    /// crosses the seam, as an exact plane would have met it at the neighbour's face. Across an
+    /// active edge the edge test meets it first.
+    pub(crate) fn seam_entry(&self, p0: Vec3<S>, d: Vec3<S>, r: S, from: S) -> Option<(S, (S, S))> {
+        if self.features.bits() & 0b111 == 0b111 {
+            return None;
+        }
+        let margin = seam_margin(r);
+        let limit = |i: usize| {
+            if self.features.edge(i) {
+                S::ZERO
+            } else {
+                margin
+            }
+        };
+        let beyond =
+            |p: Vec3<S>, i: usize| S::dot_unit(p - self.corner(i), self.edge(i).out()) - limit(i);
+        // The latest crossing into an edge's half-plane, as `(edge, w0, w0 - w1)`.
+        let mut entry: Option<(usize, S, S)> = None;
+        for i in 0..3 {
+            let w0 = beyond(p0, i);
+            if w0 <= S::ZERO {
+                continue;
+            }
+            let w1 = beyond(p0 + d, i);
+            if w1 >= S::ZERO {
+                return None;
+            }
+            let later =
+                entry.is_none_or(|(_, n, m)| S::mul_cmp(w0, m, n, w0 - w1) == Ordering::Greater);
+            if later {
+                entry = Some((i, w0, w0 - w1));
+            }
+        }
+        let (e, num, den) = entry?;
+        // Only an entry within a quarter radius below height `r` can be one the neighbour's
+        // frame missed: theirs differ by a few roundings of a height, and a radius
+        // `move_and_slide` accepts is sixteen of them. A deeper one follows a contact the
+        // neighbour met (on a path coming down steeply, the common case).
+        let depth = p0.y - r + S::div_pow2(r, 2);
+        if self.features.edge(e) || S::mul_cmp(depth, den, num, -d.y) == Ordering::Less {
+            return None;
+        }
+        let alpha = S::div(num, den);
+        if alpha < from {
+            return None;
+        }
+        let q = p0 + S::scale_fraction(d, num, den, alpha);
+        // `q` lies on the entry's moved line only up to rounding, and edge 2's is a side of the
+        // box that bounds the widening at sharp corners: that box, grown by a margin more.
+        let ((lo, hi), z1) = (self.x_extent(), self.shape().1);
+        let m2 = margin + margin;
+        let boxed = lo - m2 <= q.x && q.x <= hi + m2 && -m2 <= q.z && q.z <= z1 + m2;
+        let inside = (0..3).all(|i| i == e || beyond(Vec3::new(q.x, S::ZERO, q.z), i) <= S::ZERO);
+        (boxed && inside).then_some((alpha, (num, den)))
     }
 }
 
