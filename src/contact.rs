@@ -130,6 +130,7 @@ impl<S: Scalar> StandardTriangle<S> {
                 normal
             },
             contact,
+            frame_extent: self.frame_extent(),
         })
     }
 
