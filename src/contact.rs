@@ -130,7 +130,6 @@ impl<S: Scalar> StandardTriangle<S> {
                 normal
             },
             contact,
-            frame_extent: self.frame_extent(),
         })
     }
 

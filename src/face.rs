@@ -96,7 +96,6 @@ impl<S: Scalar> StandardTriangle<S> {
             position: self.face_position(p0, p1 - p0, r, (r - y0, y1 - y0, alpha), false),
             normal: self.normal(),
             contact: Contact::Face,
-            frame_extent: self.frame_extent(),
         })
     }
 }

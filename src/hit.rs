@@ -43,9 +43,4 @@ pub struct Hit<S> {
     pub normal: Vec3<S>,
     /// The feature touched.
     pub contact: Contact,
-    /// The largest coordinate, in magnitude, of the triangle's vertices in its own standard
-    /// frame ([`StandardTriangle::frame_extent`](crate::StandardTriangle::frame_extent)): the
-    /// frame rounds heights at that magnitude, which a response must stay clear of.
-    #[cfg_attr(feature = "serde", serde(with = "crate::interop::number"))]
-    pub frame_extent: S,
 }

@@ -22,14 +22,14 @@ pub(crate) const TIES: usize = 8;
 /// ball, and a slide uses at most this many.
 pub const PLANES: usize = 4;
 
-/// A tied contact: its triangle's index, alpha, normal, feature and frame extent.
-type Tie<S> = (usize, S, Vec3<S>, Contact, S);
+/// A tied contact: its triangle's index, alpha, normal and feature.
+type Tie<S> = (usize, S, Vec3<S>, Contact);
 
 /// An accumulator for the contacts of one sweep, fed in any order with [`offer`](Self::offer).
 #[derive(Debug)]
 pub(crate) struct Earliest<S: Scalar> {
     best: Option<(usize, Hit<S>)>,
-    /// The tied contacts as `(index, alpha, normal, feature, frame extent)`: all the merge needs, so that a
+    /// The tied contacts as `(index, alpha, normal, feature)`: all the merge needs, so that a
     /// firmware's stack pays for no more.
     ties: Vec<Tie<S>, TIES>,
     /// Set on the second visit: the window no longer moves.
@@ -84,7 +84,7 @@ impl<S: Scalar> Earliest<S> {
         // `insert`: its index assertion would leave a panic path the optimiser cannot remove.)
         if self
             .ties
-            .push((index, hit.alpha, hit.normal, hit.contact, hit.frame_extent))
+            .push((index, hit.alpha, hit.normal, hit.contact))
             .is_ok()
             && let Some(tail) = self.ties.get_mut(at..)
             && !tail.is_empty()
@@ -101,7 +101,6 @@ impl<S: Scalar> Earliest<S> {
                 position,
                 normal,
                 contact,
-                frame_extent: mut extent,
             },
         ) = self.best?;
         // An edge or vertex in the plane of a face touched at the same moment adds nothing but
@@ -110,14 +109,11 @@ impl<S: Scalar> Earliest<S> {
         let face_has = |n: Vec3<S>| {
             self.ties
                 .iter()
-                .any(|&(_, _, m, c, _)| c == Contact::Face && same_plane(m, n))
+                .any(|&(_, _, m, c)| c == Contact::Face && same_plane(m, n))
         };
         let mut planes = [None; PLANES];
         let (mut sum, mut count, mut only) = (Vec3::ZERO, 0, normal);
-        for &(_, _, n, c, e) in &self.ties {
-            if e > extent {
-                extent = e;
-            }
+        for &(_, _, n, c) in &self.ties {
             if c != Contact::Face && face_has(n) {
                 continue;
             }
@@ -140,7 +136,6 @@ impl<S: Scalar> Earliest<S> {
             contact,
             index,
             planes,
-            frame_extent: extent,
         })
     }
 }

@@ -65,10 +65,6 @@ pub struct SceneHit<S> {
     /// index order, nearly parallel ones once): what a response must not move into. The first
     /// is always `Some`.
     pub planes: [Option<Vec3<S>>; PLANES],
-    /// The largest [`Hit::frame_extent`](crate::Hit::frame_extent) of the simultaneous
-    /// contacts: a response keeps its gaps above the rounding of their frames' heights.
-    #[cfg_attr(feature = "serde", serde(with = "crate::interop::number"))]
-    pub frame_extent: S,
 }
 
 /// Up to `N` prepared triangles, stored inline (no allocation), queried together.

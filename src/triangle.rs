@@ -1,7 +1,6 @@
 //! Triangles and their standard frame: the one rigid transform per triangle that the face test
 //! (and every later contact test) runs in.
 
-use crate::scalar::largest;
 use crate::{Error, Features, Scalar, StandardSweep, Sweep, Vec3, check};
 
 /// A triangle as three world-space vertices: a plain `Copy` struct with no invariant.
@@ -334,13 +333,6 @@ impl<S: Scalar> StandardTriangle<S> {
     /// The frame's y axis (the front normal) in unit-vector precision.
     pub(crate) fn up(&self) -> Vec3<S::Unit> {
         self.uy
-    }
-
-    /// The largest coordinate, in magnitude, of the vertices in the standard frame
-    /// (`max(|x1|, z1, x2)`): how far from its origin the frame is used, and so the magnitude at
-    /// which it rounds the heights of points near the triangle.
-    pub fn frame_extent(&self) -> S {
-        largest(self.x1.abs(), self.z1, self.x2)
     }
 
     /// Standardized `x1`, `z1`, `x2`, for the face test.

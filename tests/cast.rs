@@ -310,7 +310,6 @@ fn position_is_precise<S: Tolerance>(cases: usize) -> (f64, f64) {
                 position: Vec3::from(back(h.position)),
                 normal: Vec3::from(back(h.normal)),
                 contact: h.contact,
-                frame_extent: h.frame_extent.to_f64(),
             };
             Some((h, c.r))
         };

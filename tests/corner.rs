@@ -91,9 +91,7 @@ fn pushed_into_an_acute_corner_stays_out_of_the_walls<S: Tolerance>() {
 fn falling_into_a_slot_reaches_the_floor<S: Tolerance>() {
     let (r, dt) = (0.02, 1.0 / 60.0);
     let rs = S::from_f64(r);
-    // The skin kept from the walls, whose frames reach their 6.6-unit diagonals (beyond the
-    // ball's coordinates): taken at 8.
-    let w = r + skin(rs, S::from_f64(8.0)).to_f64() / 4.0;
+    let w = r + skin(rs, S::from_f64(4.0)).to_f64() / 4.0;
     let tris = [
         quad([-3.2, -0.8, -w], [6.4, 0.0, 0.0], [0.0, 1.6, 0.0]),
         quad([-3.2, -0.8, w], [0.0, 1.6, 0.0], [6.4, 0.0, 0.0]),
@@ -111,7 +109,7 @@ fn falling_into_a_slot_reaches_the_floor<S: Tolerance>() {
         p = out.position;
         if landed.is_none()
             && (back(p)[1] - (r - 0.4)).abs()
-                <= 2.0 * S::spacing(1.0) + skin(rs, S::from_f64(8.0)).to_f64()
+                <= 2.0 * S::spacing(1.0) + skin(rs, S::from_f64(4.0)).to_f64()
         {
             landed = Some(frame);
         }

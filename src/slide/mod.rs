@@ -3,9 +3,7 @@
 //! The rules are Quake's fly-move (`SV_FlyMove`, id Software, 1996), kept exact enough for
 //! fixed point:
 //! 1. Sweep the remaining motion; without contact, travel all of it.
-//! 2. Travel to the contact, then step a *skin* off along the contact normal ([`skin`], at the
-//!    larger of the ball's coordinates and the touched frames' extent,
-//!    [`SceneHit::frame_extent`]).
+//! 2. Travel to the contact, then step a *skin* off along the contact normal ([`skin`]).
 //! 3. Collect every plane touched so far in this call, including all planes touched at the same
 //!    moment ([`SceneHit::planes`]): a ball pushed into a corner meets both walls at once.
 //! 4. Constrain what is left of the motion by all of them at once: remove the part into one
@@ -207,9 +205,7 @@ fn slope_limit<S: Scalar>(up: Vec3<S>, min_cos: S) -> Result<(Vec3<S>, S), Error
 
 /// The gap kept between a ball of `radius` and what it touched, for centres within `±extent`:
 /// `radius / 1024` plus twice the rounding of a height there, so that the next sweep does not
-/// meet the same plane again at once through rounding. [`move_and_slide`] takes `extent` as the
-/// larger of the ball's coordinates and the touched triangles' frame extent
-/// ([`SceneHit::frame_extent`]): a frame rounds heights at its own coordinates.
+/// meet the same plane again at once through rounding.
 ///
 /// ```
 /// use ballcast::slide::skin;
@@ -359,7 +355,6 @@ fn run<S: Scalar, G: Geometry<S> + ?Sized>(
             point: hit.position - hit.normal.scale(radius),
             time: elapsed,
         });
-        let skin = ball.skin_from(extent, &hit);
         let alpha = rules::stand_off(&hit, rest, skin, rounding).0;
         out.position = settle(scene, &hit, out.position, rest, (radius, skin), rounding);
         let left = rest.scale(S::ONE - alpha);

@@ -2,7 +2,7 @@
 
 use super::rules::{FloorStop, magnitude};
 use super::{Floor, Slide, run, skin, slope_limit};
-use crate::{Contact, Error, Geometry, Scalar, SceneHit, Sweep, Vec3, check};
+use crate::{Contact, Error, Geometry, Scalar, Sweep, Vec3, check};
 
 /// A ball's settings for [`Slider::slide`]: its radius and, optionally, its own skin and a
 /// slope limit beyond which slopes hold it back like walls.
@@ -96,8 +96,7 @@ impl<S: Scalar> Slider<S> {
         self.radius
     }
 
-    /// The skin used for centres within `±extent` (and contacts whose
-    /// [`frame_extent`](crate::SceneHit::frame_extent) is no more).
+    /// The skin used for centres within `±extent`.
     pub fn skin(&self, extent: S) -> S {
         let floor = skin(S::ZERO, extent);
         match self.skin {
@@ -105,19 +104,6 @@ impl<S: Scalar> Slider<S> {
             Some(_) => floor,
             None => skin(self.radius, extent),
         }
-    }
-
-    /// The skin kept from `hit` for centres within `±extent`: [`skin`](Self::skin) at the
-    /// larger of `extent` and the touched triangles' frame extent. A frame rounds heights at
-    /// its own coordinates, and a lift it sees as no lift leaves the ball touching, met again
-    /// at once by every sweep (a small ball near the origin on a triangle hundreds of units
-    /// across, in `f32`).
-    pub(super) fn skin_from(&self, extent: S, hit: &SceneHit<S>) -> S {
-        self.skin(if hit.frame_extent > extent {
-            hit.frame_extent
-        } else {
-            extent
-        })
     }
 
     /// [`move_and_slide`](super::move_and_slide) with this ball.
@@ -166,8 +152,7 @@ impl<S: Scalar> Slider<S> {
     /// let mut s: Scene<f32, 2> = Scene::new();
     /// s.push(Triangle::new(v(-9.0, 0.0, -9.0), v(-9.0, 0.0, 9.0), v(9.0, 0.0, 0.0)))?;
     /// let (ball, up, walkable) = (Slider::new(0.5)?, v(0.0, 1.0, 0.0), 0.7071);
-    /// // The skin kept from the floor: at its frame's extent (20.1), beyond the ball's coordinates.
-    /// let skin = ball.skin(s.triangle(0).unwrap().frame_extent());
+    /// let skin = ball.skin(1.0);
     /// // 1.5 skins above the floor: a small press misses it, the probe finds it.
     /// let at = v(0.0, 0.5 + 1.5 * skin, 0.0);
     /// let pressed = ball.slide(&s, at, v(0.0, -skin / 4.0, 0.0))?;
