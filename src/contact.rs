@@ -44,9 +44,10 @@ impl<S: Scalar> StandardTriangle<S> {
     ///   while still overlapping (for a lone triangle, nothing at all). Overlap is never
     ///   reported later along the path.
     /// - Across an inactive edge (a seam), a centre already below height `r` that comes over
-    ///   the face (the face widened at its seams) within a quarter radius of height `r` meets
-    ///   the face there: the neighbour's frame may have rounded the plane a step higher and
-    ///   seen the centre reach `r` only beyond the seam.
+    ///   the face (the face widened at its seams) within eight roundings of a height below `r`
+    ///   meets the face there: the neighbour's frame may have rounded the plane a step higher
+    ///   and seen the centre reach `r` only beyond the seam. Deeper, it is an overlap, not
+    ///   reported later along the path.
     /// - A ray (radius 0) touches only the face, which includes its boundary.
     /// - The normal is the unit vector from the touched point to the ball's centre.
     ///

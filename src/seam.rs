@@ -6,7 +6,7 @@
 //! there ([`seam_entry`](StandardTriangle::seam_entry)): the two frames' heights differ by
 //! their rounding, which a path nearly along the plane stretches far beyond any margin.
 
-use crate::scalar::tie;
+use crate::scalar::{largest, tie};
 use crate::{Scalar, StandardTriangle, Vec3};
 use core::cmp::Ordering;
 
@@ -81,11 +81,16 @@ impl<S: Scalar> StandardTriangle<S> {
             }
         }
         let (e, num, den) = entry?;
-        // Only an entry within a quarter radius below height `r` can be one the neighbour's
-        // frame missed: theirs differ by a few roundings of a height, and a radius
-        // `move_and_slide` accepts is sixteen of them. A deeper one follows a contact the
-        // neighbour met (on a path coming down steeply, the common case).
-        let depth = p0.y - r + S::div_pow2(r, 2);
+        // Only an entry within the frames' rounding below height `r` can be one the
+        // neighbour's frame missed: the two heights differ by a rounding of a height each, at
+        // the frames' coordinates (eight allowed). A deeper one is a real overlap (a ball let go
+        // from a valley's other slope) or follows a contact the neighbour met (on a path coming
+        // down steeply, the common case), and is left to the rules for those.
+        let (x1, z1, x2) = self.shape();
+        let m = largest(largest(x1.abs(), z1, x2), p0.x.abs(), p0.z.abs());
+        let h = S::height_error(m);
+        let h4 = h + h + h + h;
+        let depth = p0.y - r + h4 + h4;
         if self.features.edge(e) || S::mul_cmp(depth, den, num, -d.y) == Ordering::Less {
             return None;
         }

@@ -268,8 +268,8 @@ macro_rules! per_scalar {
 }
 
 per_scalar!(
-    f64_: f64, 0x98cb_09be_c4fd_d4f6, 0x6196_8546_95a5_b650;
-    f32_: f32, 0x424a_41da_5e52_f8ef, 0x90af_b138_1c48_78cb;
-    i32f32: I32F32, 0x0763_7759_eb13_a78f, 0x3a9f_60c5_2534_d5fe;
-    i16f16: I16F16, 0x5ca1_6a06_796c_9714, 0x6c4b_a090_d09d_99dd
+    f64_: f64, 0xcdc2_6266_f779_5de4, 0x76e2_1eee_cfbe_5f96;
+    f32_: f32, 0x55fc_8a6f_8fc0_5852, 0x6991_1f7b_43a9_0f8f;
+    i32f32: I32F32, 0x71d9_1b01_9f5e_1d27, 0xea43_6f95_bd8c_cabd;
+    i16f16: I16F16, 0x5a4e_82fa_5bf2_a611, 0x6239_c133_7685_4a93
 );
