@@ -25,10 +25,8 @@ impl<S: Scalar> StandardTriangle<S> {
         let margin = seam_margin(r);
         // Where both edges at a sharp corner are seams, their moved lines meet far beyond it:
         // the triangle's box grown by the margin bounds the widening.
-        let ((lo, hi), z1) = (self.x_extent(), self.shape().1);
-        let boxed = lo - margin <= xq && xq <= hi + margin && -margin <= zq && zq <= z1 + margin;
         let q = Vec3::new(xq, S::ZERO, zq);
-        boxed
+        self.within_box(q, margin)
             && (0..3).all(|i| {
                 let w = S::dot_unit(q - self.corner(i), self.edge(i).out());
                 w <= if self.features.edge(i) {
@@ -38,9 +36,13 @@ impl<S: Scalar> StandardTriangle<S> {
                 }
             })
     }
-}
 
-impl<S: Scalar> StandardTriangle<S> {
+    /// Whether `q` lies in the triangle's box in the x–z plane grown by `grow`.
+    fn within_box(&self, q: Vec3<S>, grow: S) -> bool {
+        let ((lo, hi), z1) = (self.x_extent(), self.shape().1);
+        lo - grow <= q.x && q.x <= hi + grow && -grow <= q.z && q.z <= z1 + grow
+    }
+
     /// Where a centre already below height `r` (in front) comes over the face widened at its
     /// seams, entering across a seam at alpha `from` or later: the alpha and its unrounded
     /// fraction. Two neighbours' frames round the plane's height differently (a few steps of
@@ -101,9 +103,7 @@ impl<S: Scalar> StandardTriangle<S> {
         let q = p0 + S::scale_fraction(d, num, den, alpha);
         // `q` lies on the entry's moved line only up to rounding, and edge 2's is a side of the
         // box that bounds the widening at sharp corners: that box, grown by a margin more.
-        let ((lo, hi), z1) = (self.x_extent(), self.shape().1);
-        let m2 = margin + margin;
-        let boxed = lo - m2 <= q.x && q.x <= hi + m2 && -m2 <= q.z && q.z <= z1 + m2;
+        let boxed = self.within_box(q, margin + margin);
         let inside = (0..3).all(|i| i == e || beyond(Vec3::new(q.x, S::ZERO, q.z), i) <= S::ZERO);
         (boxed && inside).then_some((alpha, (num, den)))
     }
