@@ -126,7 +126,7 @@ impl<S: Scalar> StandardTriangle<S> {
             return at;
         }
         let up = self.up();
-        let h = S::dot_unit(at - self.origin(), up);
+        let h = self.height_of(at);
         let fix = if back { -r - h } else { r - h };
         at + up.map(|u| S::mul_unit(fix, u))
     }

@@ -146,6 +146,7 @@ impl<'a, S: Scalar> Mesh<'a, S> {
             edges: [edge; 3],
             features: Features::ALL.bits(),
             two_sided: false,
+            world_heights: false,
         })
     }
 

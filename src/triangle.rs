@@ -43,6 +43,14 @@ impl<S: Copy> Triangle<S> {
 /// underflow for any accepted triangle. The normal comes from the two shortest edges, whose
 /// cross product suffers the least cancellation, and the axes are then made orthonormal.
 ///
+/// Heights above the plane (standard-frame y) are measured from `v0`, or, for a float triangle
+/// whose `v0` lies within four of its longest edges of the world's origin, from that origin
+/// less the plane's offset ([`Parts::world_heights`]): a float rounds a height at the size of
+/// the offset it is measured along, and so a ball touching the triangle has its height rounded
+/// at no more than its own coordinates (where its skin is taken), while a small scene far from
+/// the origin keeps the precision of its size. Fixed point rounds alike at every magnitude and
+/// always measures from `v0`.
+///
 /// ```
 /// use ballcast::{StandardTriangle, Triangle, Vec3};
 /// // A floor triangle facing up (+y): (v1 - v0) × (v2 - v0) = (0, 0, 1) × (1, 0, 0) = (0, 1, 0).
@@ -71,6 +79,8 @@ pub struct StandardTriangle<S: Scalar> {
     neg_x: S::Unit,
     pub(crate) features: Features,
     pub(crate) two_sided: bool,
+    /// Heights measured from the world's origin, not from `origin` (see [`Parts::world_heights`]).
+    world: bool,
 }
 
 /// Everything a [`StandardTriangle`] is made of, as plain data with public fields: the form in
@@ -108,6 +118,11 @@ pub struct Parts<S: Scalar> {
     pub features: u8,
     /// Whether the back face also stops balls.
     pub two_sided: bool,
+    /// Whether heights above the plane are measured from the world's origin (less the plane's
+    /// offset) rather than from `origin`: set for a float triangle whose first vertex lies
+    /// within four of its longest edges of the world's origin, so that a height rounds at no
+    /// more than the point's own coordinates.
+    pub world_heights: bool,
 }
 
 impl<S: Scalar> Parts<S> {
@@ -193,6 +208,7 @@ impl<S: Scalar> StandardTriangle<S> {
             edges: [self.edge(0), self.edge(1), self.edge(2)],
             features: self.features.bits(),
             two_sided: self.two_sided,
+            world_heights: self.world,
         }
     }
 
@@ -219,6 +235,7 @@ impl<S: Scalar> StandardTriangle<S> {
             neg_x: p.edges[2].dir[0],
             features: Features::from_bits(p.features),
             two_sided: p.two_sided,
+            world: p.world_heights,
         }
     }
 
@@ -273,11 +290,7 @@ impl<S: Scalar> StandardTriangle<S> {
     /// Transforms a validated sweep into the standard frame; the radius is unchanged, and so is
     /// any fraction alpha along the path, since the transform is rigid.
     pub fn standardize(&self, s: &Sweep<S>) -> StandardSweep<S> {
-        StandardSweep {
-            p0: self.standard_point(s.p0()),
-            p1: self.standard_point(s.p1()),
-            radius: s.radius(),
-        }
+        self.standardize_from(s, self.heights(s))
     }
 
     /// The heights of the sweep's ends above the triangle's plane (their standard-frame y):
@@ -287,8 +300,7 @@ impl<S: Scalar> StandardTriangle<S> {
     // costs `I16F16`'s face test on x86-64 about 30 instructions in spilled registers.
     #[cfg_attr(ballcast_no_long_mul, inline(always))]
     pub(crate) fn heights(&self, s: &Sweep<S>) -> (S, S) {
-        let y = |p: Vec3<S>| S::dot_unit(p - self.origin, self.uy);
-        (y(s.p0()), y(s.p1()))
+        frame::heights(self.origin, self.uy, self.world, [s.p0(), s.p1()]).into()
     }
 
     /// [`standardize`](Self::standardize) given the [`heights`](Self::heights) already found.
@@ -307,7 +319,7 @@ impl<S: Scalar> StandardTriangle<S> {
     /// The height of a point within `±LIMIT` above the triangle's plane: the y of
     /// [`standard_point`](Self::standard_point), alone.
     pub(crate) fn height_of(&self, p: Vec3<S>) -> S {
-        S::dot_unit(p - self.origin, self.uy)
+        frame::heights(self.origin, self.uy, self.world, [p])[0]
     }
 
     /// [`to_standard`](Self::to_standard) for a point already known to lie within `±LIMIT`.
@@ -315,7 +327,7 @@ impl<S: Scalar> StandardTriangle<S> {
         let d = p - self.origin;
         Vec3::new(
             S::dot_unit(d, self.ux),
-            S::dot_unit(d, self.uy),
+            self.height_of(p),
             S::dot_unit(d, self.uz),
         )
     }

@@ -121,8 +121,8 @@ fn prepared_hash<S: Scalar>() -> u64 {
 /// Preparing a triangle gives the bits these hashes were taken from: prepared triangles are
 /// baked into flash and pinned in meshes, and peers in lockstep prepare their own, so a change
 /// to any bit of `new` is a change to every baked level and trajectory. Re-pin only for a
-/// deliberate change to the numbers, named in the changelog (the last: the frame's axes
-/// normalised side by side, from scaled cross products).
+/// deliberate change to the numbers, named in the changelog (the last: which origin a float
+/// triangle measures heights from, `Parts::world_heights`).
 #[test]
 fn prepared_triangles_are_bit_identical() {
     let got = [
@@ -135,8 +135,8 @@ fn prepared_triangles_are_bit_identical() {
 }
 
 const PREPARED: [u64; 4] = [
-    0xe96ebf1195f0e8f1,
-    0x811a92a853c5ffa8,
-    0x07c288374d9fb50f,
-    0xeb9b4768ce4c0209,
+    0x4cdd807328b9a622,
+    0xe6807ca7f55d3cb5,
+    0x843991d969db8367,
+    0xd2196be4b8d258c1,
 ];

@@ -18,6 +18,8 @@ pub(crate) struct Frame<S: Scalar> {
     ux: Vec3<S::Unit>,
     uy: Vec3<S::Unit>,
     uz: Vec3<S::Unit>,
+    /// Whether heights are measured from the world's origin (see [`height`]).
+    world: bool,
 }
 
 impl<S: Scalar> Frame<S> {
@@ -40,6 +42,11 @@ impl<S: Scalar> Frame<S> {
         // Only that pair is scaled: a zero edge is always in it (the other two are then equal
         // and opposite, so the longest is the one after it), and gives `Degenerate`.
         let [l0, l1, l2] = edges.map(|e| largest(e.x.abs(), e.y.abs(), e.z.abs()));
+        let world = S::PRECISION.relative && {
+            let longest = largest(l0, l1, l2);
+            largest(t.v0.x.abs(), t.v0.y.abs(), t.v0.z.abs())
+                < longest + longest + longest + longest
+        };
         let (a, b) = if l2 >= l0 && l2 >= l1 {
             (0, 1)
         } else if l0 >= l1 {
@@ -65,20 +72,26 @@ impl<S: Scalar> Frame<S> {
             ux,
             uy,
             uz,
+            world,
         })
     }
 
     /// The heights of the sweep's ends above the plane, as the finished triangle's
     /// [`heights`](StandardTriangle::heights).
     pub(crate) fn heights(&self, s: &Sweep<S>) -> (S, S) {
-        let y = |p: Vec3<S>| S::dot_unit(p - self.origin, self.uy);
-        (y(s.p0()), y(s.p1()))
+        heights(self.origin, self.uy, self.world, [s.p0(), s.p1()]).into()
     }
 
     /// The rest of [`StandardTriangle::new`] for the triangle `t` this frame was found for.
     #[inline(always)]
     pub(crate) fn finish(self, t: &Triangle<S>) -> Result<StandardTriangle<S>, Error> {
-        let Self { origin, ux, uy, uz } = self;
+        let Self {
+            origin,
+            ux,
+            uy,
+            uz,
+            world,
+        } = self;
         let (base, side) = (t.v2 - t.v0, t.v1 - t.v0);
         let (x1, z1, x2) = (
             S::dot_unit(side, ux),
@@ -117,6 +130,36 @@ impl<S: Scalar> Frame<S> {
             neg_x: S::direction_neg_x(x2),
             features: Features::ALL,
             two_sided: false,
+            world,
         })
+    }
+}
+
+/// The heights of `points` above the plane through `origin` with unit normal `uy`.
+///
+/// A height is a dot product of an offset, which a float rounds at the offset's magnitude.
+/// Measured from the frame's origin (a vertex), the offset is the distance to the triangle, and
+/// heights near it stay as precise far from the world's origin as near it. On a triangle as
+/// large as its distance from the world's origin, though, a ball near the world's origin may be
+/// hundreds of units from that vertex: a lift by its skin (taken at its own coordinates) would
+/// vanish in that rounding, and a ball met again at once would never leave. So a float triangle
+/// whose first vertex lies within four of its longest edges of the world's origin (`world`)
+/// measures from there, less the plane's offset `dot(origin, uy)` (a constant per triangle), and
+/// a height rounds at no more than the point's coordinates; one farther away rounds at its
+/// distance from the vertex, which for a ball touching it is under its coordinates. Fixed point
+/// rounds a product alike at every magnitude, and always measures from the vertex.
+#[inline(always)]
+pub(crate) fn heights<S: Scalar, const N: usize>(
+    origin: Vec3<S>,
+    uy: Vec3<S::Unit>,
+    world: bool,
+    points: [Vec3<S>; N],
+) -> [S; N] {
+    // (Fixed point never sets `world`; asking the scalar first lets its code drop the test.)
+    if S::PRECISION.relative && world {
+        let offset = S::dot_unit(origin, uy);
+        points.map(|p| S::dot_unit(p, uy) - offset)
+    } else {
+        points.map(|p| S::dot_unit(p - origin, uy))
     }
 }

@@ -244,10 +244,10 @@ fn write<S: Scalar + Emit>(mesh: &Mesh<S>, level: &Level, stats: &Stats) -> Stri
         o,
         "#[allow(clippy::too_many_arguments)]\n\
          const fn t(origin: [{b}; 3], axes: [[{ub}; 3]; 3], shape: [{b}; 3], normal: [{b}; 3], \
-         dirs: [[{ub}; 2]; 3], lens: [{b}; 3], features: u8, two_sided: bool) -> StandardTriangle<{s}> {{\n    \
+         dirs: [[{ub}; 2]; 3], lens: [{b}; 3], features: u8, two_sided: bool, world_heights: bool) -> StandardTriangle<{s}> {{\n    \
          StandardTriangle::from_parts(Parts {{ origin: v(origin), axes: [w(axes[0]), w(axes[1]), w(axes[2])], \
          shape: [s(shape[0]), s(shape[1]), s(shape[2])], normal: v(normal), \
-         edges: [e(dirs[0], lens[0]), e(dirs[1], lens[1]), e(dirs[2], lens[2])], features, two_sided }})\n}}"
+         edges: [e(dirs[0], lens[0]), e(dirs[1], lens[1]), e(dirs[2], lens[2])], features, two_sided, world_heights }})\n}}"
     );
     let _ = writeln!(
         o,
@@ -291,7 +291,7 @@ fn write<S: Scalar + Emit>(mesh: &Mesh<S>, level: &Level, stats: &Stats) -> Stri
         let lens: Vec<String> = p.edges.iter().map(|e| e.len.bits()).collect();
         let _ = writeln!(
             o,
-            "    t({}, {}, {}, {}, {}, {}, {}, {}),",
+            "    t({}, {}, {}, {}, {}, {}, {}, {}, {}),",
             vs(p.origin),
             list(&axes),
             list(&p.shape.map(S::bits)),
@@ -299,7 +299,8 @@ fn write<S: Scalar + Emit>(mesh: &Mesh<S>, level: &Level, stats: &Stats) -> Stri
             list(&dirs),
             list(&lens),
             p.features,
-            p.two_sided
+            p.two_sided,
+            p.world_heights
         );
     }
     let _ = writeln!(o, "];");
