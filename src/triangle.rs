@@ -300,7 +300,8 @@ impl<S: Scalar> StandardTriangle<S> {
     // costs `I16F16`'s face test on x86-64 about 30 instructions in spilled registers.
     #[cfg_attr(ballcast_no_long_mul, inline(always))]
     pub(crate) fn heights(&self, s: &Sweep<S>) -> (S, S) {
-        frame::heights(self.origin, self.uy, self.world, [s.p0(), s.p1()]).into()
+        let y = |p: Vec3<S>| frame::height(self.origin, self.uy, self.world, p);
+        (y(s.p0()), y(s.p1()))
     }
 
     /// [`standardize`](Self::standardize) given the [`heights`](Self::heights) already found.
@@ -319,7 +320,7 @@ impl<S: Scalar> StandardTriangle<S> {
     /// The height of a point within `±LIMIT` above the triangle's plane: the y of
     /// [`standard_point`](Self::standard_point), alone.
     pub(crate) fn height_of(&self, p: Vec3<S>) -> S {
-        frame::heights(self.origin, self.uy, self.world, [p])[0]
+        frame::height(self.origin, self.uy, self.world, p)
     }
 
     /// [`to_standard`](Self::to_standard) for a point already known to lie within `±LIMIT`.

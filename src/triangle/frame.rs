@@ -79,7 +79,8 @@ impl<S: Scalar> Frame<S> {
     /// The heights of the sweep's ends above the plane, as the finished triangle's
     /// [`heights`](StandardTriangle::heights).
     pub(crate) fn heights(&self, s: &Sweep<S>) -> (S, S) {
-        heights(self.origin, self.uy, self.world, [s.p0(), s.p1()]).into()
+        let y = |p: Vec3<S>| height(self.origin, self.uy, self.world, p);
+        (y(s.p0()), y(s.p1()))
     }
 
     /// The rest of [`StandardTriangle::new`] for the triangle `t` this frame was found for.
@@ -135,7 +136,7 @@ impl<S: Scalar> Frame<S> {
     }
 }
 
-/// The heights of `points` above the plane through `origin` with unit normal `uy`.
+/// The height of `p` above the plane through `origin` with unit normal `uy`.
 ///
 /// A height is a dot product of an offset, which a float rounds at the offset's magnitude.
 /// Measured from the frame's origin (a vertex), the offset is the distance to the triangle, and
@@ -149,17 +150,11 @@ impl<S: Scalar> Frame<S> {
 /// distance from the vertex, which for a ball touching it is under its coordinates. Fixed point
 /// rounds a product alike at every magnitude, and always measures from the vertex.
 #[inline(always)]
-pub(crate) fn heights<S: Scalar, const N: usize>(
-    origin: Vec3<S>,
-    uy: Vec3<S::Unit>,
-    world: bool,
-    points: [Vec3<S>; N],
-) -> [S; N] {
+pub(crate) fn height<S: Scalar>(origin: Vec3<S>, uy: Vec3<S::Unit>, world: bool, p: Vec3<S>) -> S {
     // (Fixed point never sets `world`; asking the scalar first lets its code drop the test.)
     if S::PRECISION.relative && world {
-        let offset = S::dot_unit(origin, uy);
-        points.map(|p| S::dot_unit(p, uy) - offset)
+        S::dot_unit(p, uy) - S::dot_unit(origin, uy)
     } else {
-        points.map(|p| S::dot_unit(p - origin, uy))
+        S::dot_unit(p - origin, uy)
     }
 }
