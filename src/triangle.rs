@@ -44,12 +44,12 @@ impl<S: Copy> Triangle<S> {
 /// cross product suffers the least cancellation, and the axes are then made orthonormal.
 ///
 /// Heights above the plane (standard-frame y) are measured from `v0`, or, for a float triangle
-/// whose `v0` lies within four of its longest edges of the world's origin, from that origin
-/// less the plane's offset ([`Parts::world_heights`]): a float rounds a height at the size of
-/// the offset it is measured along, and so a ball touching the triangle has its height rounded
-/// at no more than its own coordinates (where its skin is taken), while a small scene far from
-/// the origin keeps the precision of its size. Fixed point rounds alike at every magnitude and
-/// always measures from `v0`.
+/// whose `v0` lies within twice its longest edge of the world's origin (both measured by their
+/// largest coordinate), from that origin less the plane's offset ([`Parts::world_heights`]). A
+/// float rounds a height at the size of the offset it is measured along: so the rounding of a
+/// ball's height above a large triangle near the origin stays at the ball's own coordinates
+/// (where its skin is taken), and a small scene far from the origin keeps the precision of its
+/// size. Fixed point rounds alike at every magnitude and always measures from `v0`.
 ///
 /// ```
 /// use ballcast::{StandardTriangle, Triangle, Vec3};
@@ -120,8 +120,8 @@ pub struct Parts<S: Scalar> {
     pub two_sided: bool,
     /// Whether heights above the plane are measured from the world's origin (less the plane's
     /// offset) rather than from `origin`: set for a float triangle whose first vertex lies
-    /// within four of its longest edges of the world's origin, so that a height rounds at no
-    /// more than the point's own coordinates.
+    /// within twice its longest edge of the world's origin (both by their largest coordinate),
+    /// so that a height there rounds at the point's own coordinates.
     pub world_heights: bool,
 }
 

@@ -268,8 +268,8 @@ macro_rules! per_scalar {
 }
 
 per_scalar!(
-    f64_: f64, 0x09e5_e5e5_84c4_f399, 0x3311_78db_8f0e_b714;
-    f32_: f32, 0x133b_a8ee_f92e_cbf2, 0xdbc9_587c_5a83_6ab4;
+    f64_: f64, 0xf276_1447_ed16_cbca, 0xbd16_e972_998e_2067;
+    f32_: f32, 0x37bf_4648_cea9_a089, 0x32e8_0a2e_024a_6975;
     i32f32: I32F32, 0x71d9_1b01_9f5e_1d27, 0xea43_6f95_bd8c_cabd;
     i16f16: I16F16, 0x5a4e_82fa_5bf2_a611, 0x6239_c133_7685_4a93
 );

@@ -44,8 +44,7 @@ impl<S: Scalar> Frame<S> {
         let [l0, l1, l2] = edges.map(|e| largest(e.x.abs(), e.y.abs(), e.z.abs()));
         let world = S::PRECISION.relative && {
             let longest = largest(l0, l1, l2);
-            largest(t.v0.x.abs(), t.v0.y.abs(), t.v0.z.abs())
-                < longest + longest + longest + longest
+            largest(t.v0.x.abs(), t.v0.y.abs(), t.v0.z.abs()) < longest + longest
         };
         let (a, b) = if l2 >= l0 && l2 >= l1 {
             (0, 1)
@@ -139,16 +138,20 @@ impl<S: Scalar> Frame<S> {
 /// The height of `p` above the plane through `origin` with unit normal `uy`.
 ///
 /// A height is a dot product of an offset, which a float rounds at the offset's magnitude.
-/// Measured from the frame's origin (a vertex), the offset is the distance to the triangle, and
-/// heights near it stay as precise far from the world's origin as near it. On a triangle as
-/// large as its distance from the world's origin, though, a ball near the world's origin may be
-/// hundreds of units from that vertex: a lift by its skin (taken at its own coordinates) would
-/// vanish in that rounding, and a ball met again at once would never leave. So a float triangle
-/// whose first vertex lies within four of its longest edges of the world's origin (`world`)
-/// measures from there, less the plane's offset `dot(origin, uy)` (a constant per triangle), and
-/// a height rounds at no more than the point's coordinates; one farther away rounds at its
-/// distance from the vertex, which for a ball touching it is under its coordinates. Fixed point
-/// rounds a product alike at every magnitude, and always measures from the vertex.
+/// Measured from the frame's origin (v0), that is the point's distance from v0, and heights near
+/// a triangle keep the precision of its size wherever it lies. A ball near the world's origin on
+/// a triangle about as large as its distance from there may be hundreds of units from v0,
+/// though: a lift by its skin (taken at the ball's own coordinates) would vanish in that
+/// rounding, and a ball met again at once would never leave. So a float triangle whose v0 lies
+/// within twice its longest edge of the world's origin (both measured by their largest
+/// coordinate; `world`) measures from there, less the plane's offset `dot(v0, uy)`: a height
+/// then rounds at the point's coordinates, plus a constant per triangle (the offset's rounding,
+/// at v0's). Farther out, a ball touching the triangle is no nearer the world's origin than it
+/// is to v0, less its radius, and the rounding at v0 stays within its skin. Neither choice
+/// removes the plane's own error: its rounded normal through v0 strays from the true plane by
+/// the normal's rounding times the distance from v0, and coplanar neighbours with different
+/// first vertices disagree by that much. Fixed point rounds a product alike at every magnitude,
+/// and always measures from v0.
 #[inline(always)]
 pub(crate) fn height<S: Scalar>(origin: Vec3<S>, uy: Vec3<S::Unit>, world: bool, p: Vec3<S>) -> S {
     // (Fixed point never sets `world`; asking the scalar first lets its code drop the test.)
