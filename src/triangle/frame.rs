@@ -147,7 +147,7 @@ impl<S: Scalar> Frame<S> {
 /// coordinate; `world`) measures from there, less the plane's offset `dot(v0, uy)`: a height
 /// then rounds at the point's coordinates, plus a constant per triangle (the offset's rounding,
 /// at v0's). Farther out, a ball touching the triangle is no nearer the world's origin than it
-/// is to v0, less its radius, and the rounding at v0 stays within its skin. Neither choice
+/// is to v0, less twice its radius, and the rounding at v0 stays within its skin. Neither choice
 /// removes the plane's own error: its rounded normal through v0 strays from the true plane by
 /// the normal's rounding times the distance from v0, and coplanar neighbours with different
 /// first vertices disagree by that much. Fixed point rounds a product alike at every magnitude,
