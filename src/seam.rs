@@ -28,13 +28,20 @@ impl<S: Scalar> StandardTriangle<S> {
         let q = Vec3::new(xq, S::ZERO, zq);
         self.within_box(q, margin)
             && (0..3).all(|i| {
-                let w = S::dot_unit(q - self.corner(i), self.edge(i).out());
-                w <= if self.features.edge(i) {
-                    S::ZERO
-                } else {
-                    margin
-                }
+                let (w, limit) = self.seam_line(q, i, margin);
+                w <= limit
             })
+    }
+
+    /// How far `q` lies outside edge `i`'s line in the x–z plane, and how far it may: `margin`
+    /// where the edge is a seam (inactive), zero where it is active.
+    fn seam_line(&self, q: Vec3<S>, i: usize, margin: S) -> (S, S) {
+        let limit = if self.features.edge(i) {
+            S::ZERO
+        } else {
+            margin
+        };
+        (S::dot_unit(q - self.corner(i), self.edge(i).out()), limit)
     }
 
     /// Whether `q` lies in the triangle's box in the x–z plane grown by `grow`.
@@ -56,15 +63,10 @@ impl<S: Scalar> StandardTriangle<S> {
             return None;
         }
         let margin = seam_margin(r);
-        let limit = |i: usize| {
-            if self.features.edge(i) {
-                S::ZERO
-            } else {
-                margin
-            }
+        let beyond = |p: Vec3<S>, i: usize| {
+            let (w, limit) = self.seam_line(p, i, margin);
+            w - limit
         };
-        let beyond =
-            |p: Vec3<S>, i: usize| S::dot_unit(p - self.corner(i), self.edge(i).out()) - limit(i);
         // The latest crossing into an edge's half-plane, as `(edge, w0, w0 - w1)`.
         let mut entry: Option<(usize, S, S)> = None;
         for i in 0..3 {
