@@ -86,17 +86,20 @@ pub(super) fn settle<S: Scalar, G: Geometry<S> + ?Sized>(
     let (alpha, lift) = stand_off(hit, rest, skin, rounding);
     // From the contact's own position (a few steps of `S` off, where alpha's rounding times
     // the path would be more), backed off along the path; or not moved along it at all.
-    let (at, lift) = if alpha == hit.alpha {
-        (hit.position, lift)
+    let at = if alpha == hit.alpha {
+        hit.position
     } else if alpha > S::ZERO {
         return hit.position - rest.scale(hit.alpha - alpha);
-    } else if S::dot((from + lift) - from, hit.normal) < S::div_pow2(S::dot(lift, hit.normal), 1) {
-        // A lift by an approach smaller than the position's rounding is lost (all of it, or all
-        // but a coordinate near zero): the ball would stay touching, met again by every later
-        // move. Lifted by a rounding of a height instead. (Fixed-point adds exactly: never.)
-        (from, hit.normal.scale(rounding))
     } else {
-        (from, lift)
+        from
+    };
+    // A lift (an approach, a skin) smaller than the position's rounding is lost (all of it, or all
+    // but a coordinate near zero): the ball would stay touching, met again by every later
+    // move. Lifted by a rounding of a height instead. (Fixed-point adds exactly: never.)
+    let lift = if S::dot((at + lift) - at, hit.normal) < S::div_pow2(S::dot(lift, hit.normal), 1) {
+        hit.normal.scale(rounding)
+    } else {
+        lift
     };
     lift_from(scene, at, lift, (radius, skin), rounding)
 }

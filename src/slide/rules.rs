@@ -37,9 +37,9 @@ impl<S: Scalar> FloorStop<S> {
 /// other. What is left of the travel after backing off, if no more than `rounding` (the
 /// rounding of a position), is rounding too: a resting ball does not move at all, so float
 /// positions do not walk by an ulp a call. One that started within a skin of the plane stays
-/// where it is (lifted by its motion's approach, a few steps, if the motion runs along the
-/// plane as rounded). One met at once (already touching or overlapping) is lifted by a skin
-/// instead.
+/// where it is. One whose motion runs along the plane as rounded goes on to the contact and is
+/// lifted there by its motion's approach (for floats, at least `rounding`). One met at once (already touching or
+/// overlapping) is lifted by a skin instead.
 pub(super) fn stand_off<S: Scalar>(
     hit: &SceneHit<S>,
     rest: Vec3<S>,
@@ -50,11 +50,23 @@ pub(super) fn stand_off<S: Scalar>(
     let zero = Vec3::ZERO;
     if hit.alpha > S::ZERO && into < S::ZERO {
         // Along the plane as rounded (it comes closer by no more than the rounding of a height,
-        // as `constrain` leaves a slide) yet met: it started closer than that. Lifted by its
-        // approach, all of it clears the plane; left where it is, it would be met again at
-        // once, call after call.
+        // as `constrain` leaves a slide) yet met: the plane as this contact's frame rounds it
+        // lies that much higher than the one slid along (a coplanar neighbour entered at its
+        // seam, whose frame rounds the height a few steps apart at hundreds), or the ball
+        // started that close. It goes on to the contact, with the travel up to it, and is
+        // lifted there by its approach, which clears the plane for the rest: for floats at
+        // least a height's rounding at the ball's coordinates, as the frames round heights
+        // there (fixed point's round at a constant step, which the approach adds exactly).
+        // Put back where it started, it met the same seam on every retry and ended the call
+        // short; lifted less, it met the face again a little farther on.
         if into >= -along(rest) {
-            return (S::ZERO, hit.normal.scale(-into));
+            let least = if S::PRECISION.relative {
+                rounding
+            } else {
+                S::ZERO
+            };
+            let lift = if -into > least { -into } else { least };
+            return (hit.alpha, hit.normal.scale(lift));
         }
         let back = S::div(skin, -into);
         if back >= hit.alpha {
