@@ -38,7 +38,8 @@ impl<S: Scalar> FloorStop<S> {
 /// rounding of a position), is rounding too: a resting ball does not move at all, so float
 /// positions do not walk by an ulp a call. One that started within a skin of the plane stays
 /// where it is. One whose motion runs along the plane as rounded goes on to the contact and is
-/// lifted there by its motion's approach (for floats, at least `rounding`). One met at once (already touching or
+/// lifted there by its motion's approach (at least `rounding` for floats, a step per unit of
+/// the motion left for fixed point). One met at once (already touching or
 /// overlapping) is lifted by a skin instead.
 pub(super) fn stand_off<S: Scalar>(
     hit: &SceneHit<S>,
@@ -54,16 +55,18 @@ pub(super) fn stand_off<S: Scalar>(
         // lies that much higher than the one slid along (a coplanar neighbour entered at its
         // seam, whose frame rounds the height a few steps apart at hundreds), or the ball
         // started that close. It goes on to the contact, with the travel up to it, and is
-        // lifted there by its approach, which clears the plane for the rest: for floats at
-        // least a height's rounding at the ball's coordinates, as the frames round heights
-        // there (fixed point's round at a constant step, which the approach adds exactly).
-        // Put back where it started, it met the same seam on every retry and ended the call
-        // short; lifted less, it met the face again a little farther on.
+        // lifted there by its approach, which clears the plane for the rest, and by at least
+        // what rounding takes off that: for floats a height's rounding at the ball's
+        // coordinates, where the frames round heights; for fixed point, whose heights round
+        // at a constant step that an approach adds exactly, a step per unit of the motion
+        // left: it slides along the normal rounded to `S`, off the frame's by under a step
+        // per unit of length. Put back where it started, it met the same seam on every retry and ended
+        // the call short; lifted less, it met the face again a little farther on, and again.
         if into >= -along(rest) {
             let least = if S::PRECISION.relative {
                 rounding
             } else {
-                S::ZERO
+                magnitude(rest).mul(S::ONE - hit.alpha).mul(S::EPSILON)
             };
             let lift = if -into > least { -into } else { least };
             return (hit.alpha, hit.normal.scale(lift));
