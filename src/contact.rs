@@ -257,7 +257,7 @@ fn facing_away<S: Scalar>(
 fn above_at<S: Scalar>(sweep: &Sweep<S>, (start, end): (S, S), reach: S) -> bool {
     let r = sweep.radius();
     let d = sweep.p1() - sweep.p0();
-    let length = largest(d.x.abs(), d.y.abs(), d.z.abs());
+    let length = d.abs().max_element();
     let m = largest(start.abs(), end.abs(), r);
     let h = S::height_error(largest(m, length, S::ZERO));
     let e = h + h + h + h + tie::<S>().mul(length) + tie::<S>().mul(length);

@@ -13,7 +13,6 @@
 //! short the edge).
 
 use crate::merge::same_plane;
-use crate::scalar::largest;
 use crate::{Scalar, StandardTriangle, Triangle, Vec3};
 
 /// Whether edge `i` of `t` is covered by opposite, collinear edges of flat neighbours among
@@ -175,7 +174,7 @@ fn same_triangle<S: Scalar>(o: &StandardTriangle<S>, t: &StandardTriangle<S>) ->
 /// neighbour's vertex may lie and still count as on it.
 fn tolerance<S: Scalar>(t: &StandardTriangle<S>, i: usize) -> S {
     let o = t.origin();
-    let extent = largest(o.x.abs(), o.y.abs(), o.z.abs());
+    let extent = o.abs().max_element();
     let len = t.edge(i).len;
     let e = S::height_error(if extent > len { extent } else { len });
     e + e + e + e

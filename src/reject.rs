@@ -51,7 +51,7 @@ impl<S: Scalar> StandardTriangle<S> {
     /// (in the x–z plane: a projection only shortens distances, so this is conservative).
     pub(crate) fn vertex_line_misses(&self, i: usize, p0: Vec3<S>, d: Vec3<S>, r: S) -> bool {
         let q = p0 - self.corner(i);
-        let reach = largest(q.x.abs(), q.y.abs(), q.z.abs());
+        let reach = q.abs().max_element();
         S::line_misses([q.x, q.z], [d.x, d.z], r, reach)
     }
 }
@@ -66,7 +66,7 @@ impl<S: Scalar> StandardTriangle<S> {
 fn clipped_beyond<S: Scalar>(a: Vec3<S>, b: Vec3<S>, wa: S, wb: S, r: S) -> bool {
     let extent = largest(
         largest(a.x.abs(), a.z.abs(), r),
-        largest(b.x.abs(), b.y.abs(), b.z.abs()),
+        b.abs().max_element(),
         S::ZERO,
     );
     let h = S::height_error(extent);

@@ -255,7 +255,7 @@ impl<S: Scalar, const N: usize> Scene<S, N> {
 fn reach<S: Scalar>(sweep: &Sweep<S>) -> S {
     let (p0, p1, r) = (sweep.p0(), sweep.p1(), sweep.radius());
     let d = p1 - p0;
-    let steps = tie::<S>().mul(largest(d.x.abs(), d.y.abs(), d.z.abs()));
+    let steps = tie::<S>().mul(d.abs().max_element());
     r + seam_margin(r) + rounding(&[p0, p1, Vec3::new(r, r, r)]) + steps + steps
 }
 
@@ -264,7 +264,7 @@ fn reach<S: Scalar>(sweep: &Sweep<S>) -> S {
 /// query's (the path's in [`reach`], a box's in `visit`) at its: the two add up to the
 /// rounding at the larger of the two.
 fn rounding<S: Scalar>(points: &[Vec3<S>]) -> S {
-    let size = |m: S, p: &Vec3<S>| largest(m, largest(p.x.abs(), p.y.abs(), p.z.abs()), S::ZERO);
+    let size = |m: S, p: &Vec3<S>| largest(m, p.abs().max_element(), S::ZERO);
     let mut e = S::height_error(points.iter().fold(S::ZERO, size));
     for _ in 0..4 {
         e = e + e;

@@ -99,8 +99,21 @@ impl<S: Scalar> Vec3<S> {
 
     /// Every component's magnitude (fixed point: the type's own `abs`, which overflows at its
     /// most negative value, far outside the safe range).
+    #[inline]
     pub fn abs(self) -> Self {
-        self.map(|c| c.abs())
+        Self::new(self.x.abs(), self.y.abs(), self.z.abs())
+    }
+
+    /// The largest component (a NaN after `x` is passed over). With [`abs`](Self::abs), the
+    /// largest coordinate magnitude: the size this crate measures extents and roundings by.
+    ///
+    /// ```
+    /// use ballcast::Vec3;
+    /// assert_eq!(Vec3::new(1.0f32, -4.0, 3.0).abs().max_element(), 4.0);
+    /// ```
+    #[inline]
+    pub fn max_element(self) -> S {
+        crate::scalar::largest(self.x, self.y, self.z)
     }
 
     /// The squared length: [`dot`](Self::dot) with itself (fixed point saturates beyond the

@@ -146,7 +146,7 @@ fn helpers_agree_with_f64<S: Tolerance>() {
     }
 }
 
-/// `splat`, `min`, `max`, `abs` exactly as the components are; `length_squared` and the
+/// `splat`, `min`, `max`, `abs`, `max_element` exactly as the components are; `length_squared` and the
 /// projections onto and across a unit vector against `f64` on the same rounded inputs.
 fn components_and_projections_agree_with_f64<S: Tolerance>() {
     let mut rng = Rng(0x9_0C7);
@@ -156,6 +156,8 @@ fn components_and_projections_agree_with_f64<S: Tolerance>() {
         assert_eq!(a.min(b), pick(f64::min), "{}", S::NAME);
         assert_eq!(a.max(b), pick(f64::max), "{}", S::NAME);
         assert_eq!(a.abs(), v::<S>(back(a).map(f64::abs)), "{}", S::NAME);
+        let most = back(a).into_iter().fold(f64::NEG_INFINITY, f64::max);
+        assert_eq!(a.max_element().to_f64(), most, "{}", S::NAME);
         let s = S::from_f64(rng.range(-100.0, 100.0));
         assert_eq!(Vec3::splat(s), Vec3::new(s, s, s), "{}", S::NAME);
         let small = v::<S>(rng.point(10.0));

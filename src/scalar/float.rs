@@ -14,7 +14,7 @@ macro_rules! float_scalar {
         #[cold]
         #[inline(never)]
         fn $tiny(v: Vec3<$t>) -> Option<($t, Vec3<$t>)> {
-            let m = largest(v.x.abs(), v.y.abs(), v.z.abs());
+            let m = v.abs().max_element();
             if m.is_nan() || m <= 0.0 {
                 return None;
             }
@@ -79,7 +79,7 @@ macro_rules! float_scalar {
             }
             #[inline]
             fn scaled(v: Vec3<Self>) -> Option<Vec3<Self>> {
-                let m = largest(v.x.abs(), v.y.abs(), v.z.abs());
+                let m = v.abs().max_element();
                 if m.is_nan() || m <= 0.0 {
                     return None;
                 }
@@ -93,7 +93,7 @@ macro_rules! float_scalar {
             #[inline(always)]
             fn scaled_cross(a: Vec3<Self>, b: Vec3<Self>) -> Option<Vec3<Self>> {
                 let c = crate::vec3::cross(a, b);
-                let m = largest(c.x.abs(), c.y.abs(), c.z.abs());
+                let m = c.abs().max_element();
                 if m.is_nan() || m < 1024.0 * <$t>::EPSILON {
                     return None;
                 }

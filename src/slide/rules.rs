@@ -103,7 +103,7 @@ pub(super) fn along<S: Scalar>(v: Vec3<S>) -> S {
 
 /// The largest coordinate magnitude of a point.
 pub(super) fn magnitude<S: Scalar>(p: Vec3<S>) -> S {
-    crate::scalar::largest(p.x.abs(), p.y.abs(), p.z.abs())
+    p.abs().max_element()
 }
 
 /// Adds a contact's planes to those already touched, each distinct plane once, and, with a

@@ -41,10 +41,10 @@ impl<S: Scalar> Frame<S> {
         // (v1-v0)×(v2-v0) = e0×e1 = e1×e2 = e2×e0: use the pair that leaves out the longest edge.
         // Only that pair is scaled: a zero edge is always in it (the other two are then equal
         // and opposite, so the longest is the one after it), and gives `Degenerate`.
-        let [l0, l1, l2] = edges.map(|e| largest(e.x.abs(), e.y.abs(), e.z.abs()));
+        let [l0, l1, l2] = edges.map(|e| e.abs().max_element());
         let world = S::PRECISION.relative && {
             let longest = largest(l0, l1, l2);
-            largest(t.v0.x.abs(), t.v0.y.abs(), t.v0.z.abs()) < longest + longest
+            t.v0.abs().max_element() < longest + longest
         };
         let (a, b) = if l2 >= l0 && l2 >= l1 {
             (0, 1)
