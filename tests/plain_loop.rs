@@ -103,6 +103,49 @@ fn walking_on_a_slope_at_high_frame_rates_never_freezes<S: Tolerance>() {
     }
 }
 
+/// A ball resting on a tilted plane far from the origin, pressed onto it by gravity along its
+/// normal at 480 Hz (the plain loop: gravity added, one move, the velocity clipped). In
+/// `I16F16` each frame's press is a few steps, rounded to a vector a step or so off the normal,
+/// and it meets the plane partway: carried to that contact (the travel a step of rounding
+/// sideways) and lifted, it crept down the plane a step every few frames, 3 mm/s (n (0.3, 1,
+/// -0.2), r 0.05, centre (300, 7, -201): 0.157 in 30 000 frames). It stays put.
+fn pressed_onto_a_far_tilted_plane_at_480_hz_stays_put<S: Tolerance>() {
+    let unit = |p: common::P| common::scale(p, 1.0 / common::norm(p));
+    let n = unit([0.3, 1.0, -0.2]);
+    let a = unit(common::cross(n, [0.0, 0.0, 1.0]));
+    let b = common::cross(n, a);
+    let centre = [300.3, 7.1, -200.7];
+    let corner = common::add(centre, common::scale(common::add(a, b), -30.0));
+    let mut level: ballcast::Scene<S, 2> = ballcast::Scene::new();
+    for t in common::quad(corner, common::scale(a, 60.0), common::scale(b, 60.0)) {
+        level
+            .push(ballcast::Triangle::new(v(t[0]), v(t[1]), v(t[2])))
+            .unwrap();
+    }
+    let r = 0.05;
+    let ball = Slider::new(S::from_f64(r)).unwrap();
+    let (dt, g) = (S::from_f64(1.0 / 480.0), v::<S>(common::scale(n, -9.81)));
+    let mut p = v::<S>(common::add(centre, common::scale(n, r + 0.01)));
+    let mut vel = v::<S>([0.0; 3]);
+    let mut settled = common::back(p);
+    for frame_no in 0..3_500 {
+        vel += g * dt;
+        let out = ball.slide(&level, p, vel * dt).unwrap();
+        p = out.position;
+        vel = ball.clip(&out, vel).unwrap();
+        if frame_no == 500 {
+            settled = common::back(p);
+        }
+    }
+    let d = common::sub(common::back(p), settled);
+    let along = common::norm(common::sub(d, common::scale(n, common::dot(d, n))));
+    assert!(
+        along <= 2.0 * S::spacing(400.0),
+        "{}: crept {along:e} along the plane in 3 000 frames",
+        S::NAME
+    );
+}
+
 macro_rules! per_scalar {
     ($($m:ident: $t:ty),*) => {$(mod $m {
         #[allow(unused_imports)]
@@ -110,6 +153,10 @@ macro_rules! per_scalar {
         #[test]
         fn running_on_a_floor_at_480_hz_stays_grounded() {
             super::running_on_a_floor_at_480_hz_stays_grounded::<$t>()
+        }
+        #[test]
+        fn pressed_onto_a_far_tilted_plane_at_480_hz_stays_put() {
+            super::pressed_onto_a_far_tilted_plane_at_480_hz_stays_put::<$t>()
         }
         #[test]
         fn walking_on_a_slope_at_high_frame_rates_never_freezes() {

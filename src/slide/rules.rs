@@ -36,11 +36,12 @@ impl<S: Scalar> FloorStop<S> {
 /// into a corner settles at a skin from both walls instead of being levered from one to the
 /// other. What is left of the travel after backing off, if no more than `rounding` (the
 /// rounding of a position), is rounding too: a resting ball does not move at all, so float
-/// positions do not walk by an ulp a call. One that started within a skin of the plane stays
-/// where it is. One whose motion runs along the plane as rounded goes on to the contact and is
-/// lifted there by its motion's approach (at least `rounding` for floats, a step per unit of
-/// the motion left for fixed point). One met at once (already touching or
-/// overlapping) is lifted by a skin instead.
+/// positions do not walk by an ulp a call. One whose motion runs along the plane as rounded
+/// goes on to the contact (unless that travel is rounding too) and is lifted there by its
+/// motion's approach: at least `rounding` for floats; for fixed point, at least a step per
+/// unit of the motion left (its largest coordinate). Any other that started within a skin of
+/// the plane stays where it is. One met at once (already touching or overlapping) is lifted by
+/// a skin instead.
 pub(super) fn stand_off<S: Scalar>(
     hit: &SceneHit<S>,
     rest: Vec3<S>,
@@ -54,14 +55,17 @@ pub(super) fn stand_off<S: Scalar>(
         // as `constrain` leaves a slide) yet met: the plane as this contact's frame rounds it
         // lies that much higher than the one slid along (a coplanar neighbour entered at its
         // seam, whose frame rounds the height a few steps apart at hundreds), or the ball
-        // started that close. It goes on to the contact, with the travel up to it, and is
-        // lifted there by its approach, which clears the plane for the rest, and by at least
-        // what rounding takes off that: for floats a height's rounding at the ball's
-        // coordinates, where the frames round heights; for fixed point, whose heights round
-        // at a constant step that an approach adds exactly, a step per unit of the motion
-        // left: it slides along the normal rounded to `S`, off the frame's by under a step
-        // per unit of length. Put back where it started, it met the same seam on every retry and ended
+        // started that close (in fixed point at a few hundred hertz, a resting ball pressed by
+        // gravity a few steps a frame). It goes on to the contact, with the travel up to it,
+        // and is lifted there by its approach, which clears the plane for the rest, and by at
+        // least what rounding takes off that: for floats a height's rounding at the ball's
+        // coordinates, where the frames round heights; for fixed point, whose heights round at
+        // a constant step that an approach adds exactly, a step per unit of the motion left
+        // (it slides along the normal rounded to `S`, off the frame's by under a step per unit
+        // of length). Put back where it started, it met the same seam on every retry and ended
         // the call short; lifted less, it met the face again a little farther on, and again.
+        // Travel to the contact of no more than a position's rounding is rounding too: carried
+        // a step sideways every frame, a resting ball crept.
         if into >= -along(rest) {
             let least = if S::PRECISION.relative {
                 rounding
@@ -69,7 +73,11 @@ pub(super) fn stand_off<S: Scalar>(
                 magnitude(rest).mul(S::ONE - hit.alpha).mul(S::EPSILON)
             };
             let lift = if -into > least { -into } else { least };
-            return (hit.alpha, hit.normal.scale(lift));
+            let settled = magnitude(rest).mul(hit.alpha) <= rounding;
+            return (
+                if settled { S::ZERO } else { hit.alpha },
+                hit.normal.scale(lift),
+            );
         }
         let back = S::div(skin, -into);
         if back >= hit.alpha {
