@@ -3,8 +3,8 @@
 
 mod common;
 
-use ballcast::{Scene, Triangle, move_and_slide};
-use common::{P, Rng, Tolerance, back, v};
+use ballcast::{Scene, Triangle};
+use common::{Rng, Tolerance, to_and_fro, v};
 
 /// A ball slid 20 to 50 a call back and forth along a tilted plane of two triangles 2 000
 /// across, pressed 1e-2 or 1e-4 into it. Its slide runs along the contact's normal as the
@@ -15,16 +15,9 @@ use common::{P, Rng, Tolerance, back, v};
 /// (`I16F16`, 480 planes of 300 calls each: 176 to 1 173 of 144 000 calls short at r 0.05 to 2).
 /// Every call now travels all but the press.
 fn a_fast_slide_along_a_tilted_plane_keeps_its_travel<S: Tolerance>(r: f64, press: f64) {
-    let unit = |p: P| common::scale(p, 1.0 / common::norm(p));
     let mut rng = Rng(0xFA57_511D);
     for plane in 0..48 {
-        let n = unit([
-            rng.range(-1.0, 1.0),
-            rng.range(0.3, 1.0),
-            rng.range(-1.0, 1.0),
-        ]);
-        let a = unit(common::cross(n, [0.0, 0.0, 1.0]));
-        let b = common::cross(n, a);
+        let [n, a, b] = to_and_fro::tilted(&mut rng);
         let o = common::scale(common::add(a, b), -1000.0);
         let mut scene: Scene<S, 2> = Scene::new();
         for t in common::quad(o, common::scale(a, 2000.0), common::scale(b, 2000.0)) {
@@ -33,28 +26,15 @@ fn a_fast_slide_along_a_tilted_plane_keeps_its_travel<S: Tolerance>(r: f64, pres
                 .unwrap();
         }
         let step = rng.range(20.0, 50.0);
-        let dir = unit(common::add(a, common::scale(b, rng.range(-1.0, 1.0))));
-        let start = common::scale(dir, -10.0 * step);
-        let mut p = v::<S>(common::add(
-            common::scale(n, r * (1.0 + 1.0 / 1024.0)),
-            start,
-        ));
-        for k in 0..100 {
-            let way = if (k / 20) % 2 == 0 { step } else { -step };
-            let d = v::<S>(common::sub(
-                common::scale(dir, way),
-                common::scale(n, press),
-            ));
-            let out = move_and_slide(&scene, p, d, S::from_f64(r)).unwrap();
-            let moved = common::norm(common::sub(back(out.position), back(p)));
-            assert!(
-                moved >= step * 0.999,
-                "{}: r {r}, press {press}, plane {plane}, call {k} moved {moved} of {step} from {:?}",
-                S::NAME,
-                back(p)
-            );
-            p = out.position;
-        }
+        let label = format!("plane {plane}");
+        to_and_fro::keeps_travel::<S, _>(
+            &scene,
+            [n, a, b],
+            (r, step, press),
+            100,
+            &mut rng,
+            &label,
+        );
     }
 }
 

@@ -5,7 +5,7 @@
 mod common;
 
 use ballcast::{Scene, Sweep, Triangle, Vec3, move_and_slide};
-use common::{P, Rng, Tolerance, back, v};
+use common::{P, Rng, Tolerance, back, to_and_fro, v};
 use fixed::types::{I16F16, I32F32};
 
 /// Planes per radius in `a_slide_over_the_seams_of_big_coplanar_cells_keeps_its_travel`.
@@ -141,16 +141,9 @@ fn f32_press_on_the_shared_diagonal_of_far_triangles_meets_a_face() {
 /// four cells meet at one vertex a call can still be stopped (4 of those 144 000 at r 0.003:
 /// four contacts met at once there use up its sweeps).
 fn a_slide_over_the_seams_of_big_coplanar_cells_keeps_its_travel<S: Tolerance>(r: f64) {
-    let unit = |p: P| common::scale(p, 1.0 / common::norm(p));
     let mut rng = Rng(0x5EA4);
     for plane in 0..PLANES {
-        let n = unit([
-            rng.range(-1.0, 1.0),
-            rng.range(0.3, 1.0),
-            rng.range(-1.0, 1.0),
-        ]);
-        let a = unit(common::cross(n, [0.0, 0.0, 1.0]));
-        let b = common::cross(n, a);
+        let [n, a, b] = to_and_fro::tilted(&mut rng);
         let corners: &[(f64, f64)] = match plane % 2 {
             0 => &[(-0.5, -0.5)],
             _ => &[(-1.0, -1.0), (0.0, -1.0), (-1.0, 0.0), (0.0, 0.0)],
@@ -165,25 +158,8 @@ fn a_slide_over_the_seams_of_big_coplanar_cells_keeps_its_travel<S: Tolerance>(r
             }
         }
         let step = rng.range(0.3, 5.0);
-        let dir = unit(common::add(a, common::scale(b, rng.range(-1.0, 1.0))));
-        let start = common::scale(dir, -10.0 * step);
-        let mut p = v::<S>(common::add(
-            common::scale(n, r * (1.0 + 1.0 / 1024.0)),
-            start,
-        ));
-        for k in 0..300 {
-            let way = if (k / 20) % 2 == 0 { step } else { -step };
-            let d = v::<S>(common::sub(common::scale(dir, way), common::scale(n, 1e-4)));
-            let out = move_and_slide(&scene, p, d, S::from_f64(r)).unwrap();
-            let moved = common::norm(common::sub(back(out.position), back(p)));
-            assert!(
-                moved >= step * 0.999,
-                "{}: r {r}, plane {plane}, call {k} moved {moved:e} of {step} from {:?}",
-                S::NAME,
-                back(p)
-            );
-            p = out.position;
-        }
+        let label = format!("plane {plane}");
+        to_and_fro::keeps_travel::<S, _>(&scene, [n, a, b], (r, step, 1e-4), 300, &mut rng, &label);
     }
 }
 

@@ -4,6 +4,7 @@
 
 use ballcast::{Error, Scalar, Scene, StandardTriangle, Sweep, Triangle, Vec3};
 
+pub mod to_and_fro;
 pub mod walker;
 
 pub type P = [f64; 3];
