@@ -189,24 +189,26 @@ impl<S: Scalar> Slider<S> {
     ///
     /// The slide stops at the first thing below that can be stood on (a ball rolling up over a
     /// ledge's edge stays on the edge, not carried down its slope to the floor below), and goes
-    /// on past what is too steep and around an edge it walks off. An edge or vertex behind the
-    /// ball, whose normal leans along the level part of `heading` (its velocity, or the walk's
-    /// displacement), is one it is walking off: it is snapped to only if, clear of it (a radius
-    /// and a skin past the touched point, level and away from it), a cast a radius deeper finds
-    /// something to stand on (a step down; a crest, beyond which a slope at the limit lies up
-    /// to `0.59 r` lower). Over a drop (a cliff, a trench) the snap is the ground probe, so the
-    /// ball falls at any speed as it would without the snap. Rolling around an edge uses up some
-    /// of the reach: choose `depth` a quarter more than the highest step down, and at least the
-    /// drop of a walk down the steepest walkable slope in a frame (`speed dt tan(slope)`). Do
-    /// not snap a ball that was not on the ground (a jump, a fall), nor one moving up (over the
-    /// lip of a ramp, which would then launch nothing), but for a little: a walk over a crest's
-    /// edge, touched a hair behind it, rises by up to a thousandth of its speed in `I16F16`,
-    /// and must be snapped (the README's recipe allows 1/256).
+    /// on past what is too steep and around an edge it walks off. An edge or vertex it meets is
+    /// one the ball is walking off or over: it is snapped to only if, clear of it (a radius and
+    /// a skin past the touched point, level, along `heading` where it lies ahead of the ball or
+    /// under it, away from it where it lies behind, its normal leaning along the level part of
+    /// `heading`: the ball's velocity, or the walk's displacement), a cast a radius deeper
+    /// finds something to stand on (a step down; a crest, beyond which a slope at the limit lies
+    /// up to `0.59 r` lower; the landing at a ramp's top; a ledge's top). Over a drop (a cliff,
+    /// a trench, the lip of a ramp) the snap is the ground probe, so the ball falls or flies at
+    /// any speed as it would without the snap. With no heading, an edge is snapped to as a
+    /// face is. Rolling around an edge uses up some of the reach: choose `depth` a quarter more
+    /// than the highest step down, and at least the drop of a walk down the steepest walkable
+    /// slope in a frame (`speed dt tan(slope)`). Do not snap a ball that was not on the ground
+    /// (a jump, a fall).
     ///
     /// Walking at 2 units/s down steps of 0.2, a ball of r 0.5 snapping 0.25 was grounded on
-    /// every frame, against 136 of 180 with the probe alone. Cost: one sweep and one slide, and
-    /// a second sweep where the ball walks off an edge (one slide for a `depth` of zero, which
-    /// is [`probe_floor`](Self::probe_floor), and never finds less).
+    /// every frame, against 136 of 180 with the probe alone; up a 20° ramp, over its top and up
+    /// a ledge of 0.2, on every frame, and walking about bumpy ground from its first landing on
+    /// (`tests/crests.rs`). Cost: one sweep and one slide, and a second sweep where the ball
+    /// meets an edge (one slide for a `depth` of zero, which is
+    /// [`probe_floor`](Self::probe_floor), and never finds less).
     ///
     /// ```
     /// use ballcast::{Scene, Triangle, Vec3, slide::Slider};
@@ -251,14 +253,20 @@ impl<S: Scalar> Slider<S> {
             let Some(hit) = down(position, reach) else {
                 return self.snap_to_floor(scene, position, heading, up, min_cos, S::ZERO);
             };
-            // An edge or vertex whose normal leans along the level heading is behind the ball,
-            // which is walking off it: a step down or a crest if, clear of it (a radius and a
-            // skin past the touched point, level and away from it), a cast a radius deeper
-            // finds something to stand on (a slope at the slope limit lies `0.59 r` below the
-            // crest); else a drop, where the snap is the ground probe.
+            // An edge or vertex the ball walks off (behind it: its normal leans along the level
+            // heading) or over (ahead of it or under it: a ramp's top or lip, a ledge's edge):
+            // a step down, a crest or a landing if, clear of it (a radius and a skin past the
+            // touched point, level and away from it or along the heading), a cast a radius
+            // deeper finds something to stand on (a slope at the slope limit lies `0.59 r`
+            // below the crest); else a drop, where the snap is the ground probe.
+            let leans = S::dot(hit.normal, level(heading));
+            let beyond = if leans > S::ZERO {
+                level(hit.normal)
+            } else {
+                level(heading)
+            };
             if hit.contact != Contact::Face
-                && S::dot(hit.normal, level(heading)) > S::ZERO
-                && let Some((_, away)) = S::direction(level(hit.normal))
+                && let Some((_, away)) = S::direction(beyond)
             {
                 let away = away.map(S::unit_to_scalar);
                 let touched = hit.position - hit.normal.scale(self.radius);

@@ -1,6 +1,6 @@
 //! The README's walking recipe, shared by the tests of stepping up and down: press into the
 //! floor, walk along it (stepping up onto ledges), the ground probe where no move touched a
-//! floor, and the floor snap where a walk left the floor.
+//! floor, and the floor snap where a walk that began on the floor left it.
 
 use super::{P, v};
 use ballcast::{Geometry, Scalar, Vec3, slide::Slider};
@@ -32,21 +32,33 @@ pub fn walk<S: Scalar, G: Geometry<S>>(
     wish: P,
     gait: Gait,
     frames: usize,
+    each: impl FnMut(Vec3<S>, bool),
+) -> Vec3<S> {
+    walk_with(level, start, |_, _| wish, gait, frames, each)
+}
+
+/// [`walk`] wishing `wish(frame, position)` in each frame.
+pub fn walk_with<S: Scalar, G: Geometry<S>>(
+    level: &G,
+    start: P,
+    mut wish: impl FnMut(usize, Vec3<S>) -> P,
+    gait: Gait,
+    frames: usize,
     mut each: impl FnMut(Vec3<S>, bool),
 ) -> Vec3<S> {
     let (dt, g) = (S::from_f64(1.0 / gait.hz), S::from_f64(9.81));
     let (up, walkable) = (v::<S>([0.0, 1.0, 0.0]), S::from_f64(0.5f64.sqrt()));
     let ball = Slider::new(S::from_f64(gait.r)).unwrap();
     let ball = ball.with_max_slope(up, walkable).unwrap();
-    let (wish, step, snap) = (v::<S>(wish), S::from_f64(gait.step), S::from_f64(gait.snap));
+    let (step, snap) = (S::from_f64(gait.step), S::from_f64(gait.snap));
     let (mut p, mut vel, mut floor) = (v::<S>(start), Vec3::ZERO, None);
-    for _ in 0..frames {
+    for frame in 0..frames {
         let walked = floor.is_some();
         let out = match floor {
             Some(n) => {
                 let press = Vec3::ZERO - n * g.mul(dt).mul(dt);
                 let pressed = ball.slide(level, p, press).unwrap();
-                vel = wish.reject_from_normalized(n);
+                vel = v::<S>(wish(frame, p)).reject_from_normalized(n);
                 let out = ball
                     .step_slide(level, pressed.position, vel * dt, up, walkable, step)
                     .unwrap();
@@ -63,11 +75,9 @@ pub fn walk<S: Scalar, G: Geometry<S>>(
         };
         p = out.position;
         vel = ball.clip(&out, vel).unwrap();
-        // The probe reaches two skins down; a walk that left the floor reaches `snap` further,
-        // unless it moves up by more than 1/256 of its speed (up a slope or an edge; a jump):
-        // over a crest's edge, touched a hair behind it, a walk rises by far less.
-        let rising = vel.dot(up) > vel.length().mul(S::from_f64(1.0 / 256.0));
-        let depth = if walked && !rising { snap } else { S::ZERO };
+        // The probe reaches two skins down; a walk that began on the floor and left it reaches
+        // `snap` further (down a step, over a crest, up or down).
+        let depth = if walked { snap } else { S::ZERO };
         if floor.is_none()
             && let Some(f) = ball
                 .snap_to_floor(level, p, vel, up, walkable, depth)

@@ -1,0 +1,162 @@
+//! Walking over crests with the README's recipe: a walker that stood on the floor when its
+//! frame began is snapped down onto the floor within its snap depth wherever its walk left the
+//! floor, up a slope as well as down one, so it stays grounded over the top of a ramp, up a
+//! ledge and across bumpy ground (a game that lets a character jump only from the floor drops
+//! no jump there). Off a ramp's lip over a drop it still flies (`tests/stairs.rs`). Every
+//! property in every scalar.
+
+mod common;
+
+use ballcast::{Heightfield, Scalar, Scene, Sweep, Triangle, Vec3};
+use common::walker::{HALF, walk, walk_with};
+use common::{P, Rng, Tolerance, back, quad, v};
+use fixed::types::{I16F16, I32F32};
+
+/// The top of a 20° ramp 4 long, from x = 2 to 6.
+const TOP: f64 = 1.455_880_8;
+
+/// A floor at y = 0 up to x = 2, a 20° ramp up to a landing at `TOP` from x = 6, and at x = 10 a
+/// ledge 0.2 higher (its riser two-sided), out to x = 20; 10 wide in z.
+fn ramp_and_ledge<S: Scalar>() -> Scene<S, 16> {
+    let (z, across) = ([0.0, 0.0, 10.0], -5.0);
+    let floor = |x0: f64, y0: f64, x1: f64, y1: f64| [[x0, y0, across], z, [x1 - x0, y1 - y0, 0.0]];
+    let mut s = Scene::new();
+    for [o, a, b] in [
+        floor(-5.0, 0.0, 2.0, 0.0),
+        floor(2.0, 0.0, 6.0, TOP),
+        floor(6.0, TOP, 10.0, TOP),
+        floor(10.0, TOP + 0.2, 20.0, TOP + 0.2),
+    ] {
+        for t in quad(o, a, b) {
+            s.push(Triangle::new(v(t[0]), v(t[1]), v(t[2]))).unwrap();
+        }
+    }
+    for t in quad([10.0, TOP, across], [0.0, 0.2, 0.0], z) {
+        s.push_two_sided(Triangle::new(v(t[0]), v(t[1]), v(t[2])))
+            .unwrap();
+    }
+    s
+}
+
+/// Walking at 2 units/s (r 0.5, 60 Hz) up the ramp, over its top onto the landing and up the
+/// ledge: grounded on every frame, ending on the ledge a skin above it. A recipe that asked the
+/// snap only of a ball not moving up left it in the air on 5 frames over the ramp's top (a hop
+/// of 7 thousandths) and on 7 to 9 up the ledge.
+fn walking_over_a_ramps_top_and_up_a_ledge_stays_grounded<S: Tolerance>() {
+    let level = ramp_and_ledge::<S>();
+    let mut airborne = Vec::new();
+    let mut frame = 0;
+    let end = walk(
+        &level,
+        [0.0, 0.5005, 0.0],
+        [2.0, 0.0, 0.0],
+        HALF,
+        480,
+        |p, g| {
+            if !g {
+                airborne.push((frame, back(p)));
+            }
+            frame += 1;
+        },
+    );
+    assert!(
+        airborne.is_empty(),
+        "{}: in the air at {airborne:?}",
+        S::NAME
+    );
+    let [x, y, _] = back(end);
+    assert!(
+        x > 15.0 && (y - (TOP + 0.7)).abs() < 0.01,
+        "{}: ended at {:?}",
+        S::NAME,
+        back(end)
+    );
+}
+
+/// Bumpy ground: a heightfield of 24 × 20 cells of side 1 with heights within ±0.2 (slopes up
+/// to about 22°). Six balls (r 0.5, 60 Hz) dropped onto it walk at 3 units/s, each second
+/// towards a new random point well inside it, for 20 s: from their first landing on, each is
+/// grounded on every frame, and never lower than a ball dropped straight down there rests (by
+/// more than a few steps). A recipe that asked the snap only of a ball not moving up left them
+/// in the air on 16 % of those frames (over the crests they walked across uphill).
+fn walking_on_bumpy_ground_stays_grounded<S: Tolerance>() {
+    let (columns, rows) = (24u32, 20u32);
+    let mut rng = Rng(0xB0_4B5);
+    let heights: Vec<i16> = (0..(columns + 1) * (rows + 1))
+        .map(|_| rng.range(-4.0, 4.0).round() as i16)
+        .collect();
+    let mut cells = vec![0u8; (columns * rows) as usize];
+    let (origin, unit) = (v::<S>([-12.0, 0.0, -10.0]), S::from_f64(0.05));
+    let built = Heightfield::build(
+        origin,
+        S::ONE,
+        unit,
+        columns,
+        rows,
+        &heights,
+        |_, _| false,
+        &mut cells,
+    );
+    let ground = built.unwrap();
+    let r = S::from_f64(HALF.r);
+    // Where a ball dropped straight down at (x, z) rests.
+    let rest = |x: f64, z: f64| {
+        let drop = Sweep::new(v::<S>([x, 5.0, z]), v::<S>([x, -5.0, z]), r).unwrap();
+        back(ground.cast(&drop).unwrap().position)[1]
+    };
+    let allowed = 4.0 * S::spacing(16.0) + S::DISTANCE;
+    for ball in 0..6 {
+        let start: P = [rng.range(-6.0, 6.0), 1.5, rng.range(-5.0, 5.0)];
+        let mut target = [0.0; 3];
+        let mut heading = |frame: usize, p: Vec3<S>| {
+            if frame.is_multiple_of(60) {
+                target = [rng.range(-8.0, 8.0), 0.0, rng.range(-6.0, 6.0)];
+            }
+            let [x, _, z] = back(p);
+            let (dx, dz) = (target[0] - x, target[2] - z);
+            let d = (dx * dx + dz * dz).sqrt().max(1e-9);
+            [3.0 * dx / d, 0.0, 3.0 * dz / d]
+        };
+        let (mut frame, mut landed) = (0, None);
+        walk_with(&ground, start, &mut heading, HALF, 1200, |p, on| {
+            let [x, y, z] = back(p);
+            landed = landed.or(on.then_some(frame));
+            assert!(
+                landed.is_none() || on,
+                "{}: ball {ball} in the air at frame {frame} (landed at {landed:?}), at {:?}",
+                S::NAME,
+                back(p)
+            );
+            let below = rest(x, z) - y;
+            assert!(
+                below <= allowed,
+                "{}: ball {ball} at frame {frame} {below:e} below its resting height, at {:?}",
+                S::NAME,
+                back(p)
+            );
+            frame += 1;
+        });
+        assert!(
+            landed.is_some_and(|l| l < 60),
+            "{}: ball {ball} landed at {landed:?}",
+            S::NAME
+        );
+    }
+}
+
+macro_rules! per_scalar {
+    ($($m:ident: $t:ty),*) => {$(mod $m {
+        #[allow(unused_imports)]
+        use super::*;
+        #[test]
+        fn walking_over_a_ramps_top_and_up_a_ledge_stays_grounded() {
+            super::walking_over_a_ramps_top_and_up_a_ledge_stays_grounded::<$t>();
+        }
+        #[test]
+        fn walking_on_bumpy_ground_stays_grounded() {
+            super::walking_on_bumpy_ground_stays_grounded::<$t>();
+        }
+    })*};
+}
+
+per_scalar!(f64_: f64, f32_: f32, i32f32: I32F32, i16f16: I16F16);
