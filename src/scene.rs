@@ -77,7 +77,13 @@ pub struct SceneHit<S> {
 /// A ball rolling over a tiled floor therefore only ever sees the floor's normal.
 ///
 /// Queries stream through a compact array of bounding boxes first; only triangles whose box
-/// meets the sweep's are tested in full.
+/// meets the sweep's are tested in full: a linear scan, and each push compares the triangle
+/// with every earlier one, so a `Scene` suits rooms and small levels (up to a few hundred
+/// triangles). Storage is inline: 152 bytes per triangle of capacity in `f32` and `I16F16`
+/// (304 in `f64` and `I32F32`: the prepared triangle, its source and its box), so a
+/// `Scene<f32, 65_536>` is 10 MB, more than a thread's stack holds (`Box::new(Scene::new())`
+/// builds it on the stack first, in a debug build). Whole levels belong in a
+/// [`Mesh`](crate::Mesh): a tree over caller-provided buffers, 100 bytes per triangle in `f32`.
 ///
 /// ```
 /// use ballcast::{Contact, Scene, Sweep, Triangle, Vec3};

@@ -1,7 +1,10 @@
 //! A three-component vector with public fields, generic over its component type.
 
 use crate::Scalar;
-use core::ops::{Add, AddAssign, Div, DivAssign, Mul, MulAssign, Neg, Sub, SubAssign};
+use core::ops::{Add, Mul, Sub};
+
+mod geometry;
+mod ops;
 
 /// A point or direction in 3-space: a plain `Copy` struct with no invariant.
 ///
@@ -70,6 +73,18 @@ impl<T> From<Vec3<T>> for [T; 3] {
     }
 }
 
+impl<T> From<(T, T, T)> for Vec3<T> {
+    fn from((x, y, z): (T, T, T)) -> Self {
+        Self::new(x, y, z)
+    }
+}
+
+impl<T> From<Vec3<T>> for (T, T, T) {
+    fn from(v: Vec3<T>) -> Self {
+        (v.x, v.y, v.z)
+    }
+}
+
 impl<S: Scalar> Vec3<S> {
     /// The zero vector.
     pub const ZERO: Self = Self::new(S::ZERO, S::ZERO, S::ZERO);
@@ -79,6 +94,14 @@ impl<S: Scalar> Vec3<S> {
     pub const Y: Self = Self::new(S::ZERO, S::ONE, S::ZERO);
     /// The unit vector along z.
     pub const Z: Self = Self::new(S::ZERO, S::ZERO, S::ONE);
+    /// Every component one.
+    pub const ONE: Self = Self::splat(S::ONE);
+    /// The unit vector along −x.
+    pub const NEG_X: Self = Self::new(S::NEG_ONE, S::ZERO, S::ZERO);
+    /// The unit vector along −y (down, in this crate's examples).
+    pub const NEG_Y: Self = Self::new(S::ZERO, S::NEG_ONE, S::ZERO);
+    /// The unit vector along −z.
+    pub const NEG_Z: Self = Self::new(S::ZERO, S::ZERO, S::NEG_ONE);
 
     /// A vector with every component `s`.
     pub const fn splat(s: S) -> Self {
@@ -116,63 +139,35 @@ impl<S: Scalar> Vec3<S> {
         crate::scalar::largest(self.x, self.y, self.z)
     }
 
+    /// The smallest component (a NaN after `x` is passed over).
+    pub fn min_element(self) -> S {
+        crate::scalar::smallest(self.x, self.y, self.z)
+    }
+
+    /// `x + y + z`, with `+` (see the type's docs on overflow).
+    pub fn element_sum(self) -> S {
+        self.x + self.y + self.z
+    }
+
+    /// The same vector with `x` replaced.
+    pub const fn with_x(self, x: S) -> Self {
+        Self::new(x, self.y, self.z)
+    }
+
+    /// The same vector with `y` replaced (a velocity's vertical part, with `up` along y).
+    pub const fn with_y(self, y: S) -> Self {
+        Self::new(self.x, y, self.z)
+    }
+
+    /// The same vector with `z` replaced.
+    pub const fn with_z(self, z: S) -> Self {
+        Self::new(self.x, self.y, z)
+    }
+
     /// The squared length: [`dot`](Self::dot) with itself (fixed point saturates beyond the
     /// type's range: in `I16F16` from a length of about 181; [`length`](Self::length) does not).
     pub fn length_squared(self) -> S {
         S::dot(self, self)
-    }
-
-    /// The part of this vector along the unit vector `n`: `n (self · n)`, the dot product
-    /// rounded once and each product as [`scale`](Self::scale) rounds it.
-    pub fn project_onto_normalized(self, n: Self) -> Self {
-        n.scale(S::dot(self, n))
-    }
-
-    /// The part of this vector across the unit vector `n`: `self - n (self · n)`. With `n` a
-    /// floor's normal (e.g. [`Slide::floor_normal`](crate::Slide::floor_normal)), a character's
-    /// wished velocity along the floor.
-    ///
-    /// ```
-    /// use ballcast::Vec3;
-    /// let wish = Vec3::new(2.0f32, 0.0, 1.0);
-    /// let up = Vec3::Y;
-    /// assert_eq!(wish.reject_from_normalized(up), wish);
-    /// let floor = Vec3::new(0.6f32, 0.8, 0.0); // a slope rising along -x
-    /// let along = wish.reject_from_normalized(floor);
-    /// assert!(along.dot(floor).abs() < 1e-6);
-    /// ```
-    pub fn reject_from_normalized(self, n: Self) -> Self {
-        self - self.project_onto_normalized(n)
-    }
-
-    /// The distance to `o`: [`length`](Self::length) of the difference (which, for points
-    /// within the safe range, does not overflow).
-    ///
-    /// ```
-    /// use ballcast::Vec3;
-    /// assert_eq!(Vec3::new(1.0f32, 2.0, 3.0).distance(Vec3::new(4.0, 6.0, 3.0)), 5.0);
-    /// ```
-    pub fn distance(self, o: Self) -> S {
-        (o - self).length()
-    }
-
-    /// The point a fraction `t` of the way to `o`: `self + (o - self) * t`, the product rounded
-    /// as [`scale`](Self::scale) rounds, and `o` itself at `t = 1` (where the sum could miss it
-    /// by a rounding): `t = 0` gives `self`, `t = 1` gives `o` and `a.lerp(a, t)` gives `a`,
-    /// exactly.
-    ///
-    /// ```
-    /// use ballcast::Vec3;
-    /// let (a, b) = (Vec3::new(0.0f64, 2.0, -4.0), Vec3::new(1.0, 0.0, 4.0));
-    /// assert_eq!(a.lerp(b, 0.25), Vec3::new(0.25, 1.5, -2.0));
-    /// assert_eq!(a.lerp(b, 1.0), b);
-    /// ```
-    pub fn lerp(self, o: Self, t: S) -> Self {
-        if t == S::ONE {
-            o
-        } else {
-            self + (o - self).scale(t)
-        }
     }
 
     /// Every component times `s`, each rounded to nearest through the scalar
@@ -298,70 +293,6 @@ impl<S: Scalar> Vec3<S> {
     pub fn try_cast<T: Scalar>(self) -> Result<Vec3<T>, crate::Error> {
         let c = |x: S| crate::check::convert::<T>(x.to_f64());
         Ok(Vec3::new(c(self.x)?, c(self.y)?, c(self.z)?))
-    }
-}
-
-impl<T: Add<Output = T>> Add for Vec3<T> {
-    type Output = Self;
-    fn add(self, o: Self) -> Self {
-        Self::new(self.x + o.x, self.y + o.y, self.z + o.z)
-    }
-}
-
-impl<T: Sub<Output = T>> Sub for Vec3<T> {
-    type Output = Self;
-    fn sub(self, o: Self) -> Self {
-        Self::new(self.x - o.x, self.y - o.y, self.z - o.z)
-    }
-}
-
-impl<T: Add<Output = T> + Copy> AddAssign for Vec3<T> {
-    fn add_assign(&mut self, o: Self) {
-        *self = *self + o;
-    }
-}
-
-impl<T: Sub<Output = T> + Copy> SubAssign for Vec3<T> {
-    fn sub_assign(&mut self, o: Self) {
-        *self = *self - o;
-    }
-}
-
-impl<T: Neg<Output = T>> Neg for Vec3<T> {
-    type Output = Self;
-    fn neg(self) -> Self {
-        Self::new(-self.x, -self.y, -self.z)
-    }
-}
-
-/// Scaling rounds to nearest in every scalar (see [`Vec3::scale`]).
-impl<S: Scalar> Mul<S> for Vec3<S> {
-    type Output = Self;
-    fn mul(self, s: S) -> Self {
-        self.scale(s)
-    }
-}
-
-/// `v *= s` is `v = v * s`.
-impl<S: Scalar> MulAssign<S> for Vec3<S> {
-    fn mul_assign(&mut self, s: S) {
-        *self = self.scale(s);
-    }
-}
-
-/// `v /= s` is `v = v / s`.
-impl<S: Scalar> DivAssign<S> for Vec3<S> {
-    fn div_assign(&mut self, s: S) {
-        *self = *self / s;
-    }
-}
-
-/// Division rounds to nearest in every scalar ([`Scalar::div`]); fixed-point saturates where a
-/// quotient leaves the type's range or the divisor is zero.
-impl<S: Scalar> Div<S> for Vec3<S> {
-    type Output = Self;
-    fn div(self, s: S) -> Self {
-        self.map(|c| c.div(s))
     }
 }
 

@@ -3,7 +3,7 @@
 
 mod common;
 
-use ballcast::Vec3;
+use ballcast::{Scalar, Vec3};
 use common::{Rng, Tolerance, back, v};
 use fixed::types::{I16F16, I32F32};
 
@@ -181,6 +181,112 @@ fn components_and_projections_agree_with_f64<S: Tolerance>() {
     }
 }
 
+/// What a game developer reaches for from glam: the signed axes and `ONE`, `min_element`,
+/// `element_sum`, `with_*`, `distance_squared`, `length_recip`, `normalize_or`,
+/// `is_normalized`, projections onto and across any vector, `clamp`, `clamp_length_max`,
+/// `move_towards`, `angle_between`, `s * v`, `v * w`, `Sum`, `Display` and tuples: exact where
+/// they select or copy components, else against `f64` on the same rounded inputs.
+fn glam_helpers_agree_with_f64<S>()
+where
+    S: Tolerance + core::fmt::Display + core::ops::Mul<Vec3<S>, Output = Vec3<S>>,
+{
+    let (x, y, z) = (Vec3::<S>::X, Vec3::<S>::Y, Vec3::<S>::Z);
+    assert_eq!(
+        (Vec3::NEG_X, Vec3::NEG_Y, Vec3::NEG_Z),
+        (-x, -y, -z),
+        "{}",
+        S::NAME
+    );
+    assert_eq!(Vec3::<S>::ONE, x + y + z, "{}", S::NAME);
+    let mut rng = Rng(0x61A3);
+    let tol = |m: f64| 4.0 * S::spacing(m);
+    for _ in 0..10_000 {
+        let (a, b) = (v::<S>(rng.point(100.0)), v::<S>(rng.point(100.0)));
+        let (a64, b64) = (back(a), back(b));
+        let least = a64.into_iter().fold(f64::INFINITY, f64::min);
+        assert_eq!(a.min_element().to_f64(), least, "{}", S::NAME);
+        let sum = a64[0] + a64[1] + a64[2];
+        let err = (a.element_sum().to_f64() - sum).abs();
+        assert!(err <= tol(300.0), "{}: element_sum {err:e}", S::NAME);
+        let s = S::from_f64(rng.range(-100.0, 100.0));
+        let with = (a.with_x(s), a.with_y(s), a.with_z(s));
+        let want = (
+            Vec3::new(s, a.y, a.z),
+            Vec3::new(a.x, s, a.z),
+            Vec3::new(a.x, a.y, s),
+        );
+        assert_eq!(with, want, "{}", S::NAME);
+        assert_eq!(a.clamp(a.min(b), a.max(b)), a, "{}", S::NAME);
+        let (lo, hi) = (v::<S>([-10.0; 3]), v::<S>([10.0; 3]));
+        let clamped = v::<S>(a64.map(|c| c.clamp(-10.0, 10.0)));
+        assert_eq!(a.clamp(lo, hi), clamped, "{}", S::NAME);
+        // Squares within I16F16's range: coordinates within ±5.
+        let (c, d) = (v::<S>(rng.point(5.0)), v::<S>(rng.point(5.0)));
+        let gap = common::sub(back(d), back(c));
+        let err = (c.distance_squared(d).to_f64() - common::dot(gap, gap)).abs();
+        assert!(err <= tol(300.0), "{}: distance_squared {err:e}", S::NAME);
+        let length = common::norm(b64);
+        if length > 1.0 {
+            let err = (b.length_recip().to_f64() - 1.0 / length).abs();
+            assert!(err <= tol(1.0), "{}: length_recip {err:e}", S::NAME);
+        }
+        let n = b.try_normalize().unwrap();
+        assert_eq!(b.normalize_or(x), n, "{}", S::NAME);
+        assert_eq!(Vec3::ZERO.normalize_or(x), x, "{}", S::NAME);
+        assert!(
+            n.is_normalized() && !(n * S::from_f64(1.01)).is_normalized(),
+            "{}",
+            S::NAME
+        );
+        let n64 = common::scale(b64, 1.0 / length);
+        let along = common::scale(n64, common::dot(a64, n64));
+        let err = common::norm(common::sub(back(a.project_onto(b)), along));
+        assert!(err <= tol(200.0), "{}: project_onto {err:e}", S::NAME);
+        let err = common::norm(common::sub(back(a.reject_from(b)), common::sub(a64, along)));
+        assert!(err <= tol(200.0), "{}: reject_from {err:e}", S::NAME);
+        let cap = S::from_f64(rng.range(0.5, 200.0));
+        let capped = back(a.clamp_length_max(cap));
+        let want = common::scale(a64, (cap.to_f64() / common::norm(a64)).min(1.0));
+        let err = common::norm(common::sub(capped, want));
+        assert!(err <= tol(200.0), "{}: clamp_length_max {err:e}", S::NAME);
+        let step = S::from_f64(rng.range(0.0, 200.0));
+        let gap = common::norm(common::sub(b64, a64));
+        let moved = back(a.move_towards(b, step));
+        let t = (step.to_f64() / gap).min(1.0);
+        let want = common::add(a64, common::scale(common::sub(b64, a64), t));
+        let err = common::norm(common::sub(moved, want));
+        assert!(err <= tol(200.0), "{}: move_towards {err:e}", S::NAME);
+        let cos = common::dot(a64, b64) / (common::norm(a64) * length);
+        let angle = a.angle_between(b).unwrap().to_f64();
+        // acos magnifies the cosine's rounding near 0 and π: its square root.
+        let err = (angle - cos.clamp(-1.0, 1.0).acos()).abs();
+        assert!(
+            err <= 4.0 * S::spacing(1.0).sqrt(),
+            "{}: angle_between {err:e}",
+            S::NAME
+        );
+        assert_eq!(s * a, a * s, "{}", S::NAME);
+        assert_eq!(
+            a * b,
+            Vec3::new(
+                Scalar::mul(a.x, b.x),
+                Scalar::mul(a.y, b.y),
+                Scalar::mul(a.z, b.z)
+            ),
+            "{}",
+            S::NAME
+        );
+        assert_eq!([a, b].iter().sum::<Vec3<S>>(), a + b, "{}", S::NAME);
+        assert_eq!([a, b].into_iter().sum::<Vec3<S>>(), a + b, "{}", S::NAME);
+        let t: (S, S, S) = a.into();
+        assert_eq!(Vec3::from(t), a, "{}", S::NAME);
+    }
+    assert_eq!(Vec3::<S>::ZERO.angle_between(x), None, "{}", S::NAME);
+    let shown = Vec3::new(S::ONE, S::from_f64(-2.5), S::ZERO).to_string();
+    let want = format!("[{}, {}, {}]", S::ONE, S::from_f64(-2.5), S::ZERO);
+    assert_eq!(shown, want, "{}", S::NAME);
+}
+
 macro_rules! per_scalar {
     ($($m:ident: $t:ty),*) => {$(mod $m {
         use super::*;
@@ -203,6 +309,10 @@ macro_rules! per_scalar {
         #[test]
         fn components_and_projections() {
             components_and_projections_agree_with_f64::<$t>();
+        }
+        #[test]
+        fn glam_helpers() {
+            glam_helpers_agree_with_f64::<$t>();
         }
         #[test]
         fn conversions() {

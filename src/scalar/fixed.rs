@@ -44,6 +44,7 @@ macro_rules! fixed_scalar {
         impl Scalar for $t {
             const ZERO: Self = <$t>::ZERO;
             const ONE: Self = <$t>::ONE;
+            const NEG_ONE: Self = <$t>::NEG_ONE;
             const LIMIT: Self = <$t>::from_bits($limit_int << $frac);
             const EPSILON: Self = <$t>::DELTA;
             const PRECISION: crate::Precision = crate::Precision {

@@ -26,6 +26,7 @@ macro_rules! float_scalar {
         impl Scalar for $t {
             const ZERO: Self = 0.0;
             const ONE: Self = 1.0;
+            const NEG_ONE: Self = -1.0;
             const LIMIT: Self = $limit;
             const EPSILON: Self = <$t>::EPSILON;
             const PRECISION: crate::Precision = crate::Precision {

@@ -64,6 +64,8 @@ pub trait Scalar:
     const ZERO: Self;
     /// One.
     const ONE: Self;
+    /// Minus one.
+    const NEG_ONE: Self;
     /// The largest magnitude accepted for a world coordinate or a radius.
     ///
     /// Inside this range no intermediate value of any algorithm can overflow: differences of two

@@ -262,7 +262,11 @@ pub fn min_radius<S: Scalar>(extent: S) -> S {
 /// end outside `±LIMIT` is refused with [`Error::OutOfRange`] as well (a push out of an overlap
 /// that would is not made, and the target after the push is checked again). The position returned
 /// stands a skin off what it touched, so near the edge of the range it can lie up to a skin beyond
-/// `±LIMIT`, and the next call refuses it: keep the world a skin inside the range.
+/// `±LIMIT`, and the next call refuses it: keep the world a skin inside the range. (In fixed
+/// point the back-off to the skin is a fraction of the motion rounded to a step, so a long call
+/// stands off by the skin give or take a step times the motion's length: in `I16F16` a call of 40
+/// units stopped by a floor straight ahead ends 6.1e-4 above touching instead of 7.3e-4, one of
+/// 100 units touching it. The next call lifts it off; keep calls short, as the README advises.)
 ///
 /// ```
 /// use ballcast::{Scene, Triangle, Vec3, move_and_slide, slide::skin};
