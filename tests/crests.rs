@@ -8,7 +8,7 @@
 mod common;
 
 use ballcast::{Heightfield, Scalar, Scene, Sweep, Triangle, Vec3};
-use common::walker::{HALF, walk, walk_with};
+use common::walker::{Gait, HALF, walk, walk_with};
 use common::{P, Rng, Tolerance, back, quad, v};
 use fixed::types::{I16F16, I32F32};
 
@@ -144,6 +144,68 @@ fn walking_on_bumpy_ground_stays_grounded<S: Tolerance>() {
     }
 }
 
+/// A 30° or 20° ramp 40 wide rising to a lip at x = 3, beyond it a drop of 0.5 (deeper than
+/// the snap, though within a radius more) or 3: walked at 8 units/s head-on (at 60 and 240 Hz)
+/// and at 45° to the lip (60 Hz), the ball flies off the lip, at least 0.1 above it, as it
+/// would without the snap, bit for bit, until it lands. Looking past the lip along the heading (a radius and a skin, of which
+/// only the part across the lip gets past it at an angle) and a radius deeper than the snap,
+/// the snap once found floor there and held the ball onto the lip: it dropped off it instead
+/// of flying 4 units.
+fn off_a_ramps_lip_over_a_drop_the_ball_flies<S: Tolerance>() {
+    for (degrees, drop) in [(30.0f64, 0.5), (20.0, 0.5), (30.0, 3.0)] {
+        let (z, across) = ([0.0, 0.0, 40.0], -20.0);
+        let rise = 3.0 * degrees.to_radians().tan();
+        let mut level = Scene::<S, 16>::new();
+        let flat = [[-10.0, 0.0, across], z, [10.0, 0.0, 0.0]];
+        let ramp = [[0.0, 0.0, across], z, [3.0, rise, 0.0]];
+        let below = [[3.0, rise - drop, across], z, [20.0, 0.0, 0.0]];
+        for [o, a, b] in [flat, ramp, below] {
+            for t in quad(o, a, b) {
+                level
+                    .push(Triangle::new(v(t[0]), v(t[1]), v(t[2])))
+                    .unwrap();
+            }
+        }
+        for t in quad([3.0, rise - drop, across], [0.0, drop, 0.0], z) {
+            level
+                .push_two_sided(Triangle::new(v(t[0]), v(t[1]), v(t[2])))
+                .unwrap();
+        }
+        for (heading, hz) in [(0.0f64, 60.0), (0.0, 240.0), (45.0, 60.0)] {
+            let (sin, cos) = heading.to_radians().sin_cos();
+            let wish = [8.0 * cos, 0.0, 8.0 * sin];
+            let frames = (1.5 * hz) as usize;
+            let [snapped, plain] = [HALF.snap, 0.0].map(|snap| {
+                let mut path = Vec::new();
+                let gait = Gait { snap, hz, ..HALF };
+                walk(&level, [-3.0, 0.5005, -5.0], wish, gait, frames, |p, on| {
+                    path.push((back(p), on))
+                });
+                path
+            });
+            let flew = plain.iter().position(|&(_, on)| !on);
+            let landed =
+                flew.and_then(|f| plain[f..].iter().position(|&(_, on)| on).map(|l| f + l));
+            let n = landed.map_or(frames, |l| l + 1);
+            let top = plain[..n]
+                .iter()
+                .map(|(p, _)| p[1])
+                .fold(f64::MIN, f64::max);
+            assert!(
+                top > rise + 0.5 + 0.1,
+                "{}: {degrees}° over {drop} at {heading}°, {hz} Hz: no flight (top {top})",
+                S::NAME
+            );
+            assert_eq!(
+                snapped[..n],
+                plain[..n],
+                "{}: {degrees}° over {drop} at {heading}°, {hz} Hz: with the snap, and without",
+                S::NAME
+            );
+        }
+    }
+}
+
 macro_rules! per_scalar {
     ($($m:ident: $t:ty),*) => {$(mod $m {
         #[allow(unused_imports)]
@@ -151,6 +213,10 @@ macro_rules! per_scalar {
         #[test]
         fn walking_over_a_ramps_top_and_up_a_ledge_stays_grounded() {
             super::walking_over_a_ramps_top_and_up_a_ledge_stays_grounded::<$t>();
+        }
+        #[test]
+        fn off_a_ramps_lip_over_a_drop_the_ball_flies() {
+            super::off_a_ramps_lip_over_a_drop_the_ball_flies::<$t>();
         }
         #[test]
         fn walking_on_bumpy_ground_stays_grounded() {

@@ -190,15 +190,17 @@ impl<S: Scalar> Slider<S> {
     /// The slide stops at the first thing below that can be stood on (a ball rolling up over a
     /// ledge's edge stays on the edge, not carried down its slope to the floor below), and goes
     /// on past what is too steep and around an edge it walks off. An edge or vertex it meets is
-    /// one the ball is walking off or over: it is snapped to only if, clear of it (a radius and
-    /// a skin past the touched point, level, along `heading` where it lies ahead of the ball or
-    /// under it, away from it where it lies behind, its normal leaning along the level part of
-    /// `heading`: the ball's velocity, or the walk's displacement), a cast a radius deeper
-    /// finds something to stand on (a step down; a crest, beyond which a slope at the limit lies
-    /// up to `0.59 r` lower; the landing at a ramp's top; a ledge's top). Over a drop (a cliff,
-    /// a trench, the lip of a ramp) the snap is the ground probe, so the ball falls or flies at
-    /// any speed as it would without the snap. With no heading, an edge is snapped to as a
-    /// face is. Rolling around an edge uses up some of the reach: choose `depth` a quarter more
+    /// one the ball walks off (behind it: its normal leans along the level part of `heading`,
+    /// the ball's velocity or the walk's displacement) or over (ahead of it, the heading
+    /// crossing it at more than about 15°, or right under it): it is snapped to only if, clear
+    /// of it (a radius and a skin past the touched point, level: away from it, or across it),
+    /// a cast finds something to stand on, a radius deeper than the snap for one walked off
+    /// level or down (a step down; a crest, beyond which a slope at the limit lies up to
+    /// `0.59 r` lower), no deeper than the snap for one walked over or off moving up (the
+    /// landing at a ramp's top, a ledge's top, a step down within the snap). Over a deeper
+    /// drop (a cliff, a trench, the lip of a ramp) the snap is the ground probe, so the ball
+    /// falls or flies at any speed as it would without the snap. An edge walked along, or met
+    /// with no heading, is snapped to as a face is. Rolling around an edge uses up some of the reach: choose `depth` a quarter more
     /// than the highest step down, and at least the drop of a walk down the steepest walkable
     /// slope in a frame (`speed dt tan(slope)`). Do not snap a ball that was not on the ground
     /// (a jump, a fall).
@@ -253,26 +255,27 @@ impl<S: Scalar> Slider<S> {
             let Some(hit) = down(position, reach) else {
                 return self.snap_to_floor(scene, position, heading, up, min_cos, S::ZERO);
             };
-            // An edge or vertex the ball walks off (behind it: its normal leans along the level
-            // heading) or over (ahead of it or under it: a ramp's top or lip, a ledge's edge):
-            // a step down, a crest or a landing if, clear of it (a radius and a skin past the
-            // touched point, level and away from it or along the heading), a cast a radius
-            // deeper finds something to stand on (a slope at the slope limit lies `0.59 r`
-            // below the crest); else a drop, where the snap is the ground probe.
-            let leans = S::dot(hit.normal, level(heading));
-            let beyond = if leans > S::ZERO {
-                level(hit.normal)
-            } else {
-                level(heading)
-            };
+            // An edge or vertex the ball walks off or over: a step down, a crest or a landing
+            // if, clear of it (a radius and a skin past the touched point, level), a cast finds
+            // something to stand on; else a drop, where the snap is the ground probe. Walking
+            // off it level or down, the cast reaches a radius deeper (a slope at the slope
+            // limit lies `0.59 r` below the crest); walking over it, or off it moving up (by
+            // more than 1/256 of the speed: more than a walk over a crest's edge, touched a hair
+            // behind it, rises), no deeper than the snap itself, so that a ramp's lip over any
+            // deeper drop launches the ball.
             if hit.contact != Contact::Face
-                && let Some((_, away)) = S::direction(beyond)
+                && let Some((away, off)) = past_edge(level(hit.normal), level(heading))
             {
-                let away = away.map(S::unit_to_scalar);
                 let touched = hit.position - hit.normal.scale(self.radius);
                 let clear = self.radius + skin - S::dot(position - touched, away);
                 let ahead = position + away.scale(if clear > S::ZERO { clear } else { S::ZERO });
-                let below = down(ahead, reach + self.radius);
+                let rising = S::dot(heading, up_unit) > S::div_pow2(heading.length(), 8);
+                let look = if off && !rising {
+                    reach + self.radius
+                } else {
+                    reach
+                };
+                let below = down(ahead, look);
                 if !below.is_some_and(|h| S::dot(h.normal, up_unit) >= cos) {
                     return self.snap_to_floor(scene, position, heading, up, min_cos, S::ZERO);
                 }
@@ -306,5 +309,27 @@ impl<S: Scalar> Slider<S> {
     /// Errors: as [`Slide::clip`].
     pub fn clip(&self, slide: &Slide<S>, velocity: Vec3<S>) -> Result<Vec3<S>, Error> {
         slide.clip_within(velocity, self.max_slope)
+    }
+}
+
+/// Where to look past an edge or vertex met by a snap, given the level parts of its normal and
+/// of the ball's heading: away from it, with `true`, where the ball walks off it (behind the
+/// ball: the normal leans along the heading); across it, with `false`, where the ball walks over
+/// it (ahead of the ball, the heading crossing it at more than about 15°: a lip met at an angle
+/// is looked across, not along; or right under it, along the heading). `None` where the ball
+/// walks along it or has no heading: it is snapped to as a face is.
+fn past_edge<S: Scalar>(normal: Vec3<S>, heading: Vec3<S>) -> Option<(Vec3<S>, bool)> {
+    let unit = |v: Vec3<S>| S::direction(v).map(|(_, u)| u.map(S::unit_to_scalar));
+    let h = unit(heading)?;
+    let Some(n) = unit(normal) else {
+        return Some((h, false));
+    };
+    let lean = S::dot(n, h);
+    if lean > S::ZERO {
+        Some((n, true))
+    } else if lean < -S::div_pow2(S::ONE, 2) {
+        Some((-n, false))
+    } else {
+        None
     }
 }
