@@ -8,7 +8,7 @@
 mod common;
 
 use ballcast::{Heightfield, Scalar, Scene, Sweep, Triangle, Vec3};
-use common::walker::{Gait, HALF, walk, walk_with};
+use common::walker::{Gait, HALF, walk, walk_with, with_and_without_snap};
 use common::{P, Rng, Tolerance, back, quad, v};
 use fixed::types::{I16F16, I32F32};
 
@@ -175,33 +175,13 @@ fn off_a_ramps_lip_over_a_drop_the_ball_flies<S: Tolerance>() {
             let (sin, cos) = heading.to_radians().sin_cos();
             let wish = [8.0 * cos, 0.0, 8.0 * sin];
             let frames = (1.5 * hz) as usize;
-            let [snapped, plain] = [HALF.snap, 0.0].map(|snap| {
-                let mut path = Vec::new();
-                let gait = Gait { snap, hz, ..HALF };
-                walk(&level, [-3.0, 0.5005, -5.0], wish, gait, frames, |p, on| {
-                    path.push((back(p), on))
-                });
-                path
-            });
-            let flew = plain.iter().position(|&(_, on)| !on);
-            let landed =
-                flew.and_then(|f| plain[f..].iter().position(|&(_, on)| on).map(|l| f + l));
-            let n = landed.map_or(frames, |l| l + 1);
-            let top = plain[..n]
-                .iter()
-                .map(|(p, _)| p[1])
-                .fold(f64::MIN, f64::max);
-            assert!(
-                top > rise + 0.5 + 0.1,
-                "{}: {degrees}° over {drop} at {heading}°, {hz} Hz: no flight (top {top})",
-                S::NAME
-            );
-            assert_eq!(
-                snapped[..n],
-                plain[..n],
-                "{}: {degrees}° over {drop} at {heading}°, {hz} Hz: with the snap, and without",
-                S::NAME
-            );
+            let (start, gait) = ([-3.0, 0.5005, -5.0], Gait { hz, ..HALF });
+            let what = format!("{}: {degrees}° over {drop} at {heading}°, {hz} Hz", S::NAME);
+            let paths = with_and_without_snap(&level, start, wish, gait, frames);
+            let [snapped, plain] = paths.unwrap_or_else(|| panic!("{what}: never left the floor"));
+            let top = plain.iter().map(|(p, _)| p[1]).fold(f64::MIN, f64::max);
+            assert!(top > rise + 0.5 + 0.1, "{what}: no flight (top {top})");
+            assert_eq!(snapped, plain, "{what}: with the snap, and without");
         }
     }
 }

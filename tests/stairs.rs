@@ -6,7 +6,7 @@
 mod common;
 
 use ballcast::{Error, Scalar, Scene, Triangle, Vec3, slide::Slider};
-use common::walker::{Gait, HALF, walk};
+use common::walker::{Gait, HALF, walk, with_and_without_snap};
 use common::{P, Tolerance, back, quad, v};
 use fixed::types::{I16F16, I32F32};
 
@@ -236,31 +236,11 @@ fn leaving_an_edge_over_a_drop_is_a_fall<S: Tolerance>() {
         let level = scene::<S>(&quads);
         for (speed, hz) in [(2.0, 60.0), (8.0, 60.0), (8.0, 144.0)] {
             let frames = (3.0 * hz) as usize;
-            let [snapped, plain] = [0.25, 0.0].map(|snap| {
-                let gait = Gait { snap, hz, ..HALF };
-                let mut path = Vec::new();
-                let start = [-1.0, 0.5005, 0.0];
-                walk(&level, start, [speed, 0.0, 0.0], gait, frames, |p, on| {
-                    path.push((back(p), on))
-                });
-                path
-            });
-            // Up to where the plain walk, having left the floor, stands on one again.
-            let flew = plain.iter().position(|&(_, on)| !on);
-            let landed =
-                flew.and_then(|f| plain[f..].iter().position(|&(_, on)| on).map(|l| f + l));
-            let n = landed.map_or(frames, |l| l + 1);
-            assert!(
-                flew.is_some(),
-                "{}: {name} at {speed} units/s, {hz} Hz: never left the floor",
-                S::NAME
-            );
-            assert_eq!(
-                snapped[..n],
-                plain[..n],
-                "{}: {name} at {speed} units/s, {hz} Hz: with the snap, and without",
-                S::NAME
-            );
+            let (start, wish, gait) = ([-1.0, 0.5005, 0.0], [speed, 0.0, 0.0], Gait { hz, ..HALF });
+            let paths = with_and_without_snap(&level, start, wish, gait, frames);
+            let what = format!("{}: {name} at {speed} units/s, {hz} Hz", S::NAME);
+            let [snapped, plain] = paths.unwrap_or_else(|| panic!("{what}: never left the floor"));
+            assert_eq!(snapped, plain, "{what}: with the snap, and without");
         }
     }
 }

@@ -67,13 +67,14 @@ pub(super) fn stand_off<S: Scalar>(
         // Travel to the contact of no more than a position's rounding is rounding too: carried
         // a step sideways every frame, a resting ball crept.
         if into >= -along(rest) {
+            let m = magnitude(rest);
             let least = if S::PRECISION.relative {
                 rounding
             } else {
-                magnitude(rest).mul(S::ONE - hit.alpha).mul(S::EPSILON)
+                m.mul(S::ONE - hit.alpha).mul(S::EPSILON)
             };
             let lift = if -into > least { -into } else { least };
-            let settled = magnitude(rest).mul(hit.alpha) <= rounding;
+            let settled = m.mul(hit.alpha) <= rounding;
             return (
                 if settled { S::ZERO } else { hit.alpha },
                 hit.normal.scale(lift),

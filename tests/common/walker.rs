@@ -90,3 +90,33 @@ pub fn walk_with<S: Scalar, G: Geometry<S>>(
     }
     p
 }
+
+/// A frame of a walk: the ball's centre and whether it is grounded.
+pub type Frame = (P, bool);
+
+/// [`walk`] with `gait`'s snap and without any (the ground probe alone), frame by frame, cut to
+/// where the walk without the snap, having left the floor, stands on one again (the whole walk
+/// if it does not land). `None` if the walk without the snap never leaves the floor.
+pub fn with_and_without_snap<S: Scalar, G: Geometry<S>>(
+    level: &G,
+    start: P,
+    wish: P,
+    gait: Gait,
+    frames: usize,
+) -> Option<[Vec<Frame>; 2]> {
+    let [snapped, plain] = [gait.snap, 0.0].map(|snap| {
+        let mut path = Vec::new();
+        let gait = Gait { snap, ..gait };
+        walk(level, start, wish, gait, frames, |p, on| {
+            path.push((super::back(p), on))
+        });
+        path
+    });
+    let flew = plain.iter().position(|&(_, on)| !on)?;
+    let landed = plain[flew..].iter().position(|&(_, on)| on);
+    let n = landed.map_or(frames, |l| flew + l + 1);
+    Some([snapped, plain].map(|mut path| {
+        path.truncate(n);
+        path
+    }))
+}
