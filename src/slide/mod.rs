@@ -20,6 +20,7 @@
 //! [`Slider::snap_to_floor`] (the probe reaching further down, for a walk going down stairs)
 //! and [`Slider::step_slide`] (a walk that steps up onto low ledges).
 
+mod character;
 mod push;
 mod resolve;
 mod rules;
@@ -28,6 +29,7 @@ mod step;
 
 use crate::contact::unit;
 use crate::{Error, Geometry, Scalar, SceneHit, Sweep, Vec3, check};
+pub use character::Character;
 use heapless::Vec;
 use resolve::{resolve, settle};
 use rules::{FloorStop, Planes, add_planes, constrain, holds, magnitude};

@@ -3,7 +3,7 @@
 //! floor, and the floor snap where a walk that began on the floor left it.
 
 use super::{P, v};
-use ballcast::{Geometry, Scalar, Vec3, slide::Slider};
+use ballcast::{Geometry, Scalar, Vec3, slide::Character};
 
 /// A walker's radius, frames a second, step height (up) and snap depth (down).
 #[derive(Clone, Copy)]
@@ -37,7 +37,8 @@ pub fn walk<S: Scalar, G: Geometry<S>>(
     walk_with(level, start, |_, _| wish, gait, frames, each)
 }
 
-/// [`walk`] wishing `wish(frame, position)` in each frame.
+/// [`walk`] wishing `wish(frame, position)` in each frame: the recipe is
+/// [`Character::update`], which the README spells out.
 pub fn walk_with<S: Scalar, G: Geometry<S>>(
     level: &G,
     start: P,
@@ -46,49 +47,16 @@ pub fn walk_with<S: Scalar, G: Geometry<S>>(
     frames: usize,
     mut each: impl FnMut(Vec3<S>, bool),
 ) -> Vec3<S> {
-    let (dt, g) = (S::from_f64(1.0 / gait.hz), S::from_f64(9.81));
-    let (up, walkable) = (v::<S>([0.0, 1.0, 0.0]), S::from_f64(0.5f64.sqrt()));
-    let ball = Slider::new(S::from_f64(gait.r)).unwrap();
-    let ball = ball.with_max_slope(up, walkable).unwrap();
-    let (step, snap) = (S::from_f64(gait.step), S::from_f64(gait.snap));
-    let (mut p, mut vel, mut floor) = (v::<S>(start), Vec3::ZERO, None);
+    let (dt, gravity) = (S::from_f64(1.0 / gait.hz), v::<S>([0.0, -9.81, 0.0]));
+    let me = Character::new(v::<S>(start), S::from_f64(gait.r)).unwrap();
+    let mut me = me.with_step(S::from_f64(gait.step)).unwrap();
+    me = me.with_snap(S::from_f64(gait.snap)).unwrap();
     for frame in 0..frames {
-        let walked = floor.is_some();
-        let out = match floor {
-            Some(n) => {
-                let press = Vec3::ZERO - n * g.mul(dt).mul(dt);
-                let pressed = ball.slide(level, p, press).unwrap();
-                vel = v::<S>(wish(frame, p)).reject_from_normalized(n);
-                let out = ball
-                    .step_slide(level, pressed.position, vel * dt, up, walkable, step)
-                    .unwrap();
-                floor = out.floor_normal(up, walkable).unwrap();
-                floor = floor.or(pressed.floor_normal(up, walkable).unwrap());
-                out
-            }
-            None => {
-                vel += v::<S>([0.0, -9.81, 0.0]) * dt;
-                let out = ball.slide(level, p, vel * dt).unwrap();
-                floor = out.floor_normal(up, walkable).unwrap();
-                out
-            }
-        };
-        p = out.position;
-        vel = ball.clip(&out, vel).unwrap();
-        // The probe reaches two skins down; a walk that began on the floor and left it reaches
-        // `snap` further (down a step, over a crest, up or down).
-        let depth = if walked { snap } else { S::ZERO };
-        if floor.is_none()
-            && let Some(f) = ball
-                .snap_to_floor(level, p, vel, up, walkable, depth)
-                .unwrap()
-            && (walked || vel.dot(f.normal) <= S::ZERO)
-        {
-            (floor, p) = (Some(f.normal), f.position);
-        }
-        each(p, floor.is_some());
+        let w = v::<S>(wish(frame, me.position));
+        me.update(level, w, gravity, dt).unwrap();
+        each(me.position, me.is_grounded());
     }
-    p
+    me.position
 }
 
 /// A frame of a walk: the ball's centre and whether it is grounded.

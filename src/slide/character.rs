@@ -1,0 +1,216 @@
+//! [`Character`]: the README's character loop as a type, one call a frame.
+
+use super::{Slide, Slider};
+use crate::{Error, Geometry, Scalar, Vec3, check};
+
+/// A walking ball: the character loop of game engines, one [`update`](Self::update) a frame.
+///
+/// On the floor, it presses into the floor along the floor's normal by `|gravity| dt²` (so it
+/// does not slide down a walkable slope), then walks by the wished velocity's part along the
+/// floor's plane times `dt`, stepping onto ledges up to its step height
+/// ([`Slider::step_slide`], Quake's `PM_StepSlideMove`); in the air, gravity adds to its
+/// velocity and it moves by that (the wish steers only on the floor: no air control). Its velocity then keeps what the contacts allow
+/// ([`Slider::clip`]). Where no move touched a floor it probes two skins down
+/// ([`Slider::probe_floor`]), and a walk that began on the floor and left it (down a step,
+/// over a crest, up a ramp's top) is snapped down onto the floor within its snap depth
+/// ([`Slider::snap_to_floor`]; Source's `StayOnGround`, Godot's floor snap), while off a
+/// cliff or a ramp's lip over a deeper drop it falls or flies. Slopes steeper than the slope
+/// limit hold it back as walls ([`Slider::with_max_slope`]). It has no friction and no
+/// inertia on the floor: it walks at the wished speed at once.
+///
+/// Defaults: `up` along +y, slopes up to 45° walkable, a step height and a snap depth of half
+/// the radius each, the default [`skin`](super::skin). The fields are the state a game keeps:
+/// [`position`](Self::position) and [`velocity`](Self::velocity) may be set between frames
+/// (a teleport; a knock-back, with [`leave_floor`](Self::leave_floor)).
+///
+/// ```
+/// use ballcast::{Scene, Triangle, Vec3, slide::Character};
+/// let v = Vec3::new;
+/// let mut level: Scene<f32, 2> = Scene::new();
+/// level.push(Triangle::new(v(-50.0, 0.0, -50.0), v(-50.0, 0.0, 50.0), v(50.0, 0.0, 50.0)))?;
+/// level.push(Triangle::new(v(-50.0, 0.0, -50.0), v(50.0, 0.0, 50.0), v(50.0, 0.0, -50.0)))?;
+/// let mut me = Character::new(v(0.0, 2.0, 0.0), 0.5)?;
+/// let (gravity, dt) = (v(0.0, -9.81, 0.0), 1.0 / 60.0);
+/// for frame in 0..120 {
+///     me.update(&level, v(2.0, 0.0, 0.0), gravity, dt)?;
+///     if frame == 90 {
+///         assert!(me.jump(4.0)); // only from the floor
+///     }
+/// }
+/// assert!(me.position.x > 2.0 && !me.is_grounded());
+/// # Ok::<(), ballcast::Error>(())
+/// ```
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Character<S> {
+    ball: Slider<S>,
+    up: Vec3<S>,
+    min_cos: S,
+    step: S,
+    snap: S,
+    floor: Option<Vec3<S>>,
+    /// The ball's centre.
+    pub position: Vec3<S>,
+    /// Its velocity, units per second: on the floor, the wished velocity along it as the
+    /// contacts left it; in the air, what gravity and the contacts made of it.
+    pub velocity: Vec3<S>,
+}
+
+impl<S: Scalar> Character<S> {
+    /// A ball of `radius` at rest at `position`, in the air until its first update finds a
+    /// floor, with the defaults above.
+    ///
+    /// Errors: as [`Slider::new`], and [`Error::NaN`] or [`Error::OutOfRange`] for a
+    /// `position` outside `±`[`Scalar::LIMIT`].
+    pub fn new(position: Vec3<S>, radius: S) -> Result<Self, Error> {
+        let up = Vec3::Y;
+        let min_cos = S::from_f64(core::f64::consts::FRAC_1_SQRT_2);
+        let half = S::div_pow2(check::radius(radius)?, 1);
+        Ok(Self {
+            ball: Slider::new(radius)?.with_max_slope(up, min_cos)?,
+            up,
+            min_cos,
+            step: half,
+            snap: half,
+            floor: None,
+            position: check::point(position, S::LIMIT)?,
+            velocity: Vec3::ZERO,
+        })
+    }
+
+    /// The same character with `up` (any length) and the cosine of the steepest walkable slope.
+    ///
+    /// Errors: as [`Slider::with_max_slope`].
+    pub fn with_slope(self, up: Vec3<S>, min_cos: S) -> Result<Self, Error> {
+        let ball = self.ball.with_max_slope(up, min_cos)?;
+        Ok(Self {
+            ball,
+            up,
+            min_cos,
+            ..self
+        })
+    }
+
+    /// The same character stepping onto ledges up to `height` (zero: none).
+    ///
+    /// Errors: [`Error::NaN`], or [`Error::OutOfRange`] outside `[0, LIMIT]`.
+    pub fn with_step(self, height: S) -> Result<Self, Error> {
+        let step = check::within(height, S::ZERO, S::LIMIT)?;
+        Ok(Self { step, ..self })
+    }
+
+    /// The same character snapped down onto the floor up to `depth` below it where its walk
+    /// left the floor (zero: the ground probe alone). Choose about the highest step down, and
+    /// at least the drop of a walk down the steepest walkable slope in a frame.
+    ///
+    /// Errors: [`Error::NaN`], or [`Error::OutOfRange`] outside `[0, LIMIT]`.
+    pub fn with_snap(self, depth: S) -> Result<Self, Error> {
+        let snap = check::within(depth, S::ZERO, S::LIMIT)?;
+        Ok(Self { snap, ..self })
+    }
+
+    /// The same character keeping a gap of `skin` from what it touches (see
+    /// [`Slider::with_skin`]).
+    ///
+    /// Errors: as [`Slider::with_skin`].
+    pub fn with_skin(self, skin: S) -> Result<Self, Error> {
+        let ball = self.ball.with_skin(skin)?;
+        Ok(Self { ball, ..self })
+    }
+
+    /// The ball's settings, for queries of one's own (a probe, a cast ahead).
+    pub fn slider(&self) -> Slider<S> {
+        self.ball
+    }
+
+    /// The normal of the floor it stands on, if any ([`Slide::floor_normal`]'s, or the probe's).
+    pub fn floor_normal(&self) -> Option<Vec3<S>> {
+        self.floor
+    }
+
+    /// Whether it stands on a floor: the engines' `is_on_floor`.
+    pub fn is_grounded(&self) -> bool {
+        self.floor.is_some()
+    }
+
+    /// Leaves the floor (a knock-back, a launch): the next update moves it as in the air.
+    pub fn leave_floor(&mut self) {
+        self.floor = None;
+    }
+
+    /// A jump: where it stands on a floor, adds `speed` along `up` to its velocity, leaves the
+    /// floor and returns true; in the air, does nothing and returns false.
+    pub fn jump(&mut self, speed: S) -> bool {
+        if self.floor.is_none() {
+            return false;
+        }
+        let up = self.up.try_normalize().unwrap_or(Vec3::Y);
+        self.velocity += up * speed;
+        self.floor = None;
+        true
+    }
+
+    /// One frame of `dt` seconds: walking at the `wish`ed velocity (its part along the floor)
+    /// where it stands on a floor, falling under `gravity` where it does not. Returns the move
+    /// (its contacts: what it hit, where and when in the frame).
+    ///
+    /// Errors: those of the slides it makes ([`Slider::slide`], [`Slider::step_slide`],
+    /// [`Slider::snap_to_floor`]): a position or move outside the range, a NaN. On an error
+    /// the character is left as it was.
+    pub fn update<G: Geometry<S> + ?Sized>(
+        &mut self,
+        level: &G,
+        wish: Vec3<S>,
+        gravity: Vec3<S>,
+        dt: S,
+    ) -> Result<Slide<S>, Error> {
+        let mut next = *self;
+        let out = next.frame(level, wish, gravity, dt)?;
+        *self = next;
+        Ok(out)
+    }
+
+    /// [`update`](Self::update) on `self`, which the caller discards on an error.
+    fn frame<G: Geometry<S> + ?Sized>(
+        &mut self,
+        level: &G,
+        wish: Vec3<S>,
+        gravity: Vec3<S>,
+        dt: S,
+    ) -> Result<Slide<S>, Error> {
+        let (ball, up, min_cos) = (self.ball, self.up, self.min_cos);
+        let walked = self.floor.is_some();
+        let out = match self.floor {
+            Some(n) => {
+                let press = Vec3::ZERO - n * gravity.length().mul(dt).mul(dt);
+                let pressed = ball.slide(level, self.position, press)?;
+                self.velocity = wish.reject_from_normalized(n);
+                let walk = self.velocity * dt;
+                let out = ball.step_slide(level, pressed.position, walk, up, min_cos, self.step)?;
+                let floor = out.floor_normal(up, min_cos)?;
+                self.floor = floor.or(pressed.floor_normal(up, min_cos)?);
+                out
+            }
+            None => {
+                self.velocity += gravity * dt;
+                let out = ball.slide(level, self.position, self.velocity * dt)?;
+                self.floor = out.floor_normal(up, min_cos)?;
+                out
+            }
+        };
+        self.position = out.position;
+        self.velocity = ball.clip(&out, self.velocity)?;
+        // The probe reaches two skins down; a walk that began on the floor and left it reaches
+        // the snap's depth further. A ball that was in the air is not put on a floor it moves
+        // away from (a jump's first frames).
+        if self.floor.is_none() {
+            let depth = if walked { self.snap } else { S::ZERO };
+            let found =
+                ball.snap_to_floor(level, self.position, self.velocity, up, min_cos, depth)?;
+            if let Some(f) = found.filter(|f| walked || self.velocity.dot(f.normal) <= S::ZERO) {
+                (self.floor, self.position) = (Some(f.normal), f.position);
+            }
+        }
+        Ok(out)
+    }
+}

@@ -1,0 +1,154 @@
+//! `slide::Character`, the README's character loop as a type: jumps only from the floor, an
+//! update that fails changes nothing, bad settings are errors. Its walking, stepping and
+//! snapping are those of the recipe, tested through it in `tests/steps.rs`,
+//! `tests/stairs.rs` and `tests/crests.rs`. Every property in every scalar.
+
+mod common;
+
+use ballcast::{Error, Scalar, Scene, Triangle, Vec3, slide::Character};
+use common::{Tolerance, quad, v};
+use fixed::types::{I16F16, I32F32};
+
+/// A floor at y = 0, 40 square.
+fn floor<S: Scalar>() -> Scene<S, 2> {
+    let mut s = Scene::new();
+    for t in quad([-20.0, 0.0, -20.0], [0.0, 0.0, 40.0], [40.0, 0.0, 0.0]) {
+        s.push(Triangle::new(v(t[0]), v(t[1]), v(t[2]))).unwrap();
+    }
+    s
+}
+
+/// Dropped from 1 above the floor, the ball lands within half a second and stays grounded;
+/// a jump at 4 units/s from the floor leaves it (true), rises (to about 0.8 above the floor:
+/// `v² / 2g`), and asked again in the air does nothing (false); it lands again within a second.
+fn jumps_only_from_the_floor<S: Tolerance>() {
+    let level = floor::<S>();
+    let (gravity, dt) = (v::<S>([0.0, -9.81, 0.0]), S::from_f64(1.0 / 60.0));
+    let mut me = Character::new(v::<S>([0.0, 1.5, 0.0]), S::from_f64(0.5)).unwrap();
+    assert!(!me.jump(S::from_f64(4.0)), "{}: jumped in the air", S::NAME);
+    let walk = v::<S>([1.0, 0.0, 0.0]);
+    let landed = (0..30).position(|_| {
+        me.update(&level, walk, gravity, dt).unwrap();
+        me.is_grounded()
+    });
+    assert!(landed.is_some(), "{}: never landed", S::NAME);
+    assert!(
+        me.jump(S::from_f64(4.0)),
+        "{}: no jump from the floor",
+        S::NAME
+    );
+    let mut top = 0.0f64;
+    let mut back_down = None;
+    for frame in 0..60 {
+        me.update(&level, walk, gravity, dt).unwrap();
+        top = top.max(me.position.y.to_f64());
+        if frame == 5 {
+            assert!(!me.jump(S::from_f64(4.0)), "{}: jumped in the air", S::NAME);
+        }
+        if me.is_grounded() {
+            back_down = Some(frame);
+            break;
+        }
+    }
+    let rise = top - 0.5;
+    assert!((0.7..0.9).contains(&rise), "{}: rose {rise}", S::NAME);
+    assert!(
+        back_down.is_some_and(|f| f > 20),
+        "{}: landed at {back_down:?}",
+        S::NAME
+    );
+}
+
+/// A frame whose wish is NaN, or whose walk would leave the range, is an error, and the
+/// character is as it was: position, velocity and floor.
+fn an_update_that_fails_changes_nothing<S: Tolerance>() {
+    let level = floor::<S>();
+    let (gravity, dt) = (v::<S>([0.0, -9.81, 0.0]), S::from_f64(1.0 / 60.0));
+    let mut me = Character::new(v::<S>([0.0, 0.6, 0.0]), S::from_f64(0.5)).unwrap();
+    for _ in 0..30 {
+        me.update(&level, Vec3::ZERO, gravity, dt).unwrap();
+    }
+    assert!(me.is_grounded(), "{}", S::NAME);
+    let before = me;
+    let nan = Vec3::new(S::ZERO, S::ZERO, S::from_f64(f64::NAN));
+    if S::from_f64(f64::NAN).to_f64().is_nan() {
+        assert!(me.update(&level, nan, gravity, dt).is_err(), "{}", S::NAME);
+        assert_eq!(me, before, "{}", S::NAME);
+    }
+    // Teleported next to the range's edge, a walk over it.
+    me.position.z = S::LIMIT - S::ONE;
+    let before = me;
+    let out = me.update(&level, v::<S>([0.0, 0.0, 2.0]), gravity, S::ONE);
+    assert!(out.is_err(), "{}: {out:?}", S::NAME);
+    assert_eq!(me, before, "{}", S::NAME);
+}
+
+/// Negative or NaN step heights and snap depths, a zero `up`, a slope limit beyond one, a
+/// negative radius and a position out of range are errors, not characters.
+fn bad_settings_are_errors<S: Tolerance>() {
+    let me = Character::new(v::<S>([0.0, 1.0, 0.0]), S::from_f64(0.5)).unwrap();
+    let minus = S::from_f64(-0.1);
+    assert!(
+        matches!(me.with_step(minus), Err(Error::OutOfRange { .. })),
+        "{}",
+        S::NAME
+    );
+    assert!(
+        matches!(me.with_snap(minus), Err(Error::OutOfRange { .. })),
+        "{}",
+        S::NAME
+    );
+    assert_eq!(
+        me.with_slope(Vec3::ZERO, S::ONE),
+        Err(Error::ZeroVector),
+        "{}",
+        S::NAME
+    );
+    assert!(
+        me.with_slope(Vec3::Y, S::from_f64(1.5)).is_err(),
+        "{}",
+        S::NAME
+    );
+    assert!(
+        me.with_skin(S::ONE).is_err(),
+        "{}: a skin beyond the radius",
+        S::NAME
+    );
+    let r = S::from_f64(-1.0);
+    assert_eq!(
+        Character::new(Vec3::ZERO, r),
+        Err(Error::NegativeRadius { value: -1.0 }),
+        "{}",
+        S::NAME
+    );
+    let out = v::<S>([0.0, S::LIMIT.to_f64(), 0.0]) + Vec3::Y;
+    if out.y > S::LIMIT {
+        let e = Character::new(out, S::ONE);
+        assert!(
+            matches!(e, Err(Error::OutOfRange { .. })),
+            "{}: {e:?}",
+            S::NAME
+        );
+    }
+}
+
+macro_rules! per_scalar {
+    ($($m:ident: $t:ty),*) => {$(mod $m {
+        #[allow(unused_imports)]
+        use super::*;
+        #[test]
+        fn jumps_only_from_the_floor() {
+            super::jumps_only_from_the_floor::<$t>();
+        }
+        #[test]
+        fn an_update_that_fails_changes_nothing() {
+            super::an_update_that_fails_changes_nothing::<$t>();
+        }
+        #[test]
+        fn bad_settings_are_errors() {
+            super::bad_settings_are_errors::<$t>();
+        }
+    })*};
+}
+
+per_scalar!(f64_: f64, f32_: f32, i32f32: I32F32, i16f16: I16F16);
