@@ -182,7 +182,9 @@ pub(super) fn constrain<S: Scalar>(v: Vec3<S>, planes: &[Vec3<S>], primal: Vec3<
         if into < S::ZERO { v - n.scale(into) } else { v }
     });
     let creases = planes.iter().enumerate().flat_map(|(i, a)| {
-        let lines = planes[i + 1..]
+        // The planes after `a` (`get`: no indexing, so no panic path for the link check).
+        let later = planes.get(i + 1..).unwrap_or_default();
+        let lines = later
             .iter()
             .filter_map(|b| S::direction(cross_unit(*a, *b)));
         lines.map(|(sin, c)| {

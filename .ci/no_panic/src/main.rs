@@ -16,6 +16,7 @@ use ballcast::winding::{Winding, winding};
 use ballcast::{
     CompactMesh, Error, Geometry, Grid, Heightfield, Hit, Mesh, SceneHit, StandardTriangle, Sweep,
     Triangle, Vec3,
+    slide::{Character, Slide},
 };
 use core::hint::black_box;
 use fixed::types::{I16F16, I32F32};
@@ -40,7 +41,7 @@ fn panic(_: &core::panic::PanicInfo) -> ! {
 }
 
 macro_rules! wrappers {
-    ($t:ty, $tri:ident, $sweep:ident, $face:ident, $cast:ident, $geometry:ident, $around:ident, $run:ident) => {
+    ($t:ty, $tri:ident, $sweep:ident, $face:ident, $cast:ident, $geometry:ident, $around:ident, $walk:ident, $run:ident) => {
         #[cfg(feature = "triangle")]
         #[unsafe(no_mangle)]
         #[inline(never)]
@@ -108,6 +109,20 @@ macro_rules! wrappers {
             ]
         }
 
+        /// A frame of the character loop (the whole response: slides, push-outs, steps, the
+        /// snap) on a slice.
+        #[unsafe(no_mangle)]
+        #[inline(never)]
+        pub fn $walk(
+            t: &[StandardTriangle<$t>],
+            me: &mut Character<$t>,
+            wish: Vec3<$t>,
+            gravity: Vec3<$t>,
+            dt: $t,
+        ) -> Result<Slide<$t>, Error> {
+            me.update(t, wish, gravity, dt)
+        }
+
         /// Calls the wrappers on values the optimiser cannot see.
         fn $run() {
             let tri = black_box(Triangle::<$t>::default());
@@ -137,6 +152,9 @@ macro_rules! wrappers {
                 let h = black_box(Heightfield::from_parts(v, z, z, 1, 1, &[], &[], [0, 0], 0));
                 black_box($geometry(black_box(&many[..]), &m, &c, &h, &s));
                 black_box($around(black_box(&many[..]), &m, &c, &h, v, tri.v0.x));
+                if let Ok(mut me) = Character::new(v, tri.v0.x) {
+                    black_box($walk(black_box(&many[..]), &mut me, v, black_box(v), z));
+                }
             }
         }
     };
@@ -150,6 +168,7 @@ wrappers!(
     ballcast_f32_cast,
     ballcast_f32_geometry,
     ballcast_f32_around,
+    ballcast_f32_walk,
     run_f32
 );
 wrappers!(
@@ -160,6 +179,7 @@ wrappers!(
     ballcast_f64_cast,
     ballcast_f64_geometry,
     ballcast_f64_around,
+    ballcast_f64_walk,
     run_f64
 );
 wrappers!(
@@ -170,6 +190,7 @@ wrappers!(
     ballcast_i16f16_cast,
     ballcast_i16f16_geometry,
     ballcast_i16f16_around,
+    ballcast_i16f16_walk,
     run_i16f16
 );
 wrappers!(
@@ -180,6 +201,7 @@ wrappers!(
     ballcast_i32f32_cast,
     ballcast_i32f32_geometry,
     ballcast_i32f32_around,
+    ballcast_i32f32_walk,
     run_i32f32
 );
 
