@@ -65,9 +65,10 @@ impl<S: Scalar> Character<S> {
     pub fn new(position: Vec3<S>, radius: S) -> Result<Self, Error> {
         let up = Vec3::Y;
         let min_cos = S::from_f64(core::f64::consts::FRAC_1_SQRT_2);
-        let half = S::div_pow2(check::radius(radius)?, 1);
+        let ball = Slider::new(radius)?;
+        let half = S::div_pow2(ball.radius(), 1);
         Ok(Self {
-            ball: Slider::new(radius)?.with_max_slope(up, min_cos)?,
+            ball: ball.with_max_slope(up, min_cos)?,
             up,
             min_cos,
             step: half,
