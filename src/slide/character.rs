@@ -165,53 +165,41 @@ impl<S: Scalar> Character<S> {
         gravity: Vec3<S>,
         dt: S,
     ) -> Result<Slide<S>, Error> {
-        let mut next = *self;
-        let out = next.frame(level, wish, gravity, dt)?;
-        *self = next;
-        Ok(out)
-    }
-
-    /// [`update`](Self::update) on `self`, which the caller discards on an error.
-    fn frame<G: Geometry<S> + ?Sized>(
-        &mut self,
-        level: &G,
-        wish: Vec3<S>,
-        gravity: Vec3<S>,
-        dt: S,
-    ) -> Result<Slide<S>, Error> {
-        let (ball, up, min_cos) = (self.ball, self.up, self.min_cos);
-        let walked = self.floor.is_some();
-        let out = match self.floor {
+        // Worked on a copy, kept only when every slide succeeded.
+        let mut me = *self;
+        let (ball, up, min_cos) = (me.ball, me.up, me.min_cos);
+        let walked = me.floor.is_some();
+        let out = match me.floor {
             Some(n) => {
                 let press = Vec3::ZERO - n * gravity.length().mul(dt).mul(dt);
-                let pressed = ball.slide(level, self.position, press)?;
-                self.velocity = wish.reject_from_normalized(n);
-                let walk = self.velocity * dt;
-                let out = ball.step_slide(level, pressed.position, walk, up, min_cos, self.step)?;
+                let pressed = ball.slide(level, me.position, press)?;
+                me.velocity = wish.reject_from_normalized(n);
+                let walk = me.velocity * dt;
+                let out = ball.step_slide(level, pressed.position, walk, up, min_cos, me.step)?;
                 let floor = out.floor_normal(up, min_cos)?;
-                self.floor = floor.or(pressed.floor_normal(up, min_cos)?);
+                me.floor = floor.or(pressed.floor_normal(up, min_cos)?);
                 out
             }
             None => {
-                self.velocity += gravity * dt;
-                let out = ball.slide(level, self.position, self.velocity * dt)?;
-                self.floor = out.floor_normal(up, min_cos)?;
+                me.velocity += gravity * dt;
+                let out = ball.slide(level, me.position, me.velocity * dt)?;
+                me.floor = out.floor_normal(up, min_cos)?;
                 out
             }
         };
-        self.position = out.position;
-        self.velocity = ball.clip(&out, self.velocity)?;
+        me.position = out.position;
+        me.velocity = ball.clip(&out, me.velocity)?;
         // The probe reaches two skins down; a walk that began on the floor and left it reaches
         // the snap's depth further. A ball that was in the air is not put on a floor it moves
         // away from (a jump's first frames).
-        if self.floor.is_none() {
-            let depth = if walked { self.snap } else { S::ZERO };
-            let found =
-                ball.snap_to_floor(level, self.position, self.velocity, up, min_cos, depth)?;
-            if let Some(f) = found.filter(|f| walked || self.velocity.dot(f.normal) <= S::ZERO) {
-                (self.floor, self.position) = (Some(f.normal), f.position);
+        if me.floor.is_none() {
+            let depth = if walked { me.snap } else { S::ZERO };
+            let found = ball.snap_to_floor(level, me.position, me.velocity, up, min_cos, depth)?;
+            if let Some(f) = found.filter(|f| walked || me.velocity.dot(f.normal) <= S::ZERO) {
+                (me.floor, me.position) = (Some(f.normal), f.position);
             }
         }
+        *self = me;
         Ok(out)
     }
 }
