@@ -1,13 +1,17 @@
 //! Input validation shared by the constructors.
 
-use crate::{Error, Scalar, Vec3};
+use crate::{Error, Input, Scalar, Vec3};
 
-/// Accepts a value that is not NaN and lies in `[min, max]` (infinities never do).
-pub(crate) fn within<S: Scalar>(v: S, min: S, max: S) -> Result<S, Error> {
+/// Accepts a value of `input` that is not NaN and lies in `[min, max]` (infinities never do).
+pub(crate) fn within<S: Scalar>(v: S, min: S, max: S, input: Input) -> Result<S, Error> {
     if v.partial_cmp(&v).is_none() {
-        Err(Error::NaN { triangle: None })
+        Err(Error::NaN {
+            input,
+            triangle: None,
+        })
     } else if !v.is_finite() || v > max || v < min {
         Err(Error::OutOfRange {
+            input,
             value: v.to_f64(),
             min: min.to_f64(),
             max: max.to_f64(),
@@ -22,10 +26,15 @@ pub(crate) fn within<S: Scalar>(v: S, min: S, max: S) -> Result<S, Error> {
 /// with the number itself in the error, before any saturation could hide it.
 pub(crate) fn convert<S: Scalar>(v: f64) -> Result<S, Error> {
     let l = S::LIMIT.to_f64();
+    let input = Input::Number;
     if v.is_nan() {
-        Err(Error::NaN { triangle: None })
+        Err(Error::NaN {
+            input,
+            triangle: None,
+        })
     } else if !(-l..=l).contains(&v) {
         Err(Error::OutOfRange {
+            input,
             value: v,
             min: -l,
             max: l,
@@ -36,22 +45,17 @@ pub(crate) fn convert<S: Scalar>(v: f64) -> Result<S, Error> {
     }
 }
 
-/// Accepts a value that is finite and at most `bound` in magnitude.
-pub(crate) fn value<S: Scalar>(v: S, bound: S) -> Result<S, Error> {
-    within(v, -bound, bound)
-}
-
-/// Accepts a point whose coordinates are finite and at most `bound` in magnitude.
-pub(crate) fn point<S: Scalar>(p: Vec3<S>, bound: S) -> Result<Vec3<S>, Error> {
-    value(p.x, bound)?;
-    value(p.y, bound)?;
-    value(p.z, bound)?;
+/// Accepts a point of `input` whose coordinates are finite and at most `bound` in magnitude.
+pub(crate) fn point<S: Scalar>(p: Vec3<S>, bound: S, input: Input) -> Result<Vec3<S>, Error> {
+    for c in [p.x, p.y, p.z] {
+        within(c, -bound, bound, input)?;
+    }
     Ok(p)
 }
 
 /// Accepts a radius that is finite, non-negative and at most [`Scalar::LIMIT`].
 pub(crate) fn radius<S: Scalar>(r: S) -> Result<S, Error> {
-    value(r, S::LIMIT)?;
+    within(r, -S::LIMIT, S::LIMIT, Input::Radius)?;
     if r < S::ZERO {
         return Err(Error::NegativeRadius { value: r.to_f64() });
     }

@@ -5,19 +5,22 @@ use core::fmt;
 /// Why a constructor or query refused its input, and where. Every fallible call returns one of
 /// these instead of panicking; once a value is constructed, every query on it succeeds.
 ///
-/// A plain `Copy` value, no allocation: offending values and limits are carried as `f64`
-/// (exact for `f32`, `f64` and `I16F16`; `I32F32` values beyond 53 significant bits are
-/// rounded), and the triangle index where the input was one of many (a [`Scene`](crate::Scene)
-/// push, a [`Mesh`](crate::Mesh) build, an index buffer, a level read with serde).
-/// [`Display`](fmt::Display) says it in a sentence:
+/// A plain `Copy` value, no allocation: which argument was refused ([`Input`]), offending
+/// values and limits as `f64` (exact for `f32`, `f64` and `I16F16`; `I32F32` values beyond 53
+/// significant bits are rounded), and the triangle index where the input was one of many (a
+/// [`Scene`](crate::Scene) push, a [`Mesh`](crate::Mesh) build, an index buffer, a level read
+/// with serde). [`Display`](fmt::Display) says it in a sentence:
 ///
 /// ```
-/// use ballcast::{Error, Scene, Triangle, Vec3};
+/// use ballcast::{Error, Input, Scene, Triangle, Vec3, move_and_slide};
 /// let mut s: Scene<f32, 4> = Scene::new();
 /// let p = Vec3::new(1.0, 2.0, 3.0);
 /// let e = s.push(Triangle::new(p, p, p)).unwrap_err();
 /// assert_eq!(e, Error::Degenerate { triangle: Some(0) });
 /// assert_eq!(e.to_string(), "triangle 0: degenerate (coincident or collinear vertices)");
+/// let e = move_and_slide(&s, p, Vec3::new(0.0, f32::NAN, 0.0), 0.5).unwrap_err();
+/// assert_eq!(e.input(), Some(Input::Displacement));
+/// assert_eq!(e.to_string(), "a coordinate of the displacement is NaN");
 /// ```
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
@@ -32,6 +35,8 @@ pub enum Error {
     },
     /// A coordinate, radius or other input is NaN.
     NaN {
+        /// The argument that holds it.
+        input: Input,
         /// The triangle's index, where the value was a vertex of one of many.
         triangle: Option<usize>,
     },
@@ -40,6 +45,8 @@ pub enum Error {
     /// coordinates already in a standard frame), an infinity, a skin outside `[0, radius]`,
     /// or a number in a file that the scalar cannot hold.
     OutOfRange {
+        /// The argument that holds it.
+        input: Input,
         /// The offending value (infinities included).
         value: f64,
         /// The smallest value accepted.
@@ -94,12 +101,107 @@ pub enum Error {
     ZeroVector,
 }
 
+/// The argument an [`Error::NaN`] or [`Error::OutOfRange`] is about, named as the calls name
+/// it. For a vector, the error is about one of its coordinates (the first refused, in the
+/// order x, y, z), whose value [`Error::OutOfRange`] gives.
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[non_exhaustive]
+pub enum Input {
+    /// Vertex 0, 1 or 2 of a triangle (the error gives the triangle's index where it was one
+    /// of many).
+    Vertex(u8),
+    /// A sweep's start, `p0`.
+    Start,
+    /// A sweep's end, `p1`.
+    End,
+    /// A ball's radius.
+    Radius,
+    /// A ball's centre: where a slide, a character or a query around a ball starts.
+    Position,
+    /// A slide's displacement.
+    Displacement,
+    /// Where a slide would end with nothing in its way: its position plus its displacement.
+    Target,
+    /// A velocity to clip.
+    Velocity,
+    /// The up direction of a floor rule.
+    Up,
+    /// The cosine of the steepest slope taken for a floor.
+    MaxSlope,
+    /// The gap a ball keeps from what it touches.
+    Skin,
+    /// The highest ledge a ball steps onto.
+    Step,
+    /// How far below a ball a floor is looked for and snapped to.
+    Snap,
+    /// The heading given to the snap (the ball's velocity).
+    Heading,
+    /// A point asked about (by [`winding()`](crate::winding()) or a standard frame).
+    Point,
+    /// A character's wished velocity.
+    Wish,
+    /// The acceleration of gravity.
+    Gravity,
+    /// A time step.
+    TimeStep,
+    /// A number converted to the scalar (read from a file, or from another scalar).
+    Number,
+}
+
+impl Input {
+    /// What the input is, as the error's sentence names it, and whether it is a vector.
+    const fn noun(self) -> (&'static str, bool) {
+        match self {
+            Input::Vertex(0) => ("vertex 0", true),
+            Input::Vertex(1) => ("vertex 1", true),
+            Input::Vertex(_) => ("vertex 2", true),
+            Input::Start => ("the start", true),
+            Input::End => ("the end", true),
+            Input::Radius => ("the radius", false),
+            Input::Position => ("the position", true),
+            Input::Displacement => ("the displacement", true),
+            Input::Target => ("the target (position + displacement)", true),
+            Input::Velocity => ("the velocity", true),
+            Input::Up => ("the up direction", true),
+            Input::MaxSlope => ("the cosine of the steepest slope", false),
+            Input::Skin => ("the skin", false),
+            Input::Step => ("the step height", false),
+            Input::Snap => ("the snap depth", false),
+            Input::Heading => ("the heading", true),
+            Input::Point => ("the point", true),
+            Input::Wish => ("the wished velocity", true),
+            Input::Gravity => ("gravity", true),
+            Input::TimeStep => ("the time step", false),
+            Input::Number => ("the number", false),
+        }
+    }
+}
+
+impl fmt::Display for Input {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self.noun() {
+            (noun, true) => write!(f, "a coordinate of {noun}"),
+            (noun, false) => f.write_str(noun),
+        }
+    }
+}
+
 impl Error {
+    /// The argument refused, for [`Error::NaN`] and [`Error::OutOfRange`].
+    pub const fn input(&self) -> Option<Input> {
+        match *self {
+            Error::NaN { input, .. } | Error::OutOfRange { input, .. } => Some(input),
+            _ => None,
+        }
+    }
+
     /// The triangle the error was found in, where the input was one of many.
     pub const fn triangle(&self) -> Option<usize> {
         match *self {
             Error::Degenerate { triangle }
-            | Error::NaN { triangle }
+            | Error::NaN { triangle, .. }
             | Error::OutOfRange { triangle, .. }
             | Error::Mismatch { triangle } => triangle,
             Error::VertexIndex { triangle, .. } => Some(triangle),
@@ -113,10 +215,15 @@ impl Error {
         let t = Some(index);
         match self {
             Error::Degenerate { .. } => Error::Degenerate { triangle: t },
-            Error::NaN { .. } => Error::NaN { triangle: t },
+            Error::NaN { input, .. } => Error::NaN { input, triangle: t },
             Error::OutOfRange {
-                value, min, max, ..
+                input,
+                value,
+                min,
+                max,
+                ..
             } => Error::OutOfRange {
+                input,
                 value,
                 min,
                 max,
@@ -142,10 +249,24 @@ impl fmt::Display for Error {
             Error::Degenerate { .. } => {
                 f.write_str("degenerate (coincident or collinear vertices)")
             }
-            Error::NaN { .. } => f.write_str("a coordinate or radius is NaN"),
+            Error::NaN { input, .. } => write!(f, "{input} is NaN"),
             Error::OutOfRange {
-                value, min, max, ..
+                input: Input::Number,
+                value,
+                min,
+                max,
+                ..
             } => write!(f, "{value} is outside the accepted range [{min}, {max}]"),
+            Error::OutOfRange {
+                input,
+                value,
+                min,
+                max,
+                ..
+            } => write!(
+                f,
+                "{input} is {value}, outside the accepted range [{min}, {max}]"
+            ),
             Error::NegativeRadius { value } => write!(f, "the radius {value} is negative"),
             Error::Full { capacity: 1 } => f.write_str("full: it holds 1 triangle"),
             Error::Full { capacity } => write!(f, "full: it holds {capacity} triangles"),

@@ -173,6 +173,7 @@ pub fn weld<S: Scalar>(triangles: &[Triangle<S>]) -> Result<Welded<S>, Error> {
         .position(|p| p.to_array().iter().any(unordered))
     {
         return Err(Error::NaN {
+            input: crate::Input::Vertex((k % 3) as u8),
             triangle: Some(k / 3),
         });
     }

@@ -146,7 +146,7 @@ mod xorshift;
 pub use bvh::{Grid, Node};
 pub use compact::{CompactError, CompactMesh, MeshIndex};
 pub use contact::Features;
-pub use error::Error;
+pub use error::{Error, Input};
 pub use face::standard_face;
 pub use heightfield::{Heightfield, HeightfieldError};
 pub use hit::{Contact, Hit};

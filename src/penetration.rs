@@ -7,7 +7,7 @@
 //! the nearest edge segment); the triangle with the largest overlap `radius - distance` wins.
 
 use crate::contact::unit;
-use crate::{Contact, Error, Geometry, Scalar, StandardTriangle, Vec3, check};
+use crate::{Contact, Error, Geometry, Input, Scalar, StandardTriangle, Vec3, check};
 
 /// The deepest overlap of a ball with a [`Geometry`]: a plain `Copy` struct.
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
@@ -67,7 +67,7 @@ pub fn penetration<S: Scalar, G: Geometry<S> + ?Sized>(
     centre: Vec3<S>,
     radius: S,
 ) -> Result<Option<Penetration<S>>, Error> {
-    let c = check::point(centre, S::LIMIT)?;
+    let c = check::point(centre, S::LIMIT, Input::Position)?;
     let r = check::radius(radius)?;
     Ok(deepest(scene, c, r))
 }

@@ -1,6 +1,6 @@
 //! The moving ball, validated once so that per-triangle tests need no checks.
 
-use crate::{Error, Scalar, Vec3, check};
+use crate::{Error, Input, Scalar, Vec3, check};
 
 /// A ball of radius `radius` moving in a straight line from `p0` to `p1`, validated.
 ///
@@ -8,12 +8,14 @@ use crate::{Error, Scalar, Vec3, check};
 /// testing the sweep against any number of triangles needs no further checks and cannot fail.
 ///
 /// ```
-/// use ballcast::{Error, Sweep, Vec3};
+/// use ballcast::{Error, Input, Sweep, Vec3};
 /// let s = Sweep::new(Vec3::new(0.0f32, 2.0, 0.0), Vec3::new(0.0, -2.0, 0.0), 0.5)?;
 /// assert_eq!(s.radius(), 0.5);
 /// assert_eq!(Sweep::new(s.p0(), s.p1(), -1.0).unwrap_err(), Error::NegativeRadius { value: -1.0 });
 /// let nan = Vec3::new(f32::NAN, 0.0, 0.0);
-/// assert_eq!(Sweep::new(s.p0(), nan, 1.0).unwrap_err(), Error::NaN { triangle: None });
+/// let e = Sweep::new(s.p0(), nan, 1.0).unwrap_err();
+/// assert_eq!(e, Error::NaN { input: Input::End, triangle: None });
+/// assert_eq!(e.to_string(), "a coordinate of the end is NaN");
 /// # Ok::<(), Error>(())
 /// ```
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
@@ -31,8 +33,8 @@ impl<S: Scalar> Sweep<S> {
     /// `±`[`Scalar::LIMIT`]), [`Error::NegativeRadius`], each with the value refused.
     pub fn new(p0: Vec3<S>, p1: Vec3<S>, radius: S) -> Result<Self, Error> {
         Ok(Self {
-            p0: check::point(p0, S::LIMIT)?,
-            p1: check::point(p1, S::LIMIT)?,
+            p0: check::point(p0, S::LIMIT, Input::Start)?,
+            p1: check::point(p1, S::LIMIT, Input::End)?,
             radius: check::radius(radius)?,
         })
     }
@@ -74,8 +76,8 @@ impl<S: Scalar> StandardSweep<S> {
     pub fn new(p0: Vec3<S>, p1: Vec3<S>, radius: S) -> Result<Self, Error> {
         let bound = check::standard_bound::<S>();
         Ok(Self {
-            p0: check::point(p0, bound)?,
-            p1: check::point(p1, bound)?,
+            p0: check::point(p0, bound, Input::Start)?,
+            p1: check::point(p1, bound, Input::End)?,
             radius: check::radius(radius)?,
         })
     }

@@ -1,7 +1,7 @@
 //! Triangles and their standard frame: the one rigid transform per triangle that the face test
 //! (and every later contact test) runs in.
 
-use crate::{Error, Features, Scalar, StandardSweep, Sweep, Vec3, check};
+use crate::{Error, Features, Input, Scalar, StandardSweep, Sweep, Vec3, check};
 
 /// A triangle as three world-space vertices: a plain `Copy` struct with no invariant.
 ///
@@ -284,7 +284,7 @@ impl<S: Scalar> StandardTriangle<S> {
     /// Errors: [`Error::NaN`] or [`Error::OutOfRange`] for a point outside
     /// `±`[`Scalar::LIMIT`]. The result lies within `3.5 * LIMIT` of the origin.
     pub fn to_standard(&self, p: Vec3<S>) -> Result<Vec3<S>, Error> {
-        Ok(self.standard_point(check::point(p, S::LIMIT)?))
+        Ok(self.standard_point(check::point(p, S::LIMIT, Input::Point)?))
     }
 
     /// Transforms a validated sweep into the standard frame; the radius is unchanged, and so is

@@ -10,7 +10,7 @@
 //! wound the wrong way. Either flip those (swap `v1` and `v2`) or push them with
 //! [`Scene::push_two_sided`](crate::Scene::push_two_sided).
 
-use crate::{Error, Geometry, Scalar, Vec3, check};
+use crate::{Error, Geometry, Input, Scalar, Vec3, check};
 
 /// How a scene's triangles face a point: see [`winding`].
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
@@ -51,7 +51,7 @@ pub fn winding<S: Scalar, G: Geometry<S> + ?Sized>(
     scene: &G,
     from: Vec3<S>,
 ) -> Result<Winding, Error> {
-    let p = check::point(from, S::LIMIT)?;
+    let p = check::point(from, S::LIMIT, Input::Point)?;
     let l = Vec3::new(S::LIMIT, S::LIMIT, S::LIMIT);
     let mut w = Winding::default();
     scene.visit(-l, l, &mut |i, t| {

@@ -89,7 +89,12 @@ fn weld_keeps_signed_zeros_apart_and_refuses_nans() {
     let nan = Triangle::new(v(f32::NAN, 0.0, 0.0), v(1.0, 0.0, 0.0), v(0.0, 0.0, 1.0));
     let mut soup = vec![a; 5];
     soup.extend(vec![nan; 20_000]);
-    assert_eq!(weld(&soup), Err(Error::NaN { triangle: Some(5) }));
+    let corner = ballcast::Input::Vertex(0);
+    let e = Error::NaN {
+        input: corner,
+        triangle: Some(5),
+    };
+    assert_eq!(weld(&soup), Err(e));
 }
 
 macro_rules! per_scalar {

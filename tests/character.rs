@@ -129,6 +129,7 @@ fn a_ball_keeps_its_own_skin<S: Tolerance>() {
         let e = ball.with_skin(S::from_f64(bad)).unwrap_err();
         let limit = S::from_f64(0.5).to_f64();
         let expected = Error::OutOfRange {
+            input: ballcast::Input::Skin,
             value: S::from_f64(bad).to_f64(),
             min: 0.0,
             max: limit,

@@ -1,9 +1,13 @@
-//! Errors that say where: the triangle's index, the offending value and the limit it broke, NaN
-//! as its own cause, and a sentence from `Display`.
+//! Errors that say where: the argument refused, the triangle's index, the offending value and
+//! the limit it broke, NaN as its own cause, and a sentence from `Display`.
 
 mod common;
 
-use ballcast::{Error, Scalar, Scene, Slider, Sweep, Triangle, Vec3, move_and_slide};
+use ballcast::slide::Character;
+use ballcast::{
+    Error, Input, Scalar, Scene, Slider, Sweep, Triangle, Vec3, move_and_slide, penetration,
+    winding,
+};
 use common::v;
 use fixed::types::{I16F16, I32F32};
 
@@ -51,6 +55,7 @@ fn out_of_range_vertex_gives_value_and_limit<S: Scalar>() {
     assert_eq!(
         e,
         Error::OutOfRange {
+            input: Input::Vertex(2),
             value: far,
             min: -l,
             max: l,
@@ -59,8 +64,88 @@ fn out_of_range_vertex_gives_value_and_limit<S: Scalar>() {
     );
     assert_eq!(
         e.to_string(),
-        format!("triangle 1: {far} is outside the accepted range [-{l}, {l}]")
+        format!(
+            "triangle 1: a coordinate of vertex 2 is {far}, outside the accepted range \
+             [-{l}, {l}]"
+        )
     );
+}
+
+/// Every entry point names the argument it refused: each call below is given one value
+/// beyond the range in one argument, all others good.
+fn each_argument_is_named<S: Scalar>() {
+    let far = S::from_f64(2.0 * S::LIMIT.to_f64());
+    let (z, one, half) = (Vec3::<S>::ZERO, S::ONE, S::from_f64(0.5));
+    let out = Vec3::new(S::ZERO, far, S::ZERO);
+    let named = |r: Result<(), Error>| match r {
+        Err(Error::OutOfRange { input, value, .. }) if value == far.to_f64() => Some(input),
+        _ => None,
+    };
+    let scene: Scene<S, 1> = Scene::new();
+    let ball = Slider::new(half).unwrap();
+    let dt = S::from_f64(1.0 / 60.0);
+    let me = Character::new(z, half).unwrap();
+    let update = |wish, gravity, dt| me.clone().update(&scene, wish, gravity, dt).map(drop);
+    let (three_quarters, half_way) = (
+        S::from_f64(0.75 * S::LIMIT.to_f64()),
+        S::div_pow2(S::LIMIT, 1),
+    );
+    let cases = [
+        (Sweep::new(out, z, one).map(drop), Input::Start),
+        (Sweep::new(z, out, one).map(drop), Input::End),
+        (Sweep::new(z, z, far).map(drop), Input::Radius),
+        (
+            move_and_slide(&scene, out, z, half).map(drop),
+            Input::Position,
+        ),
+        (
+            move_and_slide(&scene, z, out, half).map(drop),
+            Input::Displacement,
+        ),
+        (ball.with_skin(far).map(drop), Input::Skin),
+        (ball.with_max_slope(out, half).map(drop), Input::Up),
+        (ball.with_max_slope(Vec3::Y, far).map(drop), Input::MaxSlope),
+        (
+            ball.snap_to_floor(&scene, z, out, Vec3::Y, half, one)
+                .map(drop),
+            Input::Heading,
+        ),
+        (
+            ball.snap_to_floor(&scene, z, z, Vec3::Y, half, far)
+                .map(drop),
+            Input::Snap,
+        ),
+        (me.with_step(far).map(drop), Input::Step),
+        (update(out, z, dt), Input::Wish),
+        (update(z, out, dt), Input::Gravity),
+        (update(z, z, far), Input::TimeStep),
+        (penetration(&scene, out, half).map(drop), Input::Position),
+        (winding(&scene, out).map(drop), Input::Point),
+        (out.cast::<f64>().try_cast::<S>().map(drop), Input::Number),
+    ];
+    for (k, (result, input)) in cases.into_iter().enumerate() {
+        assert_eq!(
+            named(result),
+            Some(input),
+            "{} case {k}",
+            core::any::type_name::<S>()
+        );
+    }
+    // A move whose target (position + displacement) leaves the range, each part within it.
+    let e = move_and_slide(
+        &scene,
+        Vec3::new(S::ZERO, three_quarters, S::ZERO),
+        Vec3::new(S::ZERO, half_way, S::ZERO),
+        half,
+    );
+    assert_eq!(e.map(drop).unwrap_err().input(), Some(Input::Target));
+    let e = Sweep::new(z, out, one).unwrap_err();
+    let l = S::LIMIT.to_f64();
+    let said = format!(
+        "a coordinate of the end is {}, outside the accepted range [-{l}, {l}]",
+        far.to_f64()
+    );
+    assert_eq!(e.to_string(), said);
 }
 
 /// A NaN coordinate reads as NaN, not as out of range, for every entry point that takes one.
@@ -68,15 +153,25 @@ fn nan_is_its_own_cause<S: Scalar>() {
     let (z, nan) = (Vec3::new(0.0, 0.0, 0.0), S::from_f64(f64::NAN));
     let p: Vec3<S> = z.cast();
     let bad = Vec3::new(S::ZERO, nan, S::ZERO);
-    let e = Error::NaN { triangle: None };
-    assert_eq!(Sweep::new(p, bad, S::ONE).unwrap_err(), e);
-    assert_eq!(Slider::new(nan).unwrap_err(), e);
+    let e = |input| Error::NaN {
+        input,
+        triangle: None,
+    };
+    assert_eq!(Sweep::new(p, bad, S::ONE).unwrap_err(), e(Input::End));
+    assert_eq!(Slider::new(nan).unwrap_err(), e(Input::Radius));
     let scene: Scene<S, 1> = Scene::new();
-    assert_eq!(move_and_slide(&scene, p, bad, S::ONE).unwrap_err(), e);
-    assert_eq!(e.to_string(), "a coordinate or radius is NaN");
+    let moved = move_and_slide(&scene, p, bad, S::ONE).unwrap_err();
+    assert_eq!(moved, e(Input::Displacement));
+    assert_eq!(moved.to_string(), "a coordinate of the displacement is NaN");
+    assert_eq!(e(Input::Radius).to_string(), "the radius is NaN");
     let mut scene: Scene<S, 1> = Scene::new();
     let t = Triangle::new(p, bad, v([1.0, 0.0, 0.0]));
-    assert_eq!(scene.push(t).unwrap_err(), Error::NaN { triangle: Some(0) });
+    let pushed = scene.push(t).unwrap_err();
+    assert_eq!(pushed, e(Input::Vertex(1)).at(0));
+    assert_eq!(
+        pushed.to_string(),
+        "triangle 0: a coordinate of vertex 1 is NaN"
+    );
 }
 
 /// Negative radius and a radius too small for the scalar give the value (and the limit).
@@ -111,6 +206,7 @@ macro_rules! per_scalar {
             super::out_of_range_vertex_gives_value_and_limit::<$t>()
         }
         #[test] fn radius_errors_give_the_radius() { super::radius_errors_give_the_radius::<$t>() }
+        #[test] fn each_argument_is_named() { super::each_argument_is_named::<$t>() }
     })*};
 }
 per_scalar!(f32_: f32, f64_: f64, i16f16: I16F16, i32f32: I32F32);

@@ -5,7 +5,9 @@
 
 mod common;
 
-use ballcast::{Error, Features, Scalar, StandardSweep, StandardTriangle, Sweep, Triangle, Vec3};
+use ballcast::{
+    Error, Features, Input, Scalar, StandardSweep, StandardTriangle, Sweep, Triangle, Vec3,
+};
 use common::{Case, P, Tolerance, model, v};
 use fixed::types::{I16F16, I32F32};
 use proptest::prelude::*;
@@ -140,20 +142,25 @@ fn safe_range_is_accepted_and_enforced<S: Scalar>() {
     let ok = Sweep::new(v([l, -l, l]), v([-l, l, -l]), S::LIMIT);
     assert!(ok.is_ok());
     // The error names the value and the range it left.
-    let e = |value: f64| Error::OutOfRange {
+    let e = |input, value: f64| Error::OutOfRange {
+        input,
         value: S::from_f64(value).to_f64(),
         min: -l,
         max: l,
         triangle: None,
     };
     let sweep = |p0, p1, r| Sweep::new(v(p0), v(p1), r).unwrap_err();
-    assert_eq!(sweep([past, 0.0, 0.0], [0.0; 3], S::ONE), e(past));
-    assert_eq!(sweep([0.0; 3], [0.0, -past, 0.0], S::ONE), e(-past));
-    assert_eq!(sweep([0.0; 3], [0.0; 3], S::from_f64(past)), e(past));
+    let start = sweep([past, 0.0, 0.0], [0.0; 3], S::ONE);
+    assert_eq!(start, e(Input::Start, past));
+    let end = sweep([0.0; 3], [0.0, -past, 0.0], S::ONE);
+    assert_eq!(end, e(Input::End, -past));
+    let radius = sweep([0.0; 3], [0.0; 3], S::from_f64(past));
+    assert_eq!(radius, e(Input::Radius, past));
     let t = tri::<S>([[0.0; 3], [0.0, 0.0, past], [1.0, 0.0, 0.0]]);
-    assert_eq!(t.unwrap_err(), e(past));
+    assert_eq!(t.unwrap_err(), e(Input::Vertex(1), past));
     let st = tri::<S>([[0.0; 3], [0.0, 0.0, 1.0], [1.0, 0.0, 0.0]]).unwrap();
-    assert_eq!(st.to_standard(v([0.0, past, 0.0])).unwrap_err(), e(past));
+    let point = st.to_standard(v([0.0, past, 0.0])).unwrap_err();
+    assert_eq!(point, e(Input::Point, past));
     // Standard-frame coordinates may reach 3.5 * LIMIT, no further.
     let s = 3.5 * l;
     assert!(StandardSweep::new(v([s, -s, s]), v([-s, s, -s]), S::ONE).is_ok());
@@ -177,20 +184,26 @@ fn non_finite_floats_are_refused<S: Scalar>() {
     for bad in [f64::NAN, f64::INFINITY, f64::NEG_INFINITY].map(S::from_f64) {
         let p = Vec3::new(S::ZERO, bad, S::ZERO);
         // NaN is its own cause; an infinity is a value out of range.
-        let expected = if bad.partial_cmp(&bad).is_none() {
-            Error::NaN { triangle: None }
-        } else {
-            Error::OutOfRange {
-                value: bad.to_f64(),
-                min: -S::LIMIT.to_f64(),
-                max: S::LIMIT.to_f64(),
-                triangle: None,
+        let expected = |input| {
+            if bad.partial_cmp(&bad).is_none() {
+                Error::NaN {
+                    input,
+                    triangle: None,
+                }
+            } else {
+                Error::OutOfRange {
+                    input,
+                    value: bad.to_f64(),
+                    min: -S::LIMIT.to_f64(),
+                    max: S::LIMIT.to_f64(),
+                    triangle: None,
+                }
             }
         };
-        assert_eq!(Sweep::new(p, z, S::ONE), Err(expected));
-        assert_eq!(Sweep::new(z, z, bad), Err(expected));
+        assert_eq!(Sweep::new(p, z, S::ONE), Err(expected(Input::Start)));
+        assert_eq!(Sweep::new(z, z, bad), Err(expected(Input::Radius)));
         let t = Triangle::new(z, p, Vec3::new(S::ONE, S::ZERO, S::ZERO));
-        assert_eq!(StandardTriangle::new(&t), Err(expected));
+        assert_eq!(StandardTriangle::new(&t), Err(expected(Input::Vertex(1))));
     }
 }
 

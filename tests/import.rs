@@ -114,6 +114,7 @@ fn triangle_try_cast_refuses_what_does_not_fit<S: Scalar>() {
     assert_eq!(
         t.try_cast::<S>(),
         Err(Error::OutOfRange {
+            input: ballcast::Input::Number,
             value: far,
             min: -l,
             max: l,

@@ -4,7 +4,7 @@
 
 mod common;
 
-use ballcast::{Error, Scalar, Scene, Sweep, Triangle, move_and_slide};
+use ballcast::{Error, Input, Scalar, Scene, Sweep, Triangle, move_and_slide};
 use common::{P, Rng, Tolerance, v};
 use fixed::types::{I16F16, I32F32};
 
@@ -150,14 +150,36 @@ fn nan_and_infinity_are_refused_at_the_boundary<S: Tolerance>() {
         let e = move_and_slide(&scene, p, d, S::ONE).unwrap_err();
         // Fixed point has no NaN: conversion maps it beyond the range.
         if S::RELATIVE && bad.is_nan() {
-            assert_eq!(e, Error::NaN { triangle: None });
+            let input = Input::Displacement;
+            assert_eq!(
+                e,
+                Error::NaN {
+                    input,
+                    triangle: None
+                }
+            );
         } else {
             assert!(matches!(e, Error::OutOfRange { .. }), "{e:?}");
         }
-        // The scene names the triangle the value was found in: the one it would have been.
+        // The scene names the triangle the value was found in (the one it would have been)
+        // and its vertex: the same value, found in another input.
         let index = scene.len();
         let pushed = scene.push(Triangle::new(p, d, v([2.0, 0.0, 0.0])));
-        assert_eq!(pushed, Err(e.at(index)));
+        let (input, triangle) = (Input::Vertex(1), Some(index));
+        let want = match e {
+            Error::NaN { .. } => Error::NaN { input, triangle },
+            Error::OutOfRange {
+                value, min, max, ..
+            } => Error::OutOfRange {
+                input,
+                value,
+                min,
+                max,
+                triangle,
+            },
+            other => other,
+        };
+        assert_eq!(pushed, Err(want));
         assert_eq!(pushed.unwrap_err().triangle(), Some(index));
     }
 }

@@ -96,6 +96,7 @@ fn conversions_round_trip<S: Tolerance>() {
     let limit = S::LIMIT.to_f64();
     let far = Vec3::new(0.0f64, -3.0 * limit, 0.0).try_cast::<S>();
     let want = ballcast::Error::OutOfRange {
+        input: ballcast::Input::Number,
         value: -3.0 * limit,
         min: -limit,
         max: limit,
@@ -103,7 +104,13 @@ fn conversions_round_trip<S: Tolerance>() {
     };
     assert_eq!(far, Err(want), "{}", S::NAME);
     let nan = Vec3::new(f64::NAN, 0.0, 0.0).try_cast::<S>();
-    assert_eq!(nan, Err(ballcast::Error::NaN { triangle: None }));
+    assert_eq!(
+        nan,
+        Err(ballcast::Error::NaN {
+            input: ballcast::Input::Number,
+            triangle: None
+        })
+    );
 }
 
 /// The axes, `distance`, `lerp` and the compound `*=` and `/=`: against `f64` on the same

@@ -1,7 +1,7 @@
 //! Scalars as plain numbers with serde (see the [module docs](super)): `serialize` and
 //! `deserialize` for `#[serde(with = ...)]`, and [`Vec3`]'s impls built on them.
 
-use crate::{Error, Scalar, Vec3, check};
+use crate::{Error, Input, Scalar, Vec3, check};
 use core::fmt;
 use serde::de::{self, Error as _, SeqAccess, Visitor};
 use serde::ser::SerializeStruct;
@@ -23,7 +23,7 @@ impl Number {
         }
         // Both within the range, so their sum is representable; then checked itself.
         let lo = check::convert::<S>(self.lo)?;
-        check::within(hi + lo, -S::LIMIT, S::LIMIT)
+        check::within(hi + lo, -S::LIMIT, S::LIMIT, Input::Number)
     }
 }
 

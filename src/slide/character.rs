@@ -1,7 +1,7 @@
 //! [`Character`]: the README's character loop as a type, one call a frame.
 
 use super::{Slide, Slider};
-use crate::{Error, Geometry, Scalar, Vec3, check};
+use crate::{Error, Geometry, Input, Scalar, Vec3, check};
 
 /// A walking ball: the character loop of game engines, one [`update`](Self::update) a frame.
 ///
@@ -74,7 +74,7 @@ impl<S: Scalar> Character<S> {
             step: half,
             snap: half,
             floor: None,
-            position: check::point(position, S::LIMIT)?,
+            position: check::point(position, S::LIMIT, Input::Position)?,
             velocity: Vec3::ZERO,
         })
     }
@@ -96,7 +96,7 @@ impl<S: Scalar> Character<S> {
     ///
     /// Errors: [`Error::NaN`], or [`Error::OutOfRange`] outside `[0, LIMIT]`.
     pub fn with_step(self, height: S) -> Result<Self, Error> {
-        let step = check::within(height, S::ZERO, S::LIMIT)?;
+        let step = check::within(height, S::ZERO, S::LIMIT, Input::Step)?;
         Ok(Self { step, ..self })
     }
 
@@ -106,7 +106,7 @@ impl<S: Scalar> Character<S> {
     ///
     /// Errors: [`Error::NaN`], or [`Error::OutOfRange`] outside `[0, LIMIT]`.
     pub fn with_snap(self, depth: S) -> Result<Self, Error> {
-        let snap = check::within(depth, S::ZERO, S::LIMIT)?;
+        let snap = check::within(depth, S::ZERO, S::LIMIT, Input::Snap)?;
         Ok(Self { snap, ..self })
     }
 
@@ -155,9 +155,12 @@ impl<S: Scalar> Character<S> {
     /// where it stands on a floor, falling under `gravity` where it does not. Returns the move
     /// (its contacts: what it hit, where and when in the frame).
     ///
-    /// Errors: those of the slides it makes ([`Slider::slide`], [`Slider::step_slide`],
-    /// [`Slider::snap_to_floor`]): a position or move outside the range, a NaN. On an error
-    /// the character is left as it was.
+    /// Errors: [`Error::NaN`] or [`Error::OutOfRange`] for a `wish` or `gravity` component
+    /// beyond `±`[`Scalar::LIMIT`] or a `dt` outside `[0, LIMIT]` (naming which, as
+    /// [`Input::Wish`], [`Input::Gravity`] or [`Input::TimeStep`]); then those of the slides it
+    /// makes ([`Slider::slide`], [`Slider::step_slide`], [`Slider::snap_to_floor`]): a move
+    /// whose target leaves the range ([`Input::Target`]). On an error the character is left as
+    /// it was.
     pub fn update<G: Geometry<S> + ?Sized>(
         &mut self,
         level: &G,
@@ -165,6 +168,9 @@ impl<S: Scalar> Character<S> {
         gravity: Vec3<S>,
         dt: S,
     ) -> Result<Slide<S>, Error> {
+        check::point(wish, S::LIMIT, Input::Wish)?;
+        check::point(gravity, S::LIMIT, Input::Gravity)?;
+        check::within(dt, S::ZERO, S::LIMIT, Input::TimeStep)?;
         // Worked on a copy, kept only when every slide succeeded.
         let mut me = *self;
         let (ball, up, min_cos) = (me.ball, me.up, me.min_cos);

@@ -28,7 +28,7 @@ mod slider;
 mod step;
 
 use crate::contact::unit;
-use crate::{Error, Geometry, Scalar, SceneHit, Sweep, Vec3, check};
+use crate::{Error, Geometry, Input, Scalar, SceneHit, Sweep, Vec3, check};
 pub use character::Character;
 use heapless::Vec;
 use resolve::{resolve, settle};
@@ -112,7 +112,7 @@ impl<S: Scalar> Slide<S> {
         velocity: Vec3<S>,
         limit: Option<(Vec3<S>, S)>,
     ) -> Result<Vec3<S>, Error> {
-        let v = check::point(velocity, S::LIMIT)?;
+        let v = check::point(velocity, S::LIMIT, Input::Velocity)?;
         let mut planes: Planes<S> = Vec::new();
         let zero = Vec3::ZERO;
         for c in self.contacts.iter().flatten() {
@@ -200,8 +200,8 @@ impl<S: Scalar> Slide<S> {
 /// A slope limit checked: `up` (components within `±LIMIT`, not zero in the scalar) as a unit
 /// vector, and `min_cos` within `[-1, 1]`.
 fn slope_limit<S: Scalar>(up: Vec3<S>, min_cos: S) -> Result<(Vec3<S>, S), Error> {
-    let up = check::point(up, S::LIMIT)?;
-    let min_cos = check::within(min_cos, -S::ONE, S::ONE)?;
+    let up = check::point(up, S::LIMIT, Input::Up)?;
+    let min_cos = check::within(min_cos, -S::ONE, S::ONE, Input::MaxSlope)?;
     Ok((unit(up).ok_or(Error::ZeroVector)?, min_cos))
 }
 
@@ -304,9 +304,9 @@ fn run<S: Scalar, G: Geometry<S> + ?Sized>(
 ) -> Result<Slide<S>, Error> {
     let radius = ball.radius;
     // Inside these ranges `position + displacement` stays within 2 * LIMIT: no overflow.
-    check::point(position, S::LIMIT)?;
-    check::point(displacement, S::LIMIT)?;
-    let target = check::point(position + displacement, S::LIMIT)?;
+    check::point(position, S::LIMIT, Input::Position)?;
+    check::point(displacement, S::LIMIT, Input::Displacement)?;
+    let target = check::point(position + displacement, S::LIMIT, Input::Target)?;
     let (a, b) = (magnitude(position), magnitude(target));
     let extent = if a > b { a } else { b };
     let min = min_radius(extent);
@@ -331,7 +331,7 @@ fn run<S: Scalar, G: Geometry<S> + ?Sized>(
         }
     }
     // The push may carry the target past the range: refused like any other target.
-    check::point(start + displacement, S::LIMIT)?;
+    check::point(start + displacement, S::LIMIT, Input::Target)?;
     let zero = Vec3::ZERO;
     let mut out = Slide {
         position: start,

@@ -2,7 +2,7 @@
 
 use super::rules::{FloorStop, magnitude};
 use super::{Floor, Slide, run, skin, slope_limit};
-use crate::{Contact, Error, Geometry, Scalar, Sweep, Vec3, check};
+use crate::{Contact, Error, Geometry, Input, Scalar, Sweep, Vec3, check};
 
 /// A ball's settings for [`Slider::slide`]: its radius and, optionally, its own skin and a
 /// slope limit beyond which slopes hold it back like walls.
@@ -45,7 +45,7 @@ impl<S: Scalar> Slider<S> {
     /// Errors: [`Error::NaN`], or [`Error::OutOfRange`] for a skin below zero or above
     /// the radius.
     pub fn with_skin(self, skin: S) -> Result<Self, Error> {
-        let skin = check::within(skin, S::ZERO, self.radius)?;
+        let skin = check::within(skin, S::ZERO, self.radius, Input::Skin)?;
         Ok(Self {
             skin: Some(skin),
             ..self
@@ -241,9 +241,13 @@ impl<S: Scalar> Slider<S> {
         depth: S,
     ) -> Result<Option<Floor<S>>, Error> {
         let (up_unit, cos) = slope_limit(up, min_cos)?;
-        let depth = check::within(depth, S::ZERO, S::LIMIT)?;
-        let heading = check::point(heading, S::LIMIT)?;
-        let skin = self.skin(magnitude(check::point(position, S::LIMIT)?));
+        let depth = check::within(depth, S::ZERO, S::LIMIT, Input::Snap)?;
+        let heading = check::point(heading, S::LIMIT, Input::Heading)?;
+        let skin = self.skin(magnitude(check::point(
+            position,
+            S::LIMIT,
+            Input::Position,
+        )?));
         let mut reach = depth + skin + skin;
         let level = |v: Vec3<S>| v - up_unit.scale(S::dot(v, up_unit));
         if depth > S::ZERO {

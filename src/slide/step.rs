@@ -6,7 +6,7 @@
 use super::resolve::settle;
 use super::rules::magnitude;
 use super::{MAX_SLIDES, Slide, SlideContact, Slider, slope_limit};
-use crate::{Error, Geometry, Scalar, Sweep, Vec3, check};
+use crate::{Error, Geometry, Input, Scalar, Sweep, Vec3, check};
 
 impl<S: Scalar> Slider<S> {
     /// [`slide`](Self::slide) for a walk on the ground that steps up onto low ledges. Where the
@@ -88,7 +88,7 @@ impl<S: Scalar> Slider<S> {
         height: S,
     ) -> Result<Slide<S>, Error> {
         let (up_unit, cos) = slope_limit(up, min_cos)?;
-        let height = check::within(height, S::ZERO, S::LIMIT)?;
+        let height = check::within(height, S::ZERO, S::LIMIT, Input::Step)?;
         let plain = self.slide(scene, position, displacement)?;
         if height == S::ZERO {
             return Ok(plain);

@@ -7,7 +7,7 @@
 
 use super::{Edge, StandardTriangle, Triangle};
 use crate::scalar::largest;
-use crate::{Error, Features, Scalar, Sweep, Vec3, check};
+use crate::{Error, Features, Input, Scalar, Sweep, Vec3, check};
 
 const DEGENERATE: Error = Error::Degenerate { triangle: None };
 
@@ -33,8 +33,8 @@ impl<S: Scalar> Frame<S> {
         let within = |c: S| lo <= c && c <= hi;
         let inside = |p: Vec3<S>| within(p.x) && within(p.y) && within(p.z);
         if !(inside(t.v0) && inside(t.v1) && inside(t.v2)) {
-            for v in [t.v0, t.v1, t.v2] {
-                check::point(v, S::LIMIT)?;
+            for (k, v) in [t.v0, t.v1, t.v2].into_iter().enumerate() {
+                check::point(v, S::LIMIT, Input::Vertex(k as u8))?;
             }
         }
         let edges = [t.v1 - t.v0, t.v2 - t.v1, t.v0 - t.v2];
