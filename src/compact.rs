@@ -105,6 +105,8 @@ pub enum CompactError {
     Capacity {
         /// Entries needed.
         needed: usize,
+        /// Entries the shortest of the three output buffers holds.
+        given: usize,
     },
     /// A vertex or triangle index beyond what the index type holds.
     Index {
@@ -124,7 +126,11 @@ pub enum CompactError {
 impl fmt::Display for CompactError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
-            Self::Capacity { needed } => write!(f, "buffer too small: {needed} entries needed"),
+            Self::Capacity { needed, given } => write!(
+                f,
+                "an output buffer holds {given} entries, too few: {needed} needed (triangles, \
+                 order and bytes: one per triangle of the mesh)"
+            ),
             Self::Index { index, max } => {
                 write!(f, "index {index} beyond the index type's largest, {max}")
             }
@@ -180,8 +186,9 @@ impl<'a, S: Scalar, I: MeshIndex> CompactMesh<'a, S, I> {
         bytes: &'a mut [u8],
     ) -> Result<Self, CompactError> {
         let n = mesh.len();
-        if triangles.len() < n || order.len() < n || bytes.len() < n {
-            return Err(CompactError::Capacity { needed: n });
+        let given = triangles.len().min(order.len()).min(bytes.len());
+        if given < n {
+            return Err(CompactError::Capacity { needed: n, given });
         }
         let fits = |index: usize| {
             (index <= I::MAX)

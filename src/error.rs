@@ -74,6 +74,8 @@ pub enum Error {
         radius: f64,
         /// The smallest accepted at these coordinates.
         min: f64,
+        /// The coordinates' largest magnitude: of the position and, for a move, its target.
+        extent: f64,
     },
     /// Baked [`Parts`](crate::Parts) are not what [`StandardTriangle::new`](crate::StandardTriangle::new)
     /// makes of their source triangle.
@@ -98,11 +100,14 @@ pub enum Error {
     },
     /// A direction (such as [`Slide::floor`](crate::slide::Slide::floor)'s `up`) is the zero
     /// vector, which points nowhere.
-    ZeroVector,
+    ZeroVector {
+        /// The argument that is zero.
+        input: Input,
+    },
 }
 
-/// The argument an [`Error::NaN`] or [`Error::OutOfRange`] is about, named as the calls name
-/// it. For a vector, the error is about one of its coordinates (the first refused, in the
+/// The argument an [`Error::NaN`], [`Error::OutOfRange`] or [`Error::ZeroVector`] is about,
+/// named as the calls name it. For a vector, the error is about one of its coordinates (the first refused, in the
 /// order x, y, z), whose value [`Error::OutOfRange`] gives.
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
@@ -142,6 +147,8 @@ pub enum Input {
     Point,
     /// A character's wished velocity.
     Wish,
+    /// The speed of a character's jump.
+    JumpSpeed,
     /// The acceleration of gravity.
     Gravity,
     /// A time step.
@@ -172,6 +179,7 @@ impl Input {
             Input::Heading => ("the heading", true),
             Input::Point => ("the point", true),
             Input::Wish => ("the wished velocity", true),
+            Input::JumpSpeed => ("the jump speed", false),
             Input::Gravity => ("gravity", true),
             Input::TimeStep => ("the time step", false),
             Input::Number => ("the number", false),
@@ -189,10 +197,13 @@ impl fmt::Display for Input {
 }
 
 impl Error {
-    /// The argument refused, for [`Error::NaN`] and [`Error::OutOfRange`].
+    /// The argument refused, for [`Error::NaN`], [`Error::OutOfRange`] and
+    /// [`Error::ZeroVector`].
     pub const fn input(&self) -> Option<Input> {
         match *self {
-            Error::NaN { input, .. } | Error::OutOfRange { input, .. } => Some(input),
+            Error::NaN { input, .. }
+            | Error::OutOfRange { input, .. }
+            | Error::ZeroVector { input } => Some(input),
             _ => None,
         }
     }
@@ -270,10 +281,14 @@ impl fmt::Display for Error {
             Error::NegativeRadius { value } => write!(f, "the radius {value} is negative"),
             Error::Full { capacity: 1 } => f.write_str("full: it holds 1 triangle"),
             Error::Full { capacity } => write!(f, "full: it holds {capacity} triangles"),
-            Error::RadiusTooSmall { radius, min } => write!(
+            Error::RadiusTooSmall {
+                radius,
+                min,
+                extent,
+            } => write!(
                 f,
-                "the radius {radius} is below {min}, the smallest the scalar resolves at these \
-                 coordinates"
+                "the radius {radius} is below {min}, the smallest the scalar resolves at \
+                 coordinates up to {extent} (of the position and the move's target)"
             ),
             Error::Mismatch { .. } => {
                 f.write_str("baked parts differ from what their source triangle makes")
@@ -290,7 +305,7 @@ impl fmt::Display for Error {
                     "an index buffer of {len} is not a whole number of triangles"
                 )
             }
-            Error::ZeroVector => f.write_str("a direction is the zero vector"),
+            Error::ZeroVector { input } => write!(f, "{} is the zero vector", input.noun().0),
         }
     }
 }

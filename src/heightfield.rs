@@ -99,6 +99,8 @@ pub enum HeightfieldError {
     Capacity {
         /// Bytes needed.
         needed: usize,
+        /// Bytes given.
+        given: usize,
     },
     /// More than [`MAX_TRIANGLES`] triangles.
     TooMany,
@@ -151,7 +153,10 @@ impl fmt::Display for HeightfieldError {
                 f,
                 "heightfield of {columns} x {rows} cells: it needs at least one column and one row"
             ),
-            Self::Capacity { needed } => write!(f, "cell buffer too small: {needed} bytes needed"),
+            Self::Capacity { needed, given } => write!(
+                f,
+                "the cell buffer holds {given} bytes, too few: {needed} needed (one per cell)"
+            ),
             Self::TooMany => f.write_str("more than 2^31 triangles"),
             Self::Spacing { value } => {
                 write!(f, "heightfield spacing {value} is not positive and finite")

@@ -70,6 +70,17 @@ pub enum Buffer {
     Scratch,
 }
 
+impl fmt::Display for Buffer {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(match self {
+            Buffer::Nodes => "nodes (bvh::nodes_for of the triangles kept)",
+            Buffer::Triangles => "triangles (one per input triangle)",
+            Buffer::Order => "order (one per input triangle)",
+            Buffer::Scratch => "scratch (six words per input triangle)",
+        })
+    }
+}
+
 /// Why [`Mesh::build`] or [`Mesh::verify`] refused.
 #[non_exhaustive]
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -88,6 +99,8 @@ pub enum MeshError {
         buffer: Buffer,
         /// How many it must hold.
         needed: usize,
+        /// How many it holds.
+        given: usize,
     },
     /// More than 2^24 triangles.
     TooMany,
@@ -99,9 +112,14 @@ impl fmt::Display for MeshError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
             MeshError::Triangle { error, .. } => write!(f, "{error}"),
-            MeshError::Capacity { buffer, needed } => {
-                write!(f, "buffer of {buffer:?} too small: {needed} needed")
-            }
+            MeshError::Capacity {
+                buffer,
+                needed,
+                given,
+            } => write!(
+                f,
+                "the buffer of {buffer} holds {given}, too few: {needed} needed"
+            ),
             MeshError::TooMany => f.write_str("more than 2^24 triangles"),
             MeshError::Mismatch => f.write_str("mesh parts differ from the build of its triangles"),
         }

@@ -201,7 +201,9 @@ fn floor_with_an_up_of_any_length<S: Tolerance>() {
     assert_eq!(found([2.0, 1.0, 0.0]), None, "{}", S::NAME);
     assert_eq!(
         out.floor(v([0.0; 3]), cos45).unwrap_err(),
-        Error::ZeroVector,
+        Error::ZeroVector {
+            input: ballcast::Input::Up
+        },
         "{}",
         S::NAME
     );

@@ -5,7 +5,7 @@
 
 mod common;
 
-use ballcast::{Error, Scalar, Scene, Triangle, Vec3, slide::Character};
+use ballcast::{Error, Input, Scalar, Scene, Triangle, Vec3, slide::Character};
 use common::{Tolerance, quad, v};
 use fixed::types::{I16F16, I32F32};
 
@@ -25,7 +25,11 @@ fn jumps_only_from_the_floor<S: Tolerance>() {
     let level = floor::<S>();
     let (gravity, dt) = (v::<S>([0.0, -9.81, 0.0]), S::from_f64(1.0 / 60.0));
     let mut me = Character::new(v::<S>([0.0, 1.5, 0.0]), S::from_f64(0.5)).unwrap();
-    assert!(!me.jump(S::from_f64(4.0)), "{}: jumped in the air", S::NAME);
+    assert!(
+        !me.jump(S::from_f64(4.0)).unwrap(),
+        "{}: jumped in the air",
+        S::NAME
+    );
     let walk = v::<S>([1.0, 0.0, 0.0]);
     let landed = (0..30).position(|_| {
         me.update(&level, walk, gravity, dt).unwrap();
@@ -33,7 +37,7 @@ fn jumps_only_from_the_floor<S: Tolerance>() {
     });
     assert!(landed.is_some(), "{}: never landed", S::NAME);
     assert!(
-        me.jump(S::from_f64(4.0)),
+        me.jump(S::from_f64(4.0)).unwrap(),
         "{}: no jump from the floor",
         S::NAME
     );
@@ -43,7 +47,11 @@ fn jumps_only_from_the_floor<S: Tolerance>() {
         me.update(&level, walk, gravity, dt).unwrap();
         top = top.max(me.position.y.to_f64());
         if frame == 5 {
-            assert!(!me.jump(S::from_f64(4.0)), "{}: jumped in the air", S::NAME);
+            assert!(
+                !me.jump(S::from_f64(4.0)).unwrap(),
+                "{}: jumped in the air",
+                S::NAME
+            );
         }
         if me.is_grounded() {
             back_down = Some(frame);
@@ -100,7 +108,9 @@ fn bad_settings_are_errors<S: Tolerance>() {
     );
     assert_eq!(
         me.with_slope(Vec3::ZERO, S::ONE),
-        Err(Error::ZeroVector),
+        Err(Error::ZeroVector {
+            input: ballcast::Input::Up
+        }),
         "{}",
         S::NAME
     );
@@ -132,6 +142,53 @@ fn bad_settings_are_errors<S: Tolerance>() {
     }
 }
 
+/// A time step too long for the range (twice `sqrt(LIMIT / g)`: in `I16F16` 41 s, so a time
+/// step in milliseconds) is refused as the time step, with the longest that fits (about 20.4 s
+/// in `I16F16`), not blamed on the radius or on a move the caller never made; a jump with a NaN or negative
+/// speed, or from a velocity out of range, is refused and changes nothing; a ball too small to
+/// move where it stands is refused at construction.
+fn mistaken_frames_and_jumps_name_their_argument<S: Tolerance>() {
+    let level = floor::<S>();
+    let gravity = v::<S>([0.0, -9.81, 0.0]);
+    let mut me = Character::new(v::<S>([0.0, 0.6, 0.0]), S::from_f64(0.5)).unwrap();
+    let dt = S::from_f64(1.0 / 60.0);
+    for _ in 0..30 {
+        me.update(&level, Vec3::ZERO, gravity, dt).unwrap();
+    }
+    assert!(me.is_grounded(), "{}", S::NAME);
+    let before = me;
+    let longest = (S::LIMIT.to_f64() / 9.81).sqrt();
+    let e = me.update(&level, Vec3::ZERO, gravity, S::from_f64(2.0 * longest));
+    match e {
+        Err(Error::OutOfRange {
+            input: Input::TimeStep,
+            max,
+            ..
+        }) => assert!((max / longest - 1.0).abs() < 1e-3, "{}: {max}", S::NAME),
+        other => panic!("{}: {other:?}", S::NAME),
+    }
+    assert_eq!(me, before, "{}", S::NAME);
+    for bad in [f64::NAN, -1.0] {
+        let speed = S::from_f64(bad);
+        if speed.to_f64().is_nan() == bad.is_nan() {
+            let e = me.jump(speed).map_err(|e| e.input());
+            assert_eq!(e, Err(Some(Input::JumpSpeed)), "{}: {bad}", S::NAME);
+            assert_eq!(me, before, "{}", S::NAME);
+        }
+    }
+    me.velocity = v::<S>([0.0, S::LIMIT.to_f64(), 0.0]);
+    let e = me.jump(S::from_f64(4.0)).map_err(|e| e.input());
+    assert_eq!(e, Err(Some(Input::Velocity)), "{}", S::NAME);
+    assert!(me.is_grounded(), "{}", S::NAME);
+    let tiny = ballcast::slide::min_radius(S::ZERO).to_f64() / 2.0;
+    let e = Character::new(v::<S>([0.0; 3]), S::from_f64(tiny));
+    assert!(
+        matches!(e, Err(Error::RadiusTooSmall { .. })),
+        "{}: {e:?}",
+        S::NAME
+    );
+}
+
 macro_rules! per_scalar {
     ($($m:ident: $t:ty),*) => {$(mod $m {
         #[allow(unused_imports)]
@@ -143,6 +200,10 @@ macro_rules! per_scalar {
         #[test]
         fn an_update_that_fails_changes_nothing() {
             super::an_update_that_fails_changes_nothing::<$t>();
+        }
+        #[test]
+        fn mistaken_frames_and_jumps_name_their_argument() {
+            super::mistaken_frames_and_jumps_name_their_argument::<$t>();
         }
         #[test]
         fn bad_settings_are_errors() {

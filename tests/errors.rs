@@ -139,6 +139,9 @@ fn each_argument_is_named<S: Scalar>() {
         half,
     );
     assert_eq!(e.map(drop).unwrap_err().input(), Some(Input::Target));
+    let e = ball.with_max_slope(z, half).unwrap_err();
+    assert_eq!(e, Error::ZeroVector { input: Input::Up });
+    assert_eq!(e.to_string(), "the up direction is the zero vector");
     let e = Sweep::new(z, out, one).unwrap_err();
     let l = S::LIMIT.to_f64();
     let said = format!(
@@ -188,7 +191,8 @@ fn radius_errors_give_the_radius<S: Scalar>() {
         e,
         Error::RadiusTooSmall {
             radius: tiny.to_f64(),
-            min
+            min,
+            extent: 0.0
         }
     );
     assert!(e.to_string().starts_with("the radius "), "{e}");

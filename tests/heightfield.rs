@@ -275,7 +275,10 @@ fn errors_not_panics<S: Scalar>() {
         rows: 2,
     });
     assert_eq!(build(one, 0, 2, &heights[..3], &mut cells), empty);
-    let capacity = Err(HeightfieldError::Capacity { needed: 4 });
+    let capacity = Err(HeightfieldError::Capacity {
+        needed: 4,
+        given: 3,
+    });
     assert_eq!(build(one, 2, 2, &heights, &mut cells[..3]), capacity);
     assert_eq!(
         build(one, u32::MAX, u32::MAX, &heights, &mut cells),

@@ -489,9 +489,19 @@ fn errors_not_panics<S: Scalar>() {
         let needed = full[k];
         assert_eq!(
             attempt(&src, sizes, Degenerates::Refuse),
-            Err(MeshError::Capacity { buffer, needed })
+            Err(MeshError::Capacity {
+                buffer,
+                needed,
+                given: needed - 1
+            })
         );
     }
+    let short = attempt(&src, [1, n, n, 6 * n], Degenerates::Refuse).unwrap_err();
+    let said = format!(
+        "the buffer of nodes (bvh::nodes_for of the triangles kept) holds 1, too few: {} needed",
+        nodes_for(n)
+    );
+    assert_eq!(short.to_string(), said);
     // Two degenerate triangles (a repeated vertex, collinear vertices) at 5 and 9.
     let p = v::<S>([1.0, 2.0, 3.0]);
     src[5] = Triangle::new(p, p, v([0.0, 0.0, 0.0]));

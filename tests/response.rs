@@ -314,7 +314,8 @@ fn smallest_radius_holds<S: Tolerance>() {
         e,
         ballcast::Error::RadiusTooSmall {
             radius: below.to_f64(),
-            min: ballcast::slide::min_radius(S::from_f64(extent)).to_f64()
+            min: ballcast::slide::min_radius(S::from_f64(extent)).to_f64(),
+            extent: S::from_f64(extent).to_f64()
         }
     );
 }

@@ -291,7 +291,12 @@ fn bad_snaps_are_errors<S: Tolerance>() {
         "{negative:?}"
     );
     let zero_up = ball.snap_to_floor(&level, p, Vec3::ZERO, Vec3::ZERO, walkable, S::ONE);
-    assert_eq!(zero_up, Err(Error::ZeroVector));
+    assert_eq!(
+        zero_up,
+        Err(Error::ZeroVector {
+            input: ballcast::Input::Up
+        })
+    );
     let probe = ball.probe_floor(&level, p, up, walkable);
     assert_eq!(
         ball.snap_to_floor(&level, p, Vec3::ZERO, up, walkable, S::ZERO),

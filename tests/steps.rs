@@ -374,7 +374,12 @@ fn bad_steps_are_errors<S: Tolerance>() {
         "{negative:?}"
     );
     let zero_up = ball.step_slide(&level, p, d, Vec3::ZERO, walkable, S::ONE);
-    assert_eq!(zero_up, Err(Error::ZeroVector));
+    assert_eq!(
+        zero_up,
+        Err(Error::ZeroVector {
+            input: ballcast::Input::Up
+        })
+    );
 }
 
 macro_rules! per_scalar {

@@ -38,7 +38,8 @@ impl<'a, S: Scalar> Heightfield<'a, S> {
             return Err(HeightfieldError::Size { needed, given });
         }
         if cells.len() < n {
-            return Err(HeightfieldError::Capacity { needed: n });
+            let given = cells.len();
+            return Err(HeightfieldError::Capacity { needed: n, given });
         }
         if !(spacing > S::ZERO && spacing.is_finite()) {
             let value = spacing.to_f64();

@@ -90,7 +90,11 @@ impl<'a, S: Scalar> Mesh<'a, S> {
             return Err(MeshError::TooMany);
         }
         let short = |buffer, len: usize, needed: usize| {
-            (len < needed).then_some(MeshError::Capacity { buffer, needed })
+            (len < needed).then_some(MeshError::Capacity {
+                buffer,
+                needed,
+                given: len,
+            })
         };
         let checks = [
             short(Buffer::Triangles, triangles.len(), n),
@@ -156,10 +160,12 @@ impl<'a, S: Scalar> Mesh<'a, S> {
             let class = bvh::class_of(&triangles[c]);
             *it = bvh::item(Grid::cells(exponent, blo, bhi), c, class);
         }
+        let given = nodes.len();
         let used = bvh::build(items, keys, (lo, hi), nodes).map_err(|e| match e {
             BuildError::Nodes(needed) => MeshError::Capacity {
                 buffer: Buffer::Nodes,
                 needed,
+                given,
             },
             BuildError::Depth => MeshError::TooMany,
         })?;

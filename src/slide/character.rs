@@ -1,6 +1,7 @@
 //! [`Character`]: the README's character loop as a type, one call a frame.
 
-use super::{Slide, Slider};
+use super::rules::magnitude;
+use super::{Slide, Slider, min_radius};
 use crate::{Error, Geometry, Input, Scalar, Vec3, check};
 
 /// A walking ball: the character loop of game engines, one [`update`](Self::update) a frame.
@@ -34,7 +35,7 @@ use crate::{Error, Geometry, Input, Scalar, Vec3, check};
 /// for frame in 0..120 {
 ///     me.update(&level, v(2.0, 0.0, 0.0), gravity, dt)?;
 ///     if frame == 90 {
-///         assert!(me.jump(4.0)); // only from the floor
+///         assert!(me.jump(4.0)?); // only from the floor
 ///     }
 /// }
 /// assert!(me.position.x > 2.0 && !me.is_grounded());
@@ -60,13 +61,22 @@ impl<S: Scalar> Character<S> {
     /// A ball of `radius` at rest at `position`, in the air until its first update finds a
     /// floor, with the defaults above.
     ///
-    /// Errors: as [`Slider::new`], and [`Error::NaN`] or [`Error::OutOfRange`] for a
-    /// `position` outside `±`[`Scalar::LIMIT`].
+    /// Errors: as [`Slider::new`], [`Error::NaN`] or [`Error::OutOfRange`] for a `position`
+    /// outside `±`[`Scalar::LIMIT`], and [`Error::RadiusTooSmall`] for a radius below
+    /// [`min_radius`] at `position` (a ball that could not move from there).
     pub fn new(position: Vec3<S>, radius: S) -> Result<Self, Error> {
         let up = Vec3::Y;
         let min_cos = S::from_f64(core::f64::consts::FRAC_1_SQRT_2);
         let ball = Slider::new(radius)?;
-        let half = S::div_pow2(ball.radius(), 1);
+        let position = check::point(position, S::LIMIT, Input::Position)?;
+        let (extent, half) = (magnitude(position), S::div_pow2(ball.radius(), 1));
+        if ball.radius() < min_radius(extent) {
+            return Err(Error::RadiusTooSmall {
+                radius: radius.to_f64(),
+                min: min_radius(extent).to_f64(),
+                extent: extent.to_f64(),
+            });
+        }
         Ok(Self {
             ball: ball.with_max_slope(up, min_cos)?,
             up,
@@ -74,7 +84,7 @@ impl<S: Scalar> Character<S> {
             step: half,
             snap: half,
             floor: None,
-            position: check::point(position, S::LIMIT, Input::Position)?,
+            position,
             velocity: Vec3::ZERO,
         })
     }
@@ -141,26 +151,42 @@ impl<S: Scalar> Character<S> {
 
     /// A jump: where it stands on a floor, adds `speed` along `up` to its velocity, leaves the
     /// floor and returns true; in the air, does nothing and returns false.
-    pub fn jump(&mut self, speed: S) -> bool {
+    ///
+    /// Errors: [`Error::NaN`] or [`Error::OutOfRange`] for a `speed` outside
+    /// `[0, `[`Scalar::LIMIT`]`]` ([`Input::JumpSpeed`]) or a velocity it would take beyond
+    /// `±LIMIT` ([`Input::Velocity`]); the character is left as it was.
+    pub fn jump(&mut self, speed: S) -> Result<bool, Error> {
+        let speed = check::within(speed, S::ZERO, S::LIMIT, Input::JumpSpeed)?;
         if self.floor.is_none() {
-            return false;
+            return Ok(false);
         }
+        // Both within the range, so the sum cannot overflow before it is checked.
         let up = self.up.try_normalize().unwrap_or(Vec3::Y);
-        self.velocity += up * speed;
+        let velocity = check::point(self.velocity, S::LIMIT, Input::Velocity)? + up * speed;
+        self.velocity = check::point(velocity, S::LIMIT, Input::Velocity)?;
         self.floor = None;
-        true
+        Ok(true)
     }
 
     /// One frame of `dt` seconds: walking at the `wish`ed velocity (its part along the floor)
     /// where it stands on a floor, falling under `gravity` where it does not. Returns the move
     /// (its contacts: what it hit, where and when in the frame).
     ///
-    /// Errors: [`Error::NaN`] or [`Error::OutOfRange`] for a `wish` or `gravity` component
-    /// beyond `±`[`Scalar::LIMIT`] or a `dt` outside `[0, LIMIT]` (naming which, as
-    /// [`Input::Wish`], [`Input::Gravity`] or [`Input::TimeStep`]); then those of the slides it
-    /// makes ([`Slider::slide`], [`Slider::step_slide`], [`Slider::snap_to_floor`]): a move
-    /// whose target leaves the range ([`Input::Target`]). On an error the character is left as
-    /// it was.
+    /// Errors: [`Error::NaN`] or [`Error::OutOfRange`] for a `wish`, `gravity`, `position` or
+    /// `velocity` component beyond `±`[`Scalar::LIMIT`] (naming which: [`Input::Wish`],
+    /// [`Input::Gravity`], [`Input::Position`], [`Input::Velocity`]), or a `dt`
+    /// ([`Input::TimeStep`]) below zero or so long that a move this frame would not fit in the
+    /// range: `|wish| dt` or `(|velocity| + |gravity| dt) dt` beyond `LIMIT` (the error's `max`
+    /// is the longest `dt` that fits; in `I16F16`, whose `LIMIT` is 4 096, about 20 s under
+    /// Earth's gravity: a time step in milliseconds is refused, not obeyed). Then those of the
+    /// slides it makes ([`Slider::slide`], [`Slider::step_slide`], [`Slider::snap_to_floor`]):
+    /// a move whose target leaves the range ([`Input::Target`]), a ball too small for the
+    /// scalar at its coordinates ([`Error::RadiusTooSmall`]). On an error the character is left
+    /// as it was.
+    ///
+    /// The wish steers only on the floor. For steering in the air, change
+    /// [`velocity`](Self::velocity) before the update while it is not
+    /// [`is_grounded`](Self::is_grounded) (blend its part across `up` towards the wish).
     pub fn update<G: Geometry<S> + ?Sized>(
         &mut self,
         level: &G,
@@ -170,7 +196,14 @@ impl<S: Scalar> Character<S> {
     ) -> Result<Slide<S>, Error> {
         check::point(wish, S::LIMIT, Input::Wish)?;
         check::point(gravity, S::LIMIT, Input::Gravity)?;
-        check::within(dt, S::ZERO, S::LIMIT, Input::TimeStep)?;
+        check::point(self.position, S::LIMIT, Input::Position)?;
+        check::point(self.velocity, S::LIMIT, Input::Velocity)?;
+        check::within(
+            dt,
+            S::ZERO,
+            longest_step(wish, gravity, self.velocity),
+            Input::TimeStep,
+        )?;
         // Worked on a copy, kept only when every slide succeeded.
         let mut me = *self;
         let (ball, up, min_cos) = (me.ball, me.up, me.min_cos);
@@ -208,4 +241,27 @@ impl<S: Scalar> Character<S> {
         *self = me;
         Ok(out)
     }
+}
+
+/// The longest time step whose moves fit in the range: `|wish| dt <= LIMIT` and
+/// `(|velocity| + |gravity| dt) dt <= LIMIT` (lengths bound every coordinate), and `LIMIT`
+/// itself. Worked out in `f64` (correctly rounded operations: the same bits on every target).
+fn longest_step<S: Scalar>(wish: Vec3<S>, gravity: Vec3<S>, velocity: Vec3<S>) -> S {
+    let length = |v: Vec3<S>| {
+        let [x, y, z] = v.to_array().map(S::to_f64);
+        libm::sqrt(x * x + y * y + z * z)
+    };
+    let (l, w, g, v) = (
+        S::LIMIT.to_f64(),
+        length(wish),
+        length(gravity),
+        length(velocity),
+    );
+    let walk = if w > 0.0 { l / w } else { l };
+    // The positive root of g t² + v t = l (v >= 0): 2 l / (v + sqrt(v² + 4 g l)), no
+    // cancellation.
+    let fall = 2.0 * l / (v + libm::sqrt(v * v + 4.0 * g * l));
+    // Rounded to `S`: a step past the bound moves by a step's rounding more, which the slides'
+    // own checks of their moves still catch.
+    S::from_f64(walk.min(fall).min(l))
 }

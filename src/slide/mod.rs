@@ -202,7 +202,8 @@ impl<S: Scalar> Slide<S> {
 fn slope_limit<S: Scalar>(up: Vec3<S>, min_cos: S) -> Result<(Vec3<S>, S), Error> {
     let up = check::point(up, S::LIMIT, Input::Up)?;
     let min_cos = check::within(min_cos, -S::ONE, S::ONE, Input::MaxSlope)?;
-    Ok((unit(up).ok_or(Error::ZeroVector)?, min_cos))
+    let zero = Error::ZeroVector { input: Input::Up };
+    Ok((unit(up).ok_or(zero)?, min_cos))
 }
 
 /// The gap kept between a ball of `radius` and what it touched, for centres within `±extent`:
@@ -314,6 +315,7 @@ fn run<S: Scalar, G: Geometry<S> + ?Sized>(
         return Err(Error::RadiusTooSmall {
             radius: radius.to_f64(),
             min: min.to_f64(),
+            extent: extent.to_f64(),
         });
     }
     let skin = ball.skin(extent);
