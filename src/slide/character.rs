@@ -198,12 +198,17 @@ impl<S: Scalar> Character<S> {
         check::point(gravity, S::LIMIT, Input::Gravity)?;
         check::point(self.position, S::LIMIT, Input::Position)?;
         check::point(self.velocity, S::LIMIT, Input::Velocity)?;
-        check::within(
-            dt,
-            S::ZERO,
-            longest_step(wish, gravity, self.velocity),
-            Input::TimeStep,
-        )?;
+        let dt = check::within(dt, S::ZERO, S::LIMIT, Input::TimeStep)?;
+        let longest = longest_step(wish, gravity, self.velocity);
+        if dt.to_f64() > longest {
+            return Err(Error::OutOfRange {
+                input: Input::TimeStep,
+                value: dt.to_f64(),
+                min: 0.0,
+                max: longest,
+                triangle: None,
+            });
+        }
         // Worked on a copy, kept only when every slide succeeded.
         let mut me = *self;
         let (ball, up, min_cos) = (me.ball, me.up, me.min_cos);
@@ -246,7 +251,7 @@ impl<S: Scalar> Character<S> {
 /// The longest time step whose moves fit in the range: `|wish| dt <= LIMIT` and
 /// `(|velocity| + |gravity| dt) dt <= LIMIT` (lengths bound every coordinate), and `LIMIT`
 /// itself. Worked out in `f64` (correctly rounded operations: the same bits on every target).
-fn longest_step<S: Scalar>(wish: Vec3<S>, gravity: Vec3<S>, velocity: Vec3<S>) -> S {
+fn longest_step<S: Scalar>(wish: Vec3<S>, gravity: Vec3<S>, velocity: Vec3<S>) -> f64 {
     let length = |v: Vec3<S>| {
         let [x, y, z] = v.to_array().map(S::to_f64);
         libm::sqrt(x * x + y * y + z * z)
@@ -261,7 +266,5 @@ fn longest_step<S: Scalar>(wish: Vec3<S>, gravity: Vec3<S>, velocity: Vec3<S>) -
     // The positive root of g t² + v t = l (v >= 0): 2 l / (v + sqrt(v² + 4 g l)), no
     // cancellation.
     let fall = 2.0 * l / (v + libm::sqrt(v * v + 4.0 * g * l));
-    // Rounded to `S`: a step past the bound moves by a step's rounding more, which the slides'
-    // own checks of their moves still catch.
-    S::from_f64(walk.min(fall).min(l))
+    walk.min(fall).min(l)
 }

@@ -110,7 +110,7 @@ macro_rules! wrappers {
         }
 
         /// A frame of the character loop (the whole response: slides, push-outs, steps, the
-        /// snap) on a slice.
+        /// snap) on a slice, after a jump.
         #[unsafe(no_mangle)]
         #[inline(never)]
         pub fn $walk(
@@ -120,6 +120,7 @@ macro_rules! wrappers {
             gravity: Vec3<$t>,
             dt: $t,
         ) -> Result<Slide<$t>, Error> {
+            me.jump(dt)?;
             me.update(t, wish, gravity, dt)
         }
 
