@@ -149,6 +149,8 @@ pub enum Input {
     Wish,
     /// The speed of a character's jump.
     JumpSpeed,
+    /// A character's acceleration towards its wish in the air.
+    AirControl,
     /// The acceleration of gravity.
     Gravity,
     /// A time step.
@@ -180,6 +182,7 @@ impl Input {
             Input::Point => ("the point", true),
             Input::Wish => ("the wished velocity", true),
             Input::JumpSpeed => ("the jump speed", false),
+            Input::AirControl => ("the air control", false),
             Input::Gravity => ("gravity", true),
             Input::TimeStep => ("the time step", false),
             Input::Number => ("the number", false),

@@ -189,6 +189,74 @@ fn mistaken_frames_and_jumps_name_their_argument<S: Tolerance>() {
     );
 }
 
+/// A ball standing still jumps (4 units/s up) wishing 3 units/s along x. Without air control
+/// it lands where it jumped (the wish steers only on the floor); with an air control of
+/// 20 units/s² its speed along x grows by a third of a unit/s a frame (at 60 Hz) up to the wish
+/// and no further, its rise is the same frame for frame (the control acts across `up` only),
+/// and it lands well ahead. A negative or NaN air control is refused.
+fn air_control_steers_a_jump_up_to_the_wish<S: Tolerance>() {
+    let level = floor::<S>();
+    let (gravity, dt) = (v::<S>([0.0, -9.81, 0.0]), S::from_f64(1.0 / 60.0));
+    let wish = v::<S>([3.0, 0.0, 0.0]);
+    let settled = || {
+        let mut me = Character::new(v::<S>([0.0, 0.6, 0.0]), S::from_f64(0.5)).unwrap();
+        for _ in 0..30 {
+            me.update(&level, Vec3::ZERO, gravity, dt).unwrap();
+        }
+        assert!(me.is_grounded(), "{}", S::NAME);
+        me
+    };
+    let jump = |mut me: Character<S>| {
+        assert!(me.jump(S::from_f64(4.0)).unwrap(), "{}", S::NAME);
+        let mut frames = Vec::new();
+        for _ in 0..120 {
+            me.update(&level, wish, gravity, dt).unwrap();
+            frames.push((me.position, me.velocity, me.is_grounded()));
+            if me.is_grounded() {
+                break;
+            }
+        }
+        frames
+    };
+    let plain = jump(settled());
+    let steered = jump(settled().with_air_control(S::from_f64(20.0)).unwrap());
+    let landed = |f: &[(Vec3<S>, Vec3<S>, bool)]| f.last().map(|l| (l.0.x.to_f64(), l.2));
+    let (x0, down0) = landed(&plain).unwrap();
+    let (x1, down1) = landed(&steered).unwrap();
+    assert!(down0 && down1, "{}: never landed", S::NAME);
+    assert!(
+        x0.abs() < 1e-3,
+        "{}: drifted to {x0} without air control",
+        S::NAME
+    );
+    assert!(x1 > 1.0, "{}: only {x1} ahead with air control", S::NAME);
+    let step = 20.0 / 60.0;
+    let tol = S::EPSILON.to_f64() * 64.0 + 1e-6;
+    for (k, ((p0, _, air), (p1, v1, _))) in plain.iter().zip(&steered).enumerate() {
+        if *air {
+            break;
+        }
+        let vx = v1.x.to_f64();
+        let want = (step * (k + 1) as f64).min(3.0);
+        assert!(
+            (vx - want).abs() < tol,
+            "{}: frame {k}: {vx} not {want}",
+            S::NAME
+        );
+        let (y0, y1) = (p0.y.to_f64(), p1.y.to_f64());
+        assert!(
+            (y0 - y1).abs() < tol,
+            "{}: frame {k}: rose {y1}, not {y0}",
+            S::NAME
+        );
+    }
+    for bad in [-1.0, f64::NAN] {
+        let a = S::from_f64(bad);
+        let e = settled().with_air_control(a).map_err(|e| e.input());
+        assert_eq!(e, Err(Some(Input::AirControl)), "{}: {bad}", S::NAME);
+    }
+}
+
 macro_rules! per_scalar {
     ($($m:ident: $t:ty),*) => {$(mod $m {
         #[allow(unused_imports)]
@@ -204,6 +272,10 @@ macro_rules! per_scalar {
         #[test]
         fn mistaken_frames_and_jumps_name_their_argument() {
             super::mistaken_frames_and_jumps_name_their_argument::<$t>();
+        }
+        #[test]
+        fn air_control_steers_a_jump_up_to_the_wish() {
+            super::air_control_steers_a_jump_up_to_the_wish::<$t>();
         }
         #[test]
         fn bad_settings_are_errors() {

@@ -10,7 +10,8 @@ use crate::{Error, Geometry, Input, Scalar, Vec3, check};
 /// does not slide down a walkable slope), then walks by the wished velocity's part along the
 /// floor's plane times `dt`, stepping onto ledges up to its step height
 /// ([`Slider::step_slide`], Quake's `PM_StepSlideMove`); in the air, gravity adds to its
-/// velocity and it moves by that (the wish steers only on the floor: no air control). Its velocity then keeps what the contacts allow
+/// velocity and it moves by that (the wish steers in the air only with
+/// [`with_air_control`](Self::with_air_control)). Its velocity then keeps what the contacts allow
 /// ([`Slider::clip`]). Where no move touched a floor it probes two skins down
 /// ([`Slider::probe_floor`]), and a walk that began on the floor and left it (down a step,
 /// over a crest, up a ramp's top) is snapped down onto the floor within its snap depth
@@ -49,6 +50,7 @@ pub struct Character<S> {
     min_cos: S,
     step: S,
     snap: S,
+    air: S,
     floor: Option<Vec3<S>>,
     /// The ball's centre.
     pub position: Vec3<S>,
@@ -83,6 +85,7 @@ impl<S: Scalar> Character<S> {
             min_cos,
             step: half,
             snap: half,
+            air: S::ZERO,
             floor: None,
             position,
             velocity: Vec3::ZERO,
@@ -118,6 +121,18 @@ impl<S: Scalar> Character<S> {
     pub fn with_snap(self, depth: S) -> Result<Self, Error> {
         let snap = check::within(depth, S::ZERO, S::LIMIT, Input::Snap)?;
         Ok(Self { snap, ..self })
+    }
+
+    /// The same character steering in the air: each frame off the floor, its velocity across
+    /// `up` moves towards the wish's part across `up` by up to `acceleration · dt`
+    /// (units per second squared), never past it, before gravity adds; its velocity along `up`
+    /// is gravity's and the contacts' alone. Quake's air acceleration (`PM_AirMove`), without
+    /// its speed gain. Zero, the default, steers not at all.
+    ///
+    /// Errors: [`Error::NaN`], or [`Error::OutOfRange`] outside `[0, LIMIT]`.
+    pub fn with_air_control(self, acceleration: S) -> Result<Self, Error> {
+        let air = check::within(acceleration, S::ZERO, S::LIMIT, Input::AirControl)?;
+        Ok(Self { air, ..self })
     }
 
     /// The same character keeping a gap of `skin` from what it touches (see
@@ -175,8 +190,8 @@ impl<S: Scalar> Character<S> {
     /// Errors: [`Error::NaN`] or [`Error::OutOfRange`] for a `wish`, `gravity`, `position` or
     /// `velocity` component beyond `±`[`Scalar::LIMIT`] (naming which: [`Input::Wish`],
     /// [`Input::Gravity`], [`Input::Position`], [`Input::Velocity`]), or a `dt`
-    /// ([`Input::TimeStep`]) below zero or so long that a move this frame would not fit in the
-    /// range: `|wish| dt` or `(|velocity| + |gravity| dt) dt` beyond `LIMIT` (the error's `max`
+    /// ([`Input::TimeStep`]) below zero or so long that a move this frame might not fit in the
+    /// range: `(|velocity| + |wish| + |gravity| dt) dt` beyond `LIMIT` (the error's `max`
     /// is the longest `dt` that fits; in `I16F16`, whose `LIMIT` is 4 096, about 20 s under
     /// Earth's gravity: a time step in milliseconds is refused, not obeyed). Then those of the
     /// slides it makes ([`Slider::slide`], [`Slider::step_slide`], [`Slider::snap_to_floor`]):
@@ -184,9 +199,8 @@ impl<S: Scalar> Character<S> {
     /// scalar at its coordinates ([`Error::RadiusTooSmall`]). On an error the character is left
     /// as it was.
     ///
-    /// The wish steers only on the floor. For steering in the air, change
-    /// [`velocity`](Self::velocity) before the update while it is not
-    /// [`is_grounded`](Self::is_grounded) (blend its part across `up` towards the wish).
+    /// The wish steers in the air only with [`with_air_control`](Self::with_air_control) (or
+    /// by changing [`velocity`](Self::velocity) before the update).
     pub fn update<G: Geometry<S> + ?Sized>(
         &mut self,
         level: &G,
@@ -225,6 +239,13 @@ impl<S: Scalar> Character<S> {
                 out
             }
             None => {
+                if me.air > S::ZERO {
+                    let up = me.up.try_normalize().unwrap_or(Vec3::Y);
+                    let along = me.velocity.project_onto_normalized(up);
+                    let wished = wish.reject_from_normalized(up);
+                    let across = (me.velocity - along).move_towards(wished, me.air.mul(dt));
+                    me.velocity = along + across;
+                }
                 me.velocity += gravity * dt;
                 let out = ball.slide(level, me.position, me.velocity * dt)?;
                 me.floor = out.floor_normal(up, min_cos)?;
@@ -248,23 +269,18 @@ impl<S: Scalar> Character<S> {
     }
 }
 
-/// The longest time step whose moves fit in the range: `|wish| dt <= LIMIT` and
-/// `(|velocity| + |gravity| dt) dt <= LIMIT` (lengths bound every coordinate), and `LIMIT`
-/// itself. Worked out in `f64` (correctly rounded operations: the same bits on every target).
+/// The longest time step whose moves fit in the range: `(|velocity| + |wish| + |gravity| dt) dt
+/// <= LIMIT` (lengths bound every coordinate: a walk is at most `|wish| dt`, a fall with air
+/// control at most that), and `LIMIT` itself. Worked out in `f64` (correctly rounded operations: the same bits on every target).
 fn longest_step<S: Scalar>(wish: Vec3<S>, gravity: Vec3<S>, velocity: Vec3<S>) -> f64 {
     let length = |v: Vec3<S>| {
         let [x, y, z] = v.to_array().map(S::to_f64);
         libm::sqrt(x * x + y * y + z * z)
     };
-    let (l, w, g, v) = (
-        S::LIMIT.to_f64(),
-        length(wish),
-        length(gravity),
-        length(velocity),
-    );
-    let walk = if w > 0.0 { l / w } else { l };
+    let (l, g) = (S::LIMIT.to_f64(), length(gravity));
+    let v = length(velocity) + length(wish);
     // The positive root of g t² + v t = l (v >= 0): 2 l / (v + sqrt(v² + 4 g l)), no
-    // cancellation.
+    // cancellation; infinite where nothing moves.
     let fall = 2.0 * l / (v + libm::sqrt(v * v + 4.0 * g * l));
-    walk.min(fall).min(l)
+    fall.min(l)
 }
