@@ -104,13 +104,15 @@ fn conversions_round_trip<S: Tolerance>() {
     };
     assert_eq!(far, Err(want), "{}", S::NAME);
     let nan = Vec3::new(f64::NAN, 0.0, 0.0).try_cast::<S>();
-    assert_eq!(
-        nan,
-        Err(ballcast::Error::NaN {
-            input: ballcast::Input::Number,
-            triangle: None
-        })
-    );
+    let nan_error = ballcast::Error::NaN {
+        input: ballcast::Input::Number,
+        triangle: None,
+    };
+    assert_eq!(nan, Err(nan_error));
+    // One number alike: the value given, where `from_f64` would saturate.
+    assert_eq!(S::try_from_f64(-2.25), Ok(a.y), "{}", S::NAME);
+    assert_eq!(S::try_from_f64(-3.0 * limit), Err(want), "{}", S::NAME);
+    assert_eq!(S::try_from_f64(f64::NAN), Err(nan_error), "{}", S::NAME);
 }
 
 /// The axes, `distance`, `lerp` and the compound `*=` and `/=`: against `f64` on the same

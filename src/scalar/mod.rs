@@ -80,6 +80,23 @@ pub trait Scalar:
     /// Converts from `f64`, rounding to nearest. Fixed-point saturates, and maps NaN to the
     /// largest value so that constructors reject it as out of range rather than read it as zero.
     fn from_f64(v: f64) -> Self;
+    /// Converts from `f64` as [`from_f64`](Self::from_f64) does for a value within
+    /// `±`[`LIMIT`](Self::LIMIT), and refuses any other: [`Error::NaN`](crate::Error::NaN) for
+    /// NaN, [`Error::OutOfRange`](crate::Error::OutOfRange) with the value as given (not
+    /// saturated) for the rest, both about [`Input::Number`](crate::Input::Number). For numbers
+    /// from outside (an input device, a file, a float part of the game) bound for fixed point.
+    ///
+    /// ```
+    /// use ballcast::{Error, Scalar};
+    /// use fixed::types::I16F16;
+    /// assert_eq!(I16F16::try_from_f64(2.5), Ok(I16F16::from_num(2.5)));
+    /// let e = I16F16::try_from_f64(1e9).unwrap_err();
+    /// assert_eq!(e.to_string(), "1000000000 is outside the accepted range [-4096, 4096]");
+    /// assert!(matches!(I16F16::try_from_f64(f64::NAN), Err(Error::NaN { .. })));
+    /// ```
+    fn try_from_f64(v: f64) -> Result<Self, crate::Error> {
+        crate::check::convert(v)
+    }
     /// Converts to `f64`: exact for `f32`, `f64` and `I16F16`; `I32F32` values with more than 53
     /// significant bits round to nearest.
     fn to_f64(self) -> f64;
