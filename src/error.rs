@@ -21,6 +21,9 @@ use core::fmt;
 /// let e = move_and_slide(&s, p, Vec3::new(0.0, f32::NAN, 0.0), 0.5).unwrap_err();
 /// assert_eq!(e.input(), Some(Input::Displacement));
 /// assert_eq!(e.to_string(), "a coordinate of the displacement is NaN");
+/// let mut s: Scene<f32, 4> = Scene::new();
+/// let e = s.push(Triangle::new(p, Vec3::new(f32::NAN, 0.0, 0.0), p)).unwrap_err();
+/// assert_eq!(e.to_string(), "triangle 0: a coordinate of v1 is NaN");
 /// ```
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
@@ -114,8 +117,9 @@ pub enum Error {
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 #[non_exhaustive]
 pub enum Input {
-    /// Vertex 0, 1 or 2 of a triangle (the error gives the triangle's index where it was one
-    /// of many).
+    /// Vertex `v0`, `v1` or `v2` of a triangle, by its number (the error gives the triangle's
+    /// index where it was one of many; in an index buffer, the triangle's corner, not the
+    /// vertex array's index).
     Vertex(u8),
     /// A sweep's start, `p0`.
     Start,
@@ -127,7 +131,8 @@ pub enum Input {
     Position,
     /// A slide's displacement.
     Displacement,
-    /// Where a slide would end with nothing in its way: its position plus its displacement.
+    /// Where a slide would end with nothing in its way: its position (after any push out of
+    /// an overlap) plus its displacement.
     Target,
     /// A velocity to clip.
     Velocity,
@@ -163,9 +168,10 @@ impl Input {
     /// What the input is, as the error's sentence names it, and whether it is a vector.
     const fn noun(self) -> (&'static str, bool) {
         match self {
-            Input::Vertex(0) => ("vertex 0", true),
-            Input::Vertex(1) => ("vertex 1", true),
-            Input::Vertex(_) => ("vertex 2", true),
+            Input::Vertex(0) => ("v0", true),
+            Input::Vertex(1) => ("v1", true),
+            Input::Vertex(2) => ("v2", true),
+            Input::Vertex(_) => ("a vertex", true),
             Input::Start => ("the start", true),
             Input::End => ("the end", true),
             Input::Radius => ("the radius", false),
@@ -291,7 +297,7 @@ impl fmt::Display for Error {
             } => write!(
                 f,
                 "the radius {radius} is below {min}, the smallest the scalar resolves at \
-                 coordinates up to {extent} (of the position and the move's target)"
+                 coordinates up to {extent}"
             ),
             Error::Mismatch { .. } => {
                 f.write_str("baked parts differ from what their source triangle makes")

@@ -157,17 +157,24 @@ fn mistaken_frames_and_jumps_name_their_argument<S: Tolerance>() {
     }
     assert!(me.is_grounded(), "{}", S::NAME);
     let before = me;
-    let longest = (S::LIMIT.to_f64() / 9.81).sqrt();
-    let e = me.update(&level, Vec3::ZERO, gravity, S::from_f64(2.0 * longest));
-    match e {
-        Err(Error::OutOfRange {
-            input: Input::TimeStep,
-            max,
-            ..
-        }) => assert!((max / longest - 1.0).abs() < 1e-3, "{}: {max}", S::NAME),
-        other => panic!("{}: {other:?}", S::NAME),
+    // At rest the bound is the fall's, sqrt(LIMIT / g); walking at a tenth of LIMIT per second,
+    // the time t with (w + g t) t = LIMIT. Twice either is refused with it as the range's end.
+    let l = S::LIMIT.to_f64();
+    let w = 0.1 * l;
+    let walking = (-w + (w * w + 4.0 * 9.81 * l).sqrt()) / (2.0 * 9.81);
+    let wish = Vec3::new(S::from_f64(w), S::ZERO, S::ZERO);
+    for (wish, longest) in [(Vec3::ZERO, (l / 9.81).sqrt()), (wish, walking)] {
+        let e = me.update(&level, wish, gravity, S::from_f64(2.0 * longest));
+        match e {
+            Err(Error::OutOfRange {
+                input: Input::TimeStep,
+                max,
+                ..
+            }) => assert!((max / longest - 1.0).abs() < 1e-3, "{}: {max}", S::NAME),
+            other => panic!("{}: {other:?}", S::NAME),
+        }
+        assert_eq!(me, before, "{}", S::NAME);
     }
-    assert_eq!(me, before, "{}", S::NAME);
     for bad in [f64::NAN, -1.0] {
         let speed = S::from_f64(bad);
         if speed.to_f64().is_nan() == bad.is_nan() {
@@ -176,10 +183,14 @@ fn mistaken_frames_and_jumps_name_their_argument<S: Tolerance>() {
             assert_eq!(me, before, "{}", S::NAME);
         }
     }
-    me.velocity = v::<S>([0.0, S::LIMIT.to_f64(), 0.0]);
-    let e = me.jump(S::from_f64(4.0)).map_err(|e| e.input());
-    assert_eq!(e, Err(Some(Input::Velocity)), "{}", S::NAME);
-    assert!(me.is_grounded(), "{}", S::NAME);
+    // A velocity at the range's end that the jump would take past it, and one already past.
+    for vy in [S::LIMIT.to_f64(), 2.0 * S::LIMIT.to_f64()] {
+        me.velocity = v::<S>([0.0, vy, 0.0]);
+        let held = me;
+        let e = me.jump(S::from_f64(4.0)).map_err(|e| e.input());
+        assert_eq!(e, Err(Some(Input::Velocity)), "{}: {vy}", S::NAME);
+        assert_eq!(me, held, "{}: {vy}", S::NAME);
+    }
     let tiny = ballcast::slide::min_radius(S::ZERO).to_f64() / 2.0;
     let e = Character::new(v::<S>([0.0; 3]), S::from_f64(tiny));
     assert!(
@@ -187,6 +198,24 @@ fn mistaken_frames_and_jumps_name_their_argument<S: Tolerance>() {
         "{}: {e:?}",
         S::NAME
     );
+    // Where floats round coarser, a radius fine at the origin is too small far out: the
+    // check is made where the ball stands (fixed point rounds alike everywhere).
+    let far = v::<S>([0.5 * S::LIMIT.to_f64(), 0.0, 0.0]);
+    let (near_min, far_min) = (
+        ballcast::slide::min_radius(S::ZERO),
+        ballcast::slide::min_radius(far.x),
+    );
+    if far_min > near_min + near_min {
+        let r = near_min + near_min;
+        assert!(Character::new(v::<S>([0.0; 3]), r).is_ok(), "{}", S::NAME);
+        let e = Character::new(far, r);
+        let extent = far.x.to_f64();
+        assert!(
+            matches!(e, Err(Error::RadiusTooSmall { extent: x, .. }) if x == extent),
+            "{}: {e:?}",
+            S::NAME
+        );
+    }
 }
 
 /// A ball standing still jumps (4 units/s up) wishing 3 units/s along x. Without air control

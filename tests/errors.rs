@@ -5,8 +5,8 @@ mod common;
 
 use ballcast::slide::Character;
 use ballcast::{
-    Error, Input, Scalar, Scene, Slider, Sweep, Triangle, Vec3, move_and_slide, penetration,
-    winding,
+    Error, Input, Scalar, Scene, Slider, StandardSweep, Sweep, Triangle, Vec3, move_and_slide,
+    penetration, winding,
 };
 use common::v;
 use fixed::types::{I16F16, I32F32};
@@ -65,7 +65,7 @@ fn out_of_range_vertex_gives_value_and_limit<S: Scalar>() {
     assert_eq!(
         e.to_string(),
         format!(
-            "triangle 1: a coordinate of vertex 2 is {far}, outside the accepted range \
+            "triangle 1: a coordinate of v2 is {far}, outside the accepted range \
              [-{l}, {l}]"
         )
     );
@@ -77,8 +77,14 @@ fn each_argument_is_named<S: Scalar>() {
     let far = S::from_f64(2.0 * S::LIMIT.to_f64());
     let (z, one, half) = (Vec3::<S>::ZERO, S::ONE, S::from_f64(0.5));
     let out = Vec3::new(S::ZERO, far, S::ZERO);
+    // Beyond a standard frame's bound (3.5 LIMIT) too, for `StandardSweep`.
+    let beyond = Vec3::new(S::ZERO, far + far, S::ZERO);
     let named = |r: Result<(), Error>| match r {
-        Err(Error::OutOfRange { input, value, .. }) if value == far.to_f64() => Some(input),
+        Err(Error::OutOfRange { input, value, .. })
+            if value == far.to_f64() || value == (far + far).to_f64() =>
+        {
+            Some(input)
+        }
         _ => None,
     };
     let scene: Scene<S, 1> = Scene::new();
@@ -86,6 +92,9 @@ fn each_argument_is_named<S: Scalar>() {
     let dt = S::from_f64(1.0 / 60.0);
     let me = Character::new(z, half).unwrap();
     let update = |wish, gravity, dt| me.clone().update(&scene, wish, gravity, dt).map(drop);
+    let (mut away, mut rushing) = (me, me);
+    (away.position, rushing.velocity) = (out, out);
+    let rested = move_and_slide(&scene, z, z, half).unwrap();
     let (three_quarters, half_way) = (
         S::from_f64(0.75 * S::LIMIT.to_f64()),
         S::div_pow2(S::LIMIT, 1),
@@ -116,6 +125,20 @@ fn each_argument_is_named<S: Scalar>() {
             Input::Snap,
         ),
         (me.with_step(far).map(drop), Input::Step),
+        (
+            ball.step_slide(&scene, z, z, Vec3::Y, half, far).map(drop),
+            Input::Step,
+        ),
+        (
+            ball.snap_to_floor(&scene, out, z, Vec3::Y, half, one)
+                .map(drop),
+            Input::Position,
+        ),
+        (rested.clip(out).map(drop), Input::Velocity),
+        (StandardSweep::new(beyond, z, one).map(drop), Input::Start),
+        (StandardSweep::new(z, beyond, one).map(drop), Input::End),
+        (away.update(&scene, z, z, dt).map(drop), Input::Position),
+        (rushing.update(&scene, z, z, dt).map(drop), Input::Velocity),
         (update(out, z, dt), Input::Wish),
         (update(z, out, dt), Input::Gravity),
         (update(z, z, far), Input::TimeStep),
@@ -171,10 +194,7 @@ fn nan_is_its_own_cause<S: Scalar>() {
     let t = Triangle::new(p, bad, v([1.0, 0.0, 0.0]));
     let pushed = scene.push(t).unwrap_err();
     assert_eq!(pushed, e(Input::Vertex(1)).at(0));
-    assert_eq!(
-        pushed.to_string(),
-        "triangle 0: a coordinate of vertex 1 is NaN"
-    );
+    assert_eq!(pushed.to_string(), "triangle 0: a coordinate of v1 is NaN");
 }
 
 /// Negative radius and a radius too small for the scalar give the value (and the limit).

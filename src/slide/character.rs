@@ -191,9 +191,10 @@ impl<S: Scalar> Character<S> {
     /// `velocity` component beyond `±`[`Scalar::LIMIT`] (naming which: [`Input::Wish`],
     /// [`Input::Gravity`], [`Input::Position`], [`Input::Velocity`]), or a `dt`
     /// ([`Input::TimeStep`]) below zero or so long that a move this frame might not fit in the
-    /// range: `(|velocity| + |wish| + |gravity| dt) dt` beyond `LIMIT` (the error's `max`
-    /// is the longest `dt` that fits; in `I16F16`, whose `LIMIT` is 4 096, about 20 s under
-    /// Earth's gravity: a time step in milliseconds is refused, not obeyed). Then those of the
+    /// range: `(|velocity| + |wish| + |gravity| dt) dt` beyond `LIMIT` (the error's `max` is
+    /// the longest `dt` that fits, in `f64`; in `I16F16`, whose `LIMIT` is 4 096, about 20 s
+    /// for a ball at rest under Earth's gravity). Give `dt` in seconds: a time step in
+    /// milliseconds is refused only beyond that bound, and below it is obeyed. Then those of the
     /// slides it makes ([`Slider::slide`], [`Slider::step_slide`], [`Slider::snap_to_floor`]):
     /// a move whose target leaves the range ([`Input::Target`]), a ball too small for the
     /// scalar at its coordinates ([`Error::RadiusTooSmall`]). On an error the character is left
@@ -212,15 +213,19 @@ impl<S: Scalar> Character<S> {
         check::point(gravity, S::LIMIT, Input::Gravity)?;
         check::point(self.position, S::LIMIT, Input::Position)?;
         check::point(self.velocity, S::LIMIT, Input::Velocity)?;
-        let dt = check::within(dt, S::ZERO, S::LIMIT, Input::TimeStep)?;
-        let longest = longest_step(wish, gravity, self.velocity);
-        if dt.to_f64() > longest {
+        // NaN as NaN; anything else outside [0, longest] (infinities too) with that range.
+        let (input, triangle) = (Input::TimeStep, None);
+        if dt.partial_cmp(&dt).is_none() {
+            return Err(Error::NaN { input, triangle });
+        }
+        let (t, longest) = (dt.to_f64(), longest_step(wish, gravity, self.velocity));
+        if !(0.0..=longest).contains(&t) {
             return Err(Error::OutOfRange {
-                input: Input::TimeStep,
-                value: dt.to_f64(),
+                input,
+                value: t,
                 min: 0.0,
                 max: longest,
-                triangle: None,
+                triangle,
             });
         }
         // Worked on a copy, kept only when every slide succeeded.
