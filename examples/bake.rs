@@ -19,7 +19,7 @@ use ballcast_level::{Baked, LevelError, bake, load, verdicts};
 use fixed::types::{I16F16, I32F32};
 use std::process::ExitCode;
 
-const USAGE: &str = "usage: bake LEVEL [--scalar f32|f64|i16f16|i32f32] [--radius R] [--two-sided]";
+const USAGE: &str = "usage: bake LEVEL [--scalar f32|f64|i16f16|i32f32 (default i16f16)] [--radius R] [--two-sided]";
 
 fn usage() -> ExitCode {
     eprintln!("{USAGE}");

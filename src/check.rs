@@ -53,13 +53,13 @@ pub(crate) fn point<S: Scalar>(p: Vec3<S>, bound: S, input: Input) -> Result<Vec
     Ok(p)
 }
 
-/// Accepts a radius that is finite, non-negative and at most [`Scalar::LIMIT`].
+/// Accepts a radius that is finite, non-negative and at most [`Scalar::LIMIT`]: NaN as NaN, a
+/// negative one (an infinity too) as [`Error::NegativeRadius`], the rest against `[0, LIMIT]`.
 pub(crate) fn radius<S: Scalar>(r: S) -> Result<S, Error> {
-    within(r, -S::LIMIT, S::LIMIT, Input::Radius)?;
     if r < S::ZERO {
         return Err(Error::NegativeRadius { value: r.to_f64() });
     }
-    Ok(r)
+    within(r, S::ZERO, S::LIMIT, Input::Radius)
 }
 
 /// The bound on coordinates in a standard frame: world points within `LIMIT` land within

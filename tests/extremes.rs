@@ -154,8 +154,21 @@ fn safe_range_is_accepted_and_enforced<S: Scalar>() {
     assert_eq!(start, e(Input::Start, past));
     let end = sweep([0.0; 3], [0.0, -past, 0.0], S::ONE);
     assert_eq!(end, e(Input::End, -past));
+    // A radius's range starts at zero (a negative one is its own error).
     let radius = sweep([0.0; 3], [0.0; 3], S::from_f64(past));
-    assert_eq!(radius, e(Input::Radius, past));
+    let range_from_zero = match e(Input::Radius, past) {
+        Error::OutOfRange {
+            input, value, max, ..
+        } => Error::OutOfRange {
+            input,
+            value,
+            min: 0.0,
+            max,
+            triangle: None,
+        },
+        other => other,
+    };
+    assert_eq!(radius, range_from_zero);
     let t = tri::<S>([[0.0; 3], [0.0, 0.0, past], [1.0, 0.0, 0.0]]);
     assert_eq!(t.unwrap_err(), e(Input::Vertex(1), past));
     let st = tri::<S>([[0.0; 3], [0.0, 0.0, 1.0], [1.0, 0.0, 0.0]]).unwrap();
@@ -201,7 +214,23 @@ fn non_finite_floats_are_refused<S: Scalar>() {
             }
         };
         assert_eq!(Sweep::new(p, z, S::ONE), Err(expected(Input::Start)));
-        assert_eq!(Sweep::new(z, z, bad), Err(expected(Input::Radius)));
+        // A radius of minus infinity is negative; plus infinity is beyond [0, LIMIT].
+        let radius = match expected(Input::Radius) {
+            _ if bad < S::ZERO => Error::NegativeRadius {
+                value: bad.to_f64(),
+            },
+            Error::OutOfRange {
+                input, value, max, ..
+            } => Error::OutOfRange {
+                input,
+                value,
+                min: 0.0,
+                max,
+                triangle: None,
+            },
+            other => other,
+        };
+        assert_eq!(Sweep::new(z, z, bad), Err(radius));
         let t = Triangle::new(z, p, Vec3::new(S::ONE, S::ZERO, S::ZERO));
         assert_eq!(StandardTriangle::new(&t), Err(expected(Input::Vertex(1))));
     }

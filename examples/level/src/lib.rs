@@ -72,7 +72,8 @@ pub enum Problem {
         /// How many triangles it holds.
         count: usize,
     },
-    /// A coordinate is NaN or infinite.
+    /// A coordinate is NaN or infinite (in a glTF file: an OBJ file's is refused at its line,
+    /// as [`Problem::Malformed`]).
     NotFinite {
         /// The triangle's index in the level.
         triangle: usize,
@@ -107,7 +108,11 @@ impl fmt::Display for LevelError {
                 )
             }
             Problem::NotFinite { triangle } => {
-                write!(f, "triangle {triangle} has a NaN or infinite coordinate")
+                write!(
+                    f,
+                    "triangle {triangle} (counting from 0, polygons split into triangles) has a \
+                     NaN or infinite coordinate"
+                )
             }
             Problem::OutOfRange {
                 triangle,
@@ -116,7 +121,8 @@ impl fmt::Display for LevelError {
                 limit,
             } => write!(
                 f,
-                "triangle {triangle} has the coordinate {value}, outside {scalar}'s range ±{limit}"
+                "triangle {triangle} (counting from 0, polygons split into triangles) has the \
+                 coordinate {value}, outside {scalar}'s range ±{limit}"
             ),
             Problem::Mesh(e) => write!(f, "mesh build refused: {e}"),
         }

@@ -1,7 +1,8 @@
 //! Wavefront OBJ through `tobj`: faces triangulated as fans (quads into two triangles),
 //! negative indices counted back from the last vertex, materials ignored (their `.mtl` files
 //! are not read). Before `tobj` reads it, the file is scanned for the faults a level must not
-//! pass over, so that the error names the line: a position that is not three numbers, a face
+//! pass over, so that the error names the line: a position that is not three numbers (or has a
+//! NaN or infinite one: `nan` and `inf` parse as numbers), a face
 //! with fewer than three corners (which `tobj` would drop without a word), a corner whose
 //! vertex, texture or normal index is not a nonzero integer or names one not defined before it.
 
@@ -62,10 +63,16 @@ fn first_fault(text: &str) -> Option<String> {
         let at = n + 1;
         match words.next() {
             Some("v") => {
-                if words.take(3).filter(|w| w.parse::<f64>().is_ok()).count() < 3 {
-                    let line = line.trim();
+                let numbers: Vec<f64> = words.take(3).filter_map(|w| w.parse().ok()).collect();
+                let line = line.trim();
+                if numbers.len() < 3 {
                     return Some(format!(
                         "line {at}: `{line}` is not a position of three numbers"
+                    ));
+                }
+                if numbers.iter().any(|c| !c.is_finite()) {
+                    return Some(format!(
+                        "line {at}: `{line}` has a NaN or infinite coordinate"
                     ));
                 }
                 defined[0] += 1;

@@ -139,8 +139,11 @@ fn malformed_obj() {
         Problem::NoTriangles
     ));
     assert!(matches!(
-        refused("nan.obj", "NaN"),
-        Problem::NotFinite { triangle: 0 }
+        refused(
+            "nan.obj",
+            "line 2: `v nan 0 0` has a NaN or infinite coordinate"
+        ),
+        Problem::Malformed(_)
     ));
 }
 
