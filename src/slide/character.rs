@@ -72,10 +72,11 @@ impl<S: Scalar> Character<S> {
         let ball = Slider::new(radius)?;
         let position = check::point(position, S::LIMIT, Input::Position)?;
         let (extent, half) = (magnitude(position), S::div_pow2(ball.radius(), 1));
-        if ball.radius() < min_radius(extent) {
+        let min = min_radius(extent);
+        if ball.radius() < min {
             return Err(Error::RadiusTooSmall {
                 radius: radius.to_f64(),
-                min: min_radius(extent).to_f64(),
+                min: min.to_f64(),
                 extent: extent.to_f64(),
             });
         }
@@ -144,6 +145,11 @@ impl<S: Scalar> Character<S> {
         Ok(Self { ball, ..self })
     }
 
+    /// `up` as a unit vector (validated nonzero when set).
+    fn unit_up(&self) -> Vec3<S> {
+        self.up.try_normalize().unwrap_or(Vec3::Y)
+    }
+
     /// The ball's settings, for queries of one's own (a probe, a cast ahead).
     pub fn slider(&self) -> Slider<S> {
         self.ball
@@ -176,8 +182,8 @@ impl<S: Scalar> Character<S> {
             return Ok(false);
         }
         // Both within the range, so the sum cannot overflow before it is checked.
-        let up = self.up.try_normalize().unwrap_or(Vec3::Y);
-        let velocity = check::point(self.velocity, S::LIMIT, Input::Velocity)? + up * speed;
+        let velocity =
+            check::point(self.velocity, S::LIMIT, Input::Velocity)? + self.unit_up() * speed;
         self.velocity = check::point(velocity, S::LIMIT, Input::Velocity)?;
         self.floor = None;
         Ok(true)
@@ -245,7 +251,7 @@ impl<S: Scalar> Character<S> {
             }
             None => {
                 if me.air > S::ZERO {
-                    let up = me.up.try_normalize().unwrap_or(Vec3::Y);
+                    let up = me.unit_up();
                     let along = me.velocity.project_onto_normalized(up);
                     let wished = wish.reject_from_normalized(up);
                     let across = (me.velocity - along).move_towards(wished, me.air.mul(dt));
@@ -276,7 +282,8 @@ impl<S: Scalar> Character<S> {
 
 /// The longest time step whose moves fit in the range: `(|velocity| + |wish| + |gravity| dt) dt
 /// <= LIMIT` (lengths bound every coordinate: a walk is at most `|wish| dt`, a fall with air
-/// control at most that), and `LIMIT` itself. Worked out in `f64` (correctly rounded operations: the same bits on every target).
+/// control at most that), and `LIMIT` itself. Worked out in `f64` (correctly rounded
+/// operations: the same bits on every target).
 fn longest_step<S: Scalar>(wish: Vec3<S>, gravity: Vec3<S>, velocity: Vec3<S>) -> f64 {
     let length = |v: Vec3<S>| {
         let [x, y, z] = v.to_array().map(S::to_f64);
