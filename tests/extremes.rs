@@ -156,19 +156,7 @@ fn safe_range_is_accepted_and_enforced<S: Scalar>() {
     assert_eq!(end, e(Input::End, -past));
     // A radius's range starts at zero (a negative one is its own error).
     let radius = sweep([0.0; 3], [0.0; 3], S::from_f64(past));
-    let range_from_zero = match e(Input::Radius, past) {
-        Error::OutOfRange {
-            input, value, max, ..
-        } => Error::OutOfRange {
-            input,
-            value,
-            min: 0.0,
-            max,
-            triangle: None,
-        },
-        other => other,
-    };
-    assert_eq!(radius, range_from_zero);
+    assert_eq!(radius, from_zero(e(Input::Radius, past)));
     let t = tri::<S>([[0.0; 3], [0.0, 0.0, past], [1.0, 0.0, 0.0]]);
     assert_eq!(t.unwrap_err(), e(Input::Vertex(1), past));
     let st = tri::<S>([[0.0; 3], [0.0, 0.0, 1.0], [1.0, 0.0, 0.0]]).unwrap();
@@ -215,24 +203,32 @@ fn non_finite_floats_are_refused<S: Scalar>() {
         };
         assert_eq!(Sweep::new(p, z, S::ONE), Err(expected(Input::Start)));
         // A radius of minus infinity is negative; plus infinity is beyond [0, LIMIT].
-        let radius = match expected(Input::Radius) {
-            _ if bad < S::ZERO => Error::NegativeRadius {
+        let radius = if bad < S::ZERO {
+            Error::NegativeRadius {
                 value: bad.to_f64(),
-            },
-            Error::OutOfRange {
-                input, value, max, ..
-            } => Error::OutOfRange {
-                input,
-                value,
-                min: 0.0,
-                max,
-                triangle: None,
-            },
-            other => other,
+            }
+        } else {
+            from_zero(expected(Input::Radius))
         };
         assert_eq!(Sweep::new(z, z, bad), Err(radius));
         let t = Triangle::new(z, p, Vec3::new(S::ONE, S::ZERO, S::ZERO));
         assert_eq!(StandardTriangle::new(&t), Err(expected(Input::Vertex(1))));
+    }
+}
+
+/// The same error with its range starting at zero, as a radius's does.
+fn from_zero(e: Error) -> Error {
+    match e {
+        Error::OutOfRange {
+            input, value, max, ..
+        } => Error::OutOfRange {
+            input,
+            value,
+            min: 0.0,
+            max,
+            triangle: None,
+        },
+        other => other,
     }
 }
 
