@@ -110,8 +110,8 @@ pub enum Error {
 }
 
 /// The argument an [`Error::NaN`], [`Error::OutOfRange`] or [`Error::ZeroVector`] is about,
-/// named as the calls name it. For a vector, the error is about one of its coordinates (the first refused, in the
-/// order x, y, z), whose value [`Error::OutOfRange`] gives.
+/// named as the calls name it. For a vector, the error is about one of its coordinates (the
+/// first refused, in the order x, y, z), whose value [`Error::OutOfRange`] gives.
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]

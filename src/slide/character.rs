@@ -217,7 +217,7 @@ impl<S: Scalar> Character<S> {
     ) -> Result<Slide<S>, Error> {
         check::point(wish, S::LIMIT, Input::Wish)?;
         check::point(gravity, S::LIMIT, Input::Gravity)?;
-        check::point(self.position, S::LIMIT, Input::Position)?;
+        // (The position is checked, and named, by the first slide.)
         check::point(self.velocity, S::LIMIT, Input::Velocity)?;
         // NaN as NaN; anything else outside [0, longest] (infinities too) with that range.
         let (input, triangle) = (Input::TimeStep, None);
