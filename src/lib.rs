@@ -113,6 +113,7 @@ mod adjacency;
 pub mod bvh;
 mod check;
 pub mod compact;
+pub mod compound;
 pub mod contact;
 mod cover;
 mod cull;
@@ -145,6 +146,7 @@ mod xorshift;
 
 pub use bvh::{Grid, Node};
 pub use compact::{CompactError, CompactMesh, MeshIndex};
+pub use compound::{Compound, Part, PartIndex};
 pub use contact::Features;
 pub use error::{Error, Input};
 pub use face::standard_face;

@@ -26,9 +26,14 @@ pub const PLANES: usize = 4;
 type Tie<S> = (usize, S, Vec3<S>, Contact);
 
 /// An accumulator for the contacts of one sweep, fed in any order with [`offer`](Self::offer).
+/// (Public only to name it in [`Part`](crate::compound::Part)'s hidden methods: this module is
+/// private, so no user can.)
 #[derive(Debug)]
-pub(crate) struct Earliest<S: Scalar> {
+pub struct Earliest<S: Scalar> {
     best: Option<(usize, Hit<S>)>,
+    /// Added to the index of every contact offered: where the current part of a
+    /// [`Compound`](crate::Compound) starts in its index space.
+    base: usize,
     /// The tied contacts as `(index, alpha, normal, feature)`: all the merge needs, so that a
     /// firmware's stack pays for no more.
     ties: Vec<Tie<S>, TIES>,
@@ -42,6 +47,7 @@ impl<S: Scalar> Earliest<S> {
     fn new(fixed: Option<S>) -> Self {
         Self {
             best: None,
+            base: 0,
             ties: Vec::new(),
             fixed,
             lossy: false,
@@ -58,11 +64,17 @@ impl<S: Scalar> Earliest<S> {
         }
     }
 
+    /// Sets the index the next contacts' indices count from; returns the one before.
+    pub(crate) fn rebase(&mut self, base: usize) -> usize {
+        core::mem::replace(&mut self.base, base)
+    }
+
     /// Takes the contact of triangle `index`.
     pub(crate) fn offer(&mut self, index: usize, hit: Hit<S>) {
         if hit.alpha > self.reach() {
             return;
         }
+        let index = self.base.saturating_add(index);
         let first = self
             .best
             .is_none_or(|(i, b)| hit.alpha < b.alpha || (hit.alpha == b.alpha && index < i));
@@ -160,4 +172,20 @@ pub(crate) fn earliest<S: Scalar>(mut visit: impl FnMut(&mut Earliest<S>)) -> Op
     let mut second = Earliest::new(Some(first.reach()));
     visit(&mut second);
     second.finish()
+}
+
+/// [`earliest`] over the contacts `offer(acc, scan)` gives: by its quick path (`scan` false),
+/// which returns false when it found its parts malformed; then over all of them by a scan
+/// (`scan` true) of every triangle, whose answer holds whatever the parts.
+pub(crate) fn earliest_of<S: Scalar>(
+    mut offer: impl FnMut(&mut Earliest<S>, bool) -> bool,
+) -> Option<SceneHit<S>> {
+    let mut sound = true;
+    let hit = earliest(|acc| sound &= offer(acc, false));
+    if sound {
+        return hit;
+    }
+    earliest(|acc| {
+        offer(acc, true);
+    })
 }

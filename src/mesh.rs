@@ -4,7 +4,8 @@
 mod build;
 
 use crate::bvh::{self, Grid, Node};
-use crate::merge::{Earliest, earliest};
+use crate::compound::Part;
+use crate::merge::{Earliest, earliest_of};
 use crate::{Error, Features, Geometry, Parts, Scalar, SceneHit, StandardTriangle, Sweep};
 use crate::{Triangle, Vec3};
 use core::fmt;
@@ -262,6 +263,20 @@ impl<'a, S: Scalar> Mesh<'a, S> {
     /// prepared triangles in input order, bit for bit, found in `O(log N)` node visits for a
     /// short sweep.
     pub fn cast(&self, sweep: &Sweep<S>) -> Option<SceneHit<S>> {
+        earliest_of(|acc, scan| self.offer(sweep, acc, scan))
+    }
+
+    /// Offers the contacts of the triangles the tree reaches (all of them with `scan`); false
+    /// where the tree proved malformed (never from `build`).
+    fn offer(&self, sweep: &Sweep<S>, acc: &mut Earliest<S>, scan: bool) -> bool {
+        if scan {
+            for (t, &i) in self.triangles.iter().zip(self.order) {
+                if let Some(hit) = t.cast(sweep) {
+                    acc.offer(i as usize, hit);
+                }
+            }
+            return true;
+        }
         let leaf = |acc: &mut Earliest<S>, slots: core::ops::Range<usize>, exit: f32| {
             // A contact with a triangle of the leaf comes no later than where the segment
             // leaves the leaf's grown box (`0 <= exit`, about 1 at most): a reach for
@@ -281,21 +296,18 @@ impl<'a, S: Scalar> Mesh<'a, S> {
                 }
             }
         };
-        let mut sound = true;
-        let hit = earliest(|acc| {
-            sound &= bvh::leaves_along(self.nodes, &self.grid, sweep, acc, leaf);
-        });
-        if sound {
-            return hit;
-        }
-        // Malformed parts (never from `build`): test every triangle.
-        earliest(|acc| {
-            for (t, &i) in self.triangles.iter().zip(self.order) {
-                if let Some(hit) = t.cast(sweep) {
-                    acc.offer(i as usize, hit);
-                }
-            }
-        })
+        bvh::leaves_along(self.nodes, &self.grid, sweep, acc, leaf)
+    }
+}
+
+impl<S: Scalar> Part<S> for Mesh<'_, S> {
+    fn offer_contacts(&self, sweep: &Sweep<S>, acc: &mut Earliest<S>, scan: bool) -> bool {
+        self.offer(sweep, acc, scan)
+    }
+
+    /// One more than the largest input index kept (the build may have skipped the last).
+    fn index_bound(&self) -> usize {
+        self.order.iter().fold(0, |m, &i| m.max(i as usize + 1))
     }
 }
 

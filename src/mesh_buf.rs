@@ -3,6 +3,8 @@
 use crate::Triangle;
 use crate::Vec3;
 use crate::bvh::{Grid, Node, nodes_for};
+use crate::compound::Part;
+use crate::merge::Earliest;
 use crate::{Degenerates, Geometry, Mesh, MeshError, Scalar, SceneHit, StandardTriangle, Sweep};
 use alloc::vec;
 use alloc::vec::Vec;
@@ -91,5 +93,15 @@ impl<S: Scalar> Geometry<S> for MeshBuf<S> {
 
     fn visit(&self, min: Vec3<S>, max: Vec3<S>, f: &mut dyn FnMut(usize, &StandardTriangle<S>)) {
         self.mesh().visit(min, max, f)
+    }
+}
+
+impl<S: Scalar> Part<S> for MeshBuf<S> {
+    fn index_bound(&self) -> usize {
+        self.mesh().index_bound()
+    }
+
+    fn offer_contacts(&self, sweep: &Sweep<S>, acc: &mut Earliest<S>, scan: bool) -> bool {
+        self.mesh().offer_contacts(sweep, acc, scan)
     }
 }

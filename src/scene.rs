@@ -2,8 +2,9 @@
 //! edges computed from adjacency, and its earliest-contact query.
 
 use crate::adjacency::{deactivate, hides};
+use crate::compound::Part;
 use crate::cover::{covered, interval};
-use crate::merge::{PLANES, earliest};
+use crate::merge::{Earliest, PLANES, earliest};
 use crate::scalar::{largest, tie};
 use crate::seam::seam_margin;
 use crate::{Contact, Error, Scalar, StandardTriangle, Sweep, Triangle, Vec3};
@@ -237,16 +238,19 @@ impl<S: Scalar, const N: usize> Scene<S, N> {
     /// seam gets one well-defined normal, and their distinct planes are listed for a response.
     /// The rule depends on the set of contacts, not on the order they are found in.
     pub fn cast(&self, sweep: &Sweep<S>) -> Option<SceneHit<S>> {
+        earliest(|acc| self.offer(sweep, acc))
+    }
+
+    /// Offers the contact of every triangle whose box the path's grown box meets.
+    fn offer(&self, sweep: &Sweep<S>, acc: &mut Earliest<S>) {
         let reach = Bounds::of(&[sweep.p0(), sweep.p1()], reach(sweep));
-        earliest(|acc| {
-            for (i, (b, t)) in self.bounds.iter().zip(self.triangles.iter()).enumerate() {
-                if b.overlaps(&reach)
-                    && let Some(hit) = t.cast(sweep)
-                {
-                    acc.offer(i, hit);
-                }
+        for (i, (b, t)) in self.bounds.iter().zip(self.triangles.iter()).enumerate() {
+            if b.overlaps(&reach)
+                && let Some(hit) = t.cast(sweep)
+            {
+                acc.offer(i, hit);
             }
-        })
+        }
     }
 }
 
@@ -310,15 +314,37 @@ impl<S: Scalar, const N: usize> Geometry<S> for Scene<S, N> {
 impl<S: Scalar> Geometry<S> for [StandardTriangle<S>] {
     fn cast(&self, sweep: &Sweep<S>) -> Option<SceneHit<S>> {
         earliest(|acc| {
-            for (i, t) in self.iter().enumerate() {
-                if let Some(hit) = t.cast(sweep) {
-                    acc.offer(i, hit);
-                }
-            }
+            self.offer_contacts(sweep, acc, true);
         })
     }
 
     fn visit(&self, _: Vec3<S>, _: Vec3<S>, f: &mut dyn FnMut(usize, &StandardTriangle<S>)) {
         self.iter().enumerate().for_each(|(i, t)| f(i, t));
+    }
+}
+
+impl<S: Scalar, const N: usize> Part<S> for Scene<S, N> {
+    fn index_bound(&self) -> usize {
+        self.len()
+    }
+
+    fn offer_contacts(&self, sweep: &Sweep<S>, acc: &mut Earliest<S>, _: bool) -> bool {
+        self.offer(sweep, acc);
+        true
+    }
+}
+
+impl<S: Scalar> Part<S> for [StandardTriangle<S>] {
+    fn index_bound(&self) -> usize {
+        self.len()
+    }
+
+    fn offer_contacts(&self, sweep: &Sweep<S>, acc: &mut Earliest<S>, _: bool) -> bool {
+        for (i, t) in self.iter().enumerate() {
+            if let Some(hit) = t.cast(sweep) {
+                acc.offer(i, hit);
+            }
+        }
+        true
     }
 }

@@ -4,9 +4,10 @@
 
 use super::{CompactMesh, MeshIndex, TWO_SIDED};
 use crate::bvh::{self, Grid};
+use crate::compound::Part;
 use crate::contact::within_reach;
 use crate::cull::{Path, SOFT_F64, UnitBox, UnitHeights};
-use crate::merge::{Earliest, earliest};
+use crate::merge::{Earliest, earliest_of};
 use crate::scalar::{largest, smallest};
 use crate::triangle::Frame;
 use crate::{Features, Geometry, Hit, Scalar, SceneHit, StandardTriangle, Sweep, Triangle, Vec3};
@@ -22,6 +23,28 @@ impl<S: Scalar, I: MeshIndex> CompactMesh<'_, S, I> {
     /// `f64` is software (a Cortex-M) the `f64` tests cost more than the preparations they
     /// save. Either way the answer is the same.
     pub(super) fn cast_culled(&self, sweep: &Sweep<S>, integer: bool) -> Option<SceneHit<S>> {
+        earliest_of(|acc, scan| self.offer(sweep, acc, scan, integer))
+    }
+
+    /// Offers the contacts of the triangles the tree reaches, culled as
+    /// [`cast_culled`](Self::cast_culled) says (all of them with `scan`); false where the tree
+    /// proved malformed (never from `compact`).
+    fn offer(&self, sweep: &Sweep<S>, acc: &mut Earliest<S>, scan: bool, integer: bool) -> bool {
+        let corners = |s: usize| Some(self.triangles.get(s)?.map(I::get));
+        if scan {
+            let slot = |s: usize| -> Option<(usize, StandardTriangle<S>)> {
+                let t = triangle(self.vertices, corners(s)?)?;
+                Some((self.order.get(s)?.get(), prepare(&t, *self.bytes.get(s)?)?))
+            };
+            for s in 0..self.triangles.len() {
+                if let Some((i, t)) = slot(s)
+                    && let Some(hit) = t.cast(sweep)
+                {
+                    acc.offer(i, hit);
+                }
+            }
+            return true;
+        }
         let cells = self.grid.lo.iter().chain(&self.grid.hi);
         let extent =
             cells.fold(0.0f64, |m, &c| m.max((c as f64).abs())) / Grid::scale(self.grid.exponent);
@@ -34,11 +57,6 @@ impl<S: Scalar, I: MeshIndex> CompactMesh<'_, S, I> {
         let cull = match units {
             Some(b) => Err(b),
             None => Ok(Path::new(sweep, extent, self.class)),
-        };
-        let corners = |s: usize| Some(self.triangles.get(s)?.map(I::get));
-        let slot = |s: usize| -> Option<(usize, StandardTriangle<S>)> {
-            let t = triangle(self.vertices, corners(s)?)?;
-            Some((self.order.get(s)?.get(), prepare(&t, *self.bytes.get(s)?)?))
         };
         // Slot `s`'s contact within the reach. Behind the integer box (whose triangles the
         // heights often pass by: it tests no plane) the triangle's frame comes first, and the
@@ -77,26 +95,10 @@ impl<S: Scalar, I: MeshIndex> CompactMesh<'_, S, I> {
             let span = path.clip(lo, hi, limit)?;
             path.near_triangle(v, span, !two_sided).then_some(())
         };
-        let mut sound = true;
-        let hit = earliest(|acc: &mut Earliest<S>| {
-            sound &= bvh::leaves_along(self.nodes, &self.grid, sweep, acc, |acc, slots, _| {
-                for s in slots {
-                    if near(acc, s).is_some()
-                        && let Some((i, hit)) = cast_slot(s, acc.reach())
-                    {
-                        acc.offer(i, hit);
-                    }
-                }
-            });
-        });
-        if sound {
-            return hit;
-        }
-        // Malformed parts (never from `compact`): test every triangle.
-        earliest(|acc| {
-            for s in 0..self.triangles.len() {
-                if let Some((i, t)) = slot(s)
-                    && let Some(hit) = t.cast(sweep)
+        bvh::leaves_along(self.nodes, &self.grid, sweep, acc, |acc, slots, _| {
+            for s in slots {
+                if near(acc, s).is_some()
+                    && let Some((i, hit)) = cast_slot(s, acc.reach())
                 {
                     acc.offer(i, hit);
                 }
@@ -140,6 +142,19 @@ fn with_byte<S: Scalar>(st: StandardTriangle<S>, byte: u8) -> StandardTriangle<S
     let features = Features::from_bits(byte & Features::ALL.bits());
     st.with_features(features)
         .with_two_sided(byte & TWO_SIDED != 0)
+}
+
+impl<S: Scalar, I: MeshIndex> Part<S> for CompactMesh<'_, S, I> {
+    /// One more than the largest input index held.
+    fn index_bound(&self) -> usize {
+        self.order
+            .iter()
+            .fold(0, |m, i| m.max(i.get().saturating_add(1)))
+    }
+
+    fn offer_contacts(&self, sweep: &Sweep<S>, acc: &mut Earliest<S>, scan: bool) -> bool {
+        self.offer(sweep, acc, scan, SOFT_F64)
+    }
 }
 
 impl<S: Scalar, I: MeshIndex> Geometry<S> for CompactMesh<'_, S, I> {

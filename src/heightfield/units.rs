@@ -12,9 +12,9 @@ use crate::adjacency::deactivate;
 use crate::bvh;
 use crate::contact::within_reach;
 use crate::cull::{UnitHeights, unit_bits};
-use crate::merge::earliest;
+use crate::merge::Earliest;
 use crate::triangle::Frame;
-use crate::{Hit, Scalar, SceneHit, Sweep, Triangle};
+use crate::{Hit, Scalar, Sweep, Triangle};
 
 /// The most cells a query's box may span for the integer query.
 pub(super) const MAX_CELLS: i64 = 64;
@@ -100,26 +100,31 @@ impl UnitGrid {
         (first <= last).then_some((first, last))
     }
 
-    /// The earliest contact, the `f64` walk's answer; `None` (take that walk) where the box
-    /// spans more than [`MAX_CELLS`] cells.
-    pub(super) fn cast<S: Scalar>(
+    /// Offers the contacts the `f64` walk would offer; false, offering none (take that walk),
+    /// where the box spans more than [`MAX_CELLS`] cells.
+    pub(super) fn offer<S: Scalar>(
         &self,
         field: &Heightfield<'_, S>,
         sweep: &Sweep<S>,
-    ) -> Option<Option<SceneHit<S>>> {
+        acc: &mut Earliest<S>,
+    ) -> bool {
         if self.clear() {
-            return Some(None);
+            return true;
         }
         let (o, (lo, hi)) = (self.origin, (self.lo, self.hi));
-        let (i0, i1) = self.cells(o[0], (lo[0], hi[0]), field.columns)?;
-        let (k0, k1) = self.cells(o[2], (lo[2], hi[2]), field.rows)?;
+        let (Some((i0, i1)), Some((k0, k1))) = (
+            self.cells(o[0], (lo[0], hi[0]), field.columns),
+            self.cells(o[2], (lo[2], hi[2]), field.rows),
+        ) else {
+            return false;
+        };
         if (i1 - i0 + 1) * (k1 - k0 + 1) > MAX_CELLS {
-            return None;
+            return false;
         }
         let bound = UnitHeights::new(sweep);
         let d = sweep.p1() - sweep.p0();
         let w = field.columns as usize;
-        Some(earliest(|acc| {
+        {
             // Rows, then columns, in the direction of travel: near cells first, so that early
             // contacts lower the reach the later cells are culled by.
             for n in 0..=(k1 - k0) {
@@ -148,7 +153,8 @@ impl UnitGrid {
                     }
                 }
             }
-        }))
+        }
+        true
     }
 
     /// Whether the cell's heights come within the path's box (its x and z spans do).
@@ -195,6 +201,7 @@ fn cast_lazily<S: Scalar>(
 #[cfg(test)]
 mod tests {
     use super::UnitGrid;
+    use crate::merge::earliest;
     use crate::xorshift::Rng;
     use crate::{Heightfield, Scalar, Sweep, Vec3};
     use fixed::types::{I16F16, I32F32};
@@ -264,7 +271,9 @@ mod tests {
                 continue;
             };
             clear += grid.clear() as usize;
-            if let Some(hit) = grid.cast(&field, &sweep) {
+            let mut taken = true;
+            let hit = earliest(|acc| taken &= grid.offer(&field, &sweep, acc));
+            if taken {
                 compared += 1;
                 assert_eq!(
                     format!("{hit:?}"),

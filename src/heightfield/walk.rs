@@ -3,6 +3,7 @@
 
 use super::units::UnitGrid;
 use super::{HOLE, Heightfield};
+use crate::compound::Part;
 use crate::cull::{Path, SOFT_F64, is_less};
 use crate::merge::{Earliest, earliest};
 use crate::{Geometry, Scalar, SceneHit, StandardTriangle, Sweep, Vec3};
@@ -33,15 +34,21 @@ impl<S: Scalar> Heightfield<'_, S> {
     /// order, bit for bit, simultaneous contacts merged as in [`Scene::cast`](crate::Scene::cast).
     /// Its cost grows with the cells the grown path crosses.
     pub fn cast(&self, sweep: &Sweep<S>) -> Option<SceneHit<S>> {
-        self.cells_count()?;
+        earliest(|acc| self.offer(sweep, acc))
+    }
+
+    /// Offers the contacts of the triangles under the path.
+    fn offer(&self, sweep: &Sweep<S>, acc: &mut Earliest<S>) {
+        if self.cells_count().is_none() {
+            return;
+        }
         // Where `f64` is software, a fixed-point sweep's short query runs in integers.
-        if SOFT_F64 && let Some(hit) = UnitGrid::new(self, sweep).and_then(|g| g.cast(self, sweep))
-        {
-            return hit;
+        if SOFT_F64 && UnitGrid::new(self, sweep).is_some_and(|g| g.offer(self, sweep, acc)) {
+            return;
         }
         let path = Path::new(sweep, self.extent(), self.class);
         let o = self.origin.to_array().map(S::to_f64);
-        earliest(|acc| self.walk(sweep, &path, o, acc))
+        self.walk(sweep, &path, o, acc)
     }
 
     /// The largest magnitude of any coordinate of the grid.
@@ -188,6 +195,18 @@ impl<S: Scalar> Heightfield<'_, S> {
                 }
             }
         }
+    }
+}
+
+impl<S: Scalar> Part<S> for Heightfield<'_, S> {
+    /// Two per cell: triangle `2 c` and `2 c + 1` of cell `c = row × columns + column`.
+    fn index_bound(&self) -> usize {
+        self.cells_count().map_or(0, |n| 2 * n)
+    }
+
+    fn offer_contacts(&self, sweep: &Sweep<S>, acc: &mut Earliest<S>, _: bool) -> bool {
+        self.offer(sweep, acc);
+        true
     }
 }
 

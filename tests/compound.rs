@@ -1,0 +1,215 @@
+//! `Compound`: geometries cast against as one. A level of four parts (a heightfield terrain with
+//! holes, a mesh and a compact mesh of boxes standing in it, a `Scene` wall), nested two by two,
+//! answers as one mesh of all their triangles, numbered the same way: the same hits (ties across
+//! parts merged as one geometry merges them), the same box queries, the same slides, bit for
+//! bit. Every property in every scalar.
+
+mod common;
+mod meshes;
+
+use ballcast::{
+    CompactMesh, Compound, Degenerates, Geometry, Heightfield, Part, PartIndex, Scalar, Scene,
+    StandardTriangle, Sweep, Triangle, Vec3, move_and_slide,
+};
+use common::{P, Rng, v};
+use fixed::types::{I16F16, I32F32};
+use meshes::Owned;
+
+const COLUMNS: u32 = 12;
+const ROWS: u32 = 10;
+
+/// The level's inputs: the terrain's heights and holes, the two sets of boxes, the wall.
+struct Level {
+    heights: Vec<i16>,
+    holes: Vec<bool>,
+    boxes: Vec<[P; 3]>,
+    compact: Vec<[P; 3]>,
+    wall: [[P; 3]; 2],
+}
+
+impl Level {
+    fn new(rng: &mut Rng) -> Self {
+        let n = ((COLUMNS + 1) * (ROWS + 1)) as usize;
+        Self {
+            heights: (0..n).map(|_| rng.range(-40.0, 40.0) as i16).collect(),
+            holes: (0..COLUMNS * ROWS)
+                .map(|_| rng.next() < 1.0 / 12.0)
+                .collect(),
+            boxes: meshes::boxes(rng, 5, 4.0),
+            compact: meshes::boxes(rng, 3, 4.0),
+            // A wall across the terrain at x = 2.3, facing -x, from below it to well above.
+            wall: common::quad([2.3, -2.0, -6.0], [0.0, 0.0, 12.0], [0.0, 6.0, 0.0]),
+        }
+    }
+
+    fn terrain<'a, S: Scalar>(&'a self, cells: &'a mut [u8]) -> Heightfield<'a, S> {
+        let o = [-(COLUMNS as f64) / 2.0, -0.5, -(ROWS as f64) / 2.0];
+        let holes = &self.holes;
+        let hole = |i: u32, k: u32| holes[(k * COLUMNS + i) as usize];
+        let (one, unit) = (S::ONE, S::from_f64(1.0 / 64.0));
+        Heightfield::build(v(o), one, unit, COLUMNS, ROWS, &self.heights, hole, cells).unwrap()
+    }
+
+    fn wall<S: Scalar>(&self) -> Scene<S, 2> {
+        let mut scene = Scene::new();
+        for t in self.wall {
+            scene.push(meshes::tri(t)).unwrap();
+        }
+        scene
+    }
+}
+
+/// The reference: one mesh of every part's triangles in the compound's numbering (a hole's
+/// two take a degenerate triangle each, which the build skips, so the numbers line up).
+fn one_mesh<S: Scalar>(level: &Level, terrain: &Heightfield<'_, S>) -> Owned<S> {
+    let mut all: Vec<Triangle<S>> = (0..terrain.len())
+        .map(|t| match level.holes[t / 2] {
+            true => Triangle::new(Vec3::ZERO, Vec3::ZERO, Vec3::ZERO),
+            false => terrain.triangle(t).unwrap(),
+        })
+        .collect();
+    let parts = [&level.boxes[..], &level.compact, &level.wall];
+    all.extend(parts.iter().flat_map(|p| p.iter().map(|&t| meshes::tri(t))));
+    meshes::build(&all, Degenerates::Skip).unwrap()
+}
+
+/// Builds the level's parts and calls `f` with the compound and the one mesh.
+fn with_level<S: Scalar>(seed: u64, f: impl FnOnce(&dyn Geometry<S>, &Owned<S>, &Level)) {
+    let level = Level::new(&mut Rng(seed));
+    let mut cells = vec![0u8; (COLUMNS * ROWS) as usize];
+    let terrain = level.terrain::<S>(&mut cells);
+    let boxes: Vec<Triangle<S>> = level.boxes.iter().map(|&t| meshes::tri(t)).collect();
+    let owned = meshes::build(&boxes, Degenerates::Refuse).unwrap();
+    let (vertices, indices) = meshes::indexed::<S>(&level.compact);
+    let src: Vec<Triangle<S>> = level.compact.iter().map(|&t| meshes::tri(t)).collect();
+    let built = meshes::build(&src, Degenerates::Refuse).unwrap();
+    let n = src.len();
+    let (mut t, mut o, mut b) = (vec![[0u16; 3]; n], vec![0u16; n], vec![0u8; n]);
+    let compact =
+        CompactMesh::compact(&built.mesh(), &vertices, &indices, &mut t, &mut o, &mut b).unwrap();
+    let wall = level.wall::<S>();
+    let near = Compound::new(terrain, owned.mesh()).unwrap();
+    let far = Compound::new(compact, &wall).unwrap();
+    let all = Compound::new(near, far).unwrap();
+    // The numbering: parts follow each other.
+    let cells = (COLUMNS * ROWS) as usize;
+    assert_eq!(near.offset(), 2 * cells);
+    assert_eq!(all.offset(), 2 * cells + boxes.len());
+    assert_eq!(far.offset(), n);
+    assert_eq!(all.index_bound(), all.offset() + n + 2);
+    assert_eq!(all.locate(all.offset() + n), PartIndex::Second(n));
+    assert_eq!(far.locate(n), PartIndex::Second(0));
+    let one = one_mesh(&level, &terrain);
+    // Every part's triangles, active edges included, are the one mesh's.
+    let mut same = 0;
+    all.visit(v([-9.0; 3]), v([9.0; 3]), &mut |i, t| {
+        let want = one.mesh().triangle(i).map(StandardTriangle::to_parts);
+        assert_eq!(Some(t.to_parts()), want, "triangle {i}");
+        same += 1;
+    });
+    assert_eq!(same, one.tris.len());
+    f(&all, &one, &level);
+}
+
+/// Random sweeps (short moves, long paths, paths aimed at vertices, where triangles of
+/// different parts tie) give the one mesh's answer and its linear scan's.
+fn answers_as_one_mesh<S: Scalar>() {
+    for seed in 0..3u64 {
+        with_level::<S>(0xc0_0000 + seed, |all, one, level| {
+            let reference = one.reference();
+            let mut rng = Rng(0xc0_1000 + seed);
+            let points: Vec<P> = (level.boxes.iter().chain(&level.compact))
+                .chain(&level.wall)
+                .flatten()
+                .copied()
+                .collect();
+            let (mut hits, mut parts, mut ties) = (0, [0; 2], 0);
+            for k in 0..3000 {
+                let p0 = [
+                    rng.range(-7.0, 7.0),
+                    rng.range(-2.0, 4.0),
+                    rng.range(-6.0, 6.0),
+                ];
+                let p1 = match k % 3 {
+                    0 => [0, 1, 2].map(|a| p0[a] + rng.range(-0.8, 0.8)),
+                    1 => [
+                        rng.range(-7.0, 7.0),
+                        rng.range(-2.0, 4.0),
+                        rng.range(-6.0, 6.0),
+                    ],
+                    _ => {
+                        let at = points[(rng.next() * points.len() as f64) as usize];
+                        [0, 1, 2].map(|a| p0[a] + 1.5 * (at[a] - p0[a]))
+                    }
+                };
+                let r = S::from_f64(rng.range(0.05, 1.0));
+                let Ok(sweep) = Sweep::new(v::<S>(p0), v(p1), r) else {
+                    continue;
+                };
+                let got = all.cast(&sweep);
+                assert_eq!(got, reference(&sweep), "sweep {k}: {p0:?} -> {p1:?}");
+                assert_eq!(got, one.mesh().cast(&sweep), "sweep {k}: the mesh");
+                if let Some(h) = got {
+                    hits += 1;
+                    parts[(h.index >= 2 * (COLUMNS * ROWS) as usize) as usize] += 1;
+                    ties += (h.planes.iter().flatten().count() > 1) as usize;
+                }
+            }
+            // Not vacuous: both the terrain and what stands on it are hit, and planes tie.
+            assert!(parts[0] > 300 && parts[1] > 300, "{parts:?} of {hits}");
+            assert!(ties > 20, "{ties} ties");
+        });
+    }
+}
+
+/// Slides over the level (falls onto the terrain, runs into the boxes and the wall) end where
+/// they end in the one mesh, bit for bit.
+fn slides_as_one_mesh<S: Scalar>() {
+    with_level::<S>(0xc0_2000, |all, one, _| {
+        let mut rng = Rng(0xc0_3000);
+        let (mut compared, mut stopped) = (0, 0);
+        for k in 0..400 {
+            let p = [
+                rng.range(-5.0, 5.0),
+                rng.range(1.0, 3.0),
+                rng.range(-4.0, 4.0),
+            ];
+            let d = [
+                rng.range(-3.0, 3.0),
+                rng.range(-4.0, 0.0),
+                rng.range(-3.0, 3.0),
+            ];
+            let r = S::from_f64(rng.range(0.2, 0.6));
+            let got = move_and_slide(all, v(p), v(d), r);
+            let want = move_and_slide(&one.mesh(), v(p), v(d), r);
+            assert_eq!(
+                format!("{got:?}"),
+                format!("{want:?}"),
+                "slide {k}: {p:?} by {d:?}"
+            );
+            compared += got.is_ok() as usize;
+            stopped += got.is_ok_and(|s| s.contacts[0].is_some()) as usize;
+        }
+        assert!(
+            compared > 350 && stopped > 200,
+            "{compared} slides, {stopped} touched"
+        );
+    });
+}
+
+macro_rules! per_scalar {
+    ($($m:ident: $t:ty),*) => {$(mod $m {
+        #[allow(unused_imports)]
+        use super::*;
+        #[test]
+        fn answers_as_one_mesh() {
+            super::answers_as_one_mesh::<$t>();
+        }
+        #[test]
+        fn slides_as_one_mesh() {
+            super::slides_as_one_mesh::<$t>();
+        }
+    })*};
+}
+
+per_scalar!(f64_: f64, f32_: f32, i32f32: I32F32, i16f16: I16F16);
