@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # No panic paths: links a release build of .ci/no_panic (wrappers around StandardTriangle::new,
 # Sweep::new, face_collision, cast, and the scene-level casts and box queries (penetration,
-# winding) of a slice, a Mesh, a CompactMesh and a Heightfield, and a frame of slide::Character
+# winding) of a slice, a Mesh, a CompactMesh and a Heightfield, the cast of a Compound of the
+# four, and a frame of slide::Character
 # on a slice (the whole response), for f32, f64, I16F16 and I32F32) for thumbv6m-none-eabi with
 # `panic = "abort"` and a panic handler that calls a function that does not exist. If any panic
 # path (core::panicking::*, panic_bounds_check, panic_const_*, unwrap_failed, ...) survives

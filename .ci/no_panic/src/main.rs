@@ -1,7 +1,6 @@
 //! `#[no_mangle]` wrappers around `StandardTriangle::new`, `Sweep::new`, `face_collision`, `cast`,
 //! the scene-level casts and the box queries (`penetration`, `winding`) of a slice, a `Mesh`, a
-//! `CompactMesh` and a `Heightfield`, for
-//! every scalar, linked for a bare-metal target in release. Without the default `triangle`
+//! `CompactMesh` and a `Heightfield`, the cast of a `Compound` of the four, for every scalar, linked for a bare-metal target in release. Without the default `triangle`
 //! feature the triangle constructor is left out: the face wrappers then take their triangle from
 //! an opaque static, so the face test is checked on its own. The panic handler calls a function
 //! that does not exist, so the link fails if any panic path survives optimisation: every
@@ -14,8 +13,8 @@
 use ballcast::penetration::{Penetration, penetration};
 use ballcast::winding::{Winding, winding};
 use ballcast::{
-    CompactMesh, Error, Geometry, Grid, Heightfield, Hit, Mesh, SceneHit, StandardTriangle, Sweep,
-    Triangle, Vec3,
+    CompactMesh, Compound, Error, Geometry, Grid, Heightfield, Hit, Mesh, SceneHit,
+    StandardTriangle, Sweep, Triangle, Vec3,
     slide::{Character, Slide},
 };
 use core::hint::black_box;
@@ -77,7 +76,7 @@ macro_rules! wrappers {
         }
 
         /// The scene-level queries: a slice's linear scan (the merge of simultaneous contacts),
-        /// a mesh's tree, a compact mesh and a heightfield.
+        /// a mesh's tree, a compact mesh, a heightfield and a compound of the four.
         #[unsafe(no_mangle)]
         #[inline(never)]
         pub fn $geometry(
@@ -86,8 +85,18 @@ macro_rules! wrappers {
             c: &CompactMesh<'_, $t>,
             h: &Heightfield<'_, $t>,
             s: &Sweep<$t>,
-        ) -> [Option<SceneHit<$t>>; 4] {
-            [t.cast(s), m.cast(s), c.cast(s), h.cast(s)]
+        ) -> [Option<SceneHit<$t>>; 5] {
+            // And all four as one geometry, nested.
+            let all = Compound::new(t, m)
+                .and_then(|a| Compound::new(a, Compound::new(c, h)?))
+                .ok();
+            [
+                t.cast(s),
+                m.cast(s),
+                c.cast(s),
+                h.cast(s),
+                all.and_then(|a| a.cast(s)),
+            ]
         }
 
         /// The box queries (penetration and winding) on the same four forms.
@@ -100,7 +109,10 @@ macro_rules! wrappers {
             h: &Heightfield<'_, $t>,
             p: Vec3<$t>,
             r: $t,
-        ) -> [(Result<Option<Penetration<$t>>, Error>, Result<Winding, Error>); 4] {
+        ) -> [(
+            Result<Option<Penetration<$t>>, Error>,
+            Result<Winding, Error>,
+        ); 4] {
             [
                 (penetration(t, p, r), winding(t, p)),
                 (penetration(m, p, r), winding(m, p)),
