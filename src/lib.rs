@@ -75,6 +75,9 @@
 //!   triangles (about 19 bytes per triangle), answering exactly as the prepared mesh.
 //! - [`heightfield`] holds [`Heightfield`], a terrain as a grid of 16-bit heights (about 1.5
 //!   bytes per triangle), answering exactly as the same triangles in a mesh.
+//! - [`compound`] holds [`Compound`], two geometries (a heightfield and the meshes standing on
+//!   it) cast against as one, answering exactly as one mesh of all their triangles, and
+//!   [`Part`], what can be one of them.
 //! - [`slide`] holds [`move_and_slide`], the collision response (Quake's fly-move, constrained
 //!   by every plane touched), [`Slide`], and the [`skin`](slide::skin) and
 //!   [`min_radius`](slide::min_radius) it works with; for a character, [`Slider`]'s ground
