@@ -77,12 +77,13 @@ else
     echo "FAIL: arena on thumbv6m-none-eabi: $(head -1 "$work/arena.txt") (host $(cat "$work/arena-host.txt"))" >&2
     exit 1
 fi
-# The compact forms baked into flash: the arena as a compact mesh, the 64 x 64 terrain heightfield.
+# The compact forms baked into flash: the arena as a compact mesh, the 64 x 64 terrain heightfield,
+# and both as one compound level.
 cargo run --quiet --release --example forms >"$work/forms-host.txt"
 (cd embedded && timeout 300 cargo run --quiet --release --target thumbv6m-none-eabi --bin forms) \
     | tee "$work/forms.txt"
-if [ "$(head -2 "$work/forms.txt")" = "$(cat "$work/forms-host.txt")" ]; then
-    echo "forms: the compact mesh's and the heightfield's hashes on thumbv6m-none-eabi equal the host's"
+if [ "$(head -3 "$work/forms.txt")" = "$(cat "$work/forms-host.txt")" ]; then
+    echo "forms: the compact mesh's, the heightfield's and the compound's hashes on thumbv6m-none-eabi equal the host's"
 else
     echo "FAIL: forms on thumbv6m-none-eabi differ from the host's: $(cat "$work/forms-host.txt")" >&2
     exit 1

@@ -1,13 +1,14 @@
 //! The arena run (`embedded/src/arena.rs`) on the two compact forms of `embedded/src/forms.rs`,
-//! built at run time: the arena as a `CompactMesh` and the 64 × 64 terrain `Heightfield`, in
-//! I16F16. Prints `compact I16F16 hash` and `heightfield I16F16 hash`, the lines the Cortex-M0
+//! built at run time: the arena as a `CompactMesh` and the 64 × 64 terrain `Heightfield`, each
+//! alone and both as one `Compound` level, in I16F16. Prints `compact I16F16 hash`,
+//! `heightfield I16F16 hash` and `compound I16F16 hash`, the lines the Cortex-M0
 //! program `forms` (the same forms baked into flash) must print bit for bit (`.ci/embedded.sh`
 //! compares them). Contacts and escapes go to stderr.
 //!
 //! Run: `cargo run --release --example forms`
 
 use ballcast::bvh::nodes_for;
-use ballcast::{CompactMesh, Degenerates, Heightfield, Mesh, Node, Vec3};
+use ballcast::{CompactMesh, Compound, Degenerates, Heightfield, Mesh, Node, Vec3};
 use fixed::types::I16F16;
 
 #[path = "../embedded/src/arena.rs"]
@@ -55,14 +56,18 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     )?;
     let h = arena::simulate::<I16F16, _>(&field, throws, steps);
     println!("heightfield I16F16 {:016x}", h.hash);
+    let b = arena::simulate::<I16F16, _>(&Compound::new(&compact, &field)?, throws, steps);
+    println!("compound I16F16 {:016x}", b.hash);
     eprintln!(
-        "compact: {} triangles, {} contacts, {} escapes; heightfield: {} triangles, {} contacts, {} escapes",
+        "compact: {} triangles, {} contacts, {} escapes; heightfield: {} triangles, {} contacts, {} escapes; compound: {} contacts, {} escapes",
         compact.len(),
         c.contacts,
         c.escapes,
         field.len(),
         h.contacts,
-        h.escapes
+        h.escapes,
+        b.contacts,
+        b.escapes
     );
     // The same run on the prepared mesh, for comparison: the compact form answers as it does.
     let m = arena::simulate::<I16F16, _>(&mesh, throws, steps);

@@ -1,14 +1,16 @@
 //! The arena run (`../arena.rs`) on the two compact forms baked into flash by `build.rs`: the
 //! 2 168-triangle arena as a `CompactMesh` and a 64 × 64 terrain `Heightfield` (8 192 triangles;
-//! `../forms.rs`). Prints `compact I16F16 hash` and `heightfield I16F16 hash`, the lines the
-//! host's `cargo run --release --example forms` (the forms built at run time) prints, then each
-//! form's bytes in flash and the RAM the runs never touched (the stack is painted first).
+//! `../forms.rs`), each alone and both as one `Compound` level. Prints `compact I16F16 hash`,
+//! `heightfield I16F16 hash` and `compound I16F16 hash`, the lines the host's
+//! `cargo run --release --example forms` (the forms built at run time) prints, then each form's
+//! bytes in flash and the RAM the runs never touched (the stack is painted first).
 //!
 //! Run: `cargo m0 forms` in `embedded/`.
 #![no_std]
 #![no_main]
 
 use cortex_m_rt::entry;
+use ballcast::Compound;
 use cortex_m_semihosting::{debug, hprintln};
 use fixed::types::I16F16;
 use panic_semihosting as _;
@@ -34,6 +36,13 @@ fn main() -> ! {
     hprintln!("compact I16F16 {:016x}", c.hash);
     let h = arena::simulate::<I16F16, _>(&terrain::FIELD, throws, steps);
     hprintln!("heightfield I16F16 {:016x}", h.hash);
+    // Both as one level: the terrain inside the arena's walls.
+    let both = Compound::new(&compact::MESH, &terrain::FIELD);
+    let b = both.map(|level| arena::simulate::<I16F16, _>(&level, throws, steps));
+    match &b {
+        Ok(b) => hprintln!("compound I16F16 {:016x}", b.hash),
+        Err(e) => hprintln!("compound I16F16 refused: {}", e),
+    }
     use core::mem::size_of_val as size;
     let compact_bytes = size(&compact::NODES)
         + size(&compact::VERTICES)
