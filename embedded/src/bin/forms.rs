@@ -9,8 +9,8 @@
 #![no_std]
 #![no_main]
 
-use cortex_m_rt::entry;
 use ballcast::Compound;
+use cortex_m_rt::entry;
 use cortex_m_semihosting::{debug, hprintln};
 use fixed::types::I16F16;
 use panic_semihosting as _;

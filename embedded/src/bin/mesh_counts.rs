@@ -107,7 +107,10 @@ fn terrain_run() -> u64 {
     let (p, v) = arena::throw(1);
     let mut ball = lockstep::Ball { p: v3(p), v: v3(v) };
     let visit: Visit = |a, b, f| terrain::FIELD.visit(a, b, f);
-    let (air, ground) = (Probe(query_terrain_air, visit), Probe(query_terrain_ground, visit));
+    let (air, ground) = (
+        Probe(query_terrain_air, visit),
+        Probe(query_terrain_ground, visit),
+    );
     let mut hash = lockstep::Fnv::new();
     for n in 0..300 {
         let g = if n < 100 { &air } else { &ground };
