@@ -197,6 +197,85 @@ fn slides_as_one_mesh<S: Scalar>() {
     });
 }
 
+/// A geometry of the user's own: a `Scene` behind a type the crate does not know, a part by
+/// `Part`'s default (its `cast` offered as one contact).
+struct Own<S: Scalar>(Scene<S, 2>);
+
+impl<S: Scalar> Geometry<S> for Own<S> {
+    fn cast(&self, sweep: &Sweep<S>) -> Option<ballcast::SceneHit<S>> {
+        self.0.cast(sweep)
+    }
+
+    fn visit(&self, min: Vec3<S>, max: Vec3<S>, f: &mut dyn FnMut(usize, &StandardTriangle<S>)) {
+        self.0.visit(min, max, f)
+    }
+}
+
+impl<S: Scalar> Part<S> for Own<S> {
+    fn index_bound(&self) -> usize {
+        self.0.len()
+    }
+}
+
+/// An empty part changes nothing, and numbers nothing; a user's geometry is a part: alone
+/// beside an empty one, it answers as itself; beside the terrain, its hits come numbered after
+/// the terrain's and the terrain's hits are the terrain's.
+fn empty_and_own_parts<S: Scalar>() {
+    let level = Level::new(&mut Rng(0xc0_4000));
+    let mut cells = vec![0u8; (COLUMNS * ROWS) as usize];
+    let terrain = level.terrain::<S>(&mut cells);
+    let empty: Scene<S, 1> = Scene::new();
+    let own = Own(level.wall::<S>());
+    let (before, after) = (
+        Compound::new(&empty, terrain),
+        Compound::new(terrain, &empty),
+    );
+    let (before, after) = (before.unwrap(), after.unwrap());
+    let alone = Compound::new(&empty, &own).unwrap();
+    let beside = Compound::new(terrain, &own).unwrap();
+    assert_eq!((before.offset(), after.offset()), (0, terrain.len()));
+    assert_eq!(beside.index_bound(), terrain.len() + 2);
+    let mut rng = Rng(0xc0_5000);
+    let (mut walls, mut grounds) = (0, 0);
+    for k in 0..2000 {
+        let p0 = [
+            rng.range(-6.0, 6.0),
+            rng.range(-1.0, 3.0),
+            rng.range(-5.0, 5.0),
+        ];
+        let p1 = [
+            rng.range(-6.0, 6.0),
+            rng.range(-2.0, 3.0),
+            rng.range(-5.0, 5.0),
+        ];
+        let Ok(sweep) = Sweep::new(v::<S>(p0), v(p1), S::from_f64(rng.range(0.05, 1.0))) else {
+            continue;
+        };
+        let ground = terrain.cast(&sweep);
+        assert_eq!(before.cast(&sweep), ground, "sweep {k}");
+        assert_eq!(after.cast(&sweep), ground, "sweep {k}");
+        let wall = own.cast(&sweep);
+        assert_eq!(alone.cast(&sweep), wall, "sweep {k}");
+        match beside.cast(&sweep) {
+            Some(h) if h.index >= terrain.len() => {
+                let w = wall.expect("a hit numbered after the terrain's is the wall's");
+                assert_eq!(h.index, terrain.len() + w.index, "sweep {k}");
+                assert_eq!(h.alpha, w.alpha, "sweep {k}");
+                walls += 1;
+            }
+            Some(h) => {
+                assert_eq!(Some(h.alpha), ground.map(|g| g.alpha), "sweep {k}");
+                grounds += 1;
+            }
+            None => assert!(ground.is_none() && wall.is_none(), "sweep {k}"),
+        }
+    }
+    assert!(
+        walls > 100 && grounds > 100,
+        "{walls} walls, {grounds} grounds"
+    );
+}
+
 macro_rules! per_scalar {
     ($($m:ident: $t:ty),*) => {$(mod $m {
         #[allow(unused_imports)]
@@ -208,6 +287,10 @@ macro_rules! per_scalar {
         #[test]
         fn slides_as_one_mesh() {
             super::slides_as_one_mesh::<$t>();
+        }
+        #[test]
+        fn empty_and_own_parts() {
+            super::empty_and_own_parts::<$t>();
         }
     })*};
 }
