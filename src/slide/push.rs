@@ -46,6 +46,18 @@ pub(super) fn push_out<S: Scalar, G: Geometry<S> + ?Sized>(
     }
 }
 
+/// The shortest push meeting the deepest overlap's demand `first` and moving a skin off the
+/// obstacle (unit normal `obstacle`, facing against the push along `first`'s normal) that
+/// stopped that push: over a ridge of the floor that a wall pushes the ball against. `None`
+/// where the two normals are within about 14° of opposed (a slot no push gets out of).
+pub(super) fn around<S: Scalar>(
+    first: Demand<S>,
+    obstacle: Vec3<S>,
+    (r, skin): (S, S),
+) -> Option<Vec3<S>> {
+    pair(first, (obstacle, skin), r + skin).map(|(x, _)| x)
+}
+
 /// The shortest push meeting two demands with the first failed by the push along its normal
 /// alone: along the second's normal alone if that meets the first, else meeting both exactly.
 fn pair<S: Scalar>((n1, to1): Demand<S>, (n2, to2): Demand<S>, reach: S) -> Option<(Vec3<S>, S)> {

@@ -1,7 +1,7 @@
 //! The first step of a call: ending a starting overlap.
 
 use super::MAX_SLIDES;
-use super::push::push_out;
+use super::push::{around, push_out};
 use super::rules::stand_off;
 use crate::penetration::deepest;
 use crate::{Geometry, Scalar, SceneHit, Sweep, Vec3};
@@ -38,19 +38,31 @@ pub(super) fn resolve<S: Scalar, G: Geometry<S> + ?Sized>(
             (p.normal, p.depth + skin),
             rounding,
         );
-        // The joint push; if something stops it, the deepest's own, which may get through.
+        // The joint push; if something stops it, the deepest's own, which may get through;
+        // if that is stopped too, the push that also leaves what stopped it by a skin.
         let mut stops = [None, None];
-        for (k, push) in [joint, first].into_iter().enumerate() {
-            if k == 1 && push == joint {
-                break;
-            }
+        let mut obstacle = None;
+        for k in 0..3 {
+            let push = match (k, obstacle) {
+                (0, _) => joint,
+                (1, _) if first != joint => first,
+                (_, Some(m)) => match around((p.normal, p.depth + skin), m, (radius, skin)) {
+                    Some(x) => x,
+                    None => break,
+                },
+                _ => break,
+            };
             let Ok(sweep) = Sweep::new(centre, centre + push, radius) else {
                 break;
             };
             match scene.cast(&sweep) {
                 // Into something it does not yet overlap, or deeper into one it does: stop short.
                 Some(hit) if S::dot_sign(push, hit.normal).is_lt() => {
-                    stops[k] = Some(settle(scene, &hit, centre, push, (radius, skin), rounding));
+                    let Some(stop) = stops.get_mut(k) else {
+                        break;
+                    };
+                    *stop = Some(settle(scene, &hit, centre, push, (radius, skin), rounding));
+                    obstacle = Some(hit.normal);
                 }
                 // Clear, or met at once alongside an overlap the push does not deepen (another
                 // face of a corner): the next round sees what is left.
@@ -60,7 +72,7 @@ pub(super) fn resolve<S: Scalar, G: Geometry<S> + ?Sized>(
                 }
             }
         }
-        // Both stopped: the one that got farther, the joint push on a tie. (Depths are no
+        // All stopped: of the first two, the one that got farther, the joint push on a tie. (Depths are no
         // guide: next to an inactive edge they are measured to the face's plane.)
         let moved = |c: Vec3<S>| S::direction(c - centre).map_or(S::ZERO, |(len, _)| len);
         centre = match stops {
