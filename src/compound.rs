@@ -4,16 +4,22 @@
 //! triangles in RAM beside it.
 //!
 //! Both parts offer their contacts to one accumulator, so the answer is the one a single
-//! geometry holding all their triangles would give: the earliest contact, and the contacts
-//! tied with it merged by the rule of [`Scene::cast`](crate::Scene::cast), whichever part they
-//! come from. A ball wedged between the terrain and a wall gets both planes in
+//! geometry holding the same prepared triangles would give: the earliest contact, and the
+//! contacts tied with it merged by the rule of [`Scene::cast`](crate::Scene::cast), whichever
+//! part they come from. A ball wedged between the terrain and a wall gets both planes in
 //! [`SceneHit::planes`](crate::SceneHit::planes), and `move_and_slide` slides along the crease
-//! as it would in one mesh. Each part prunes by the earliest contact found so far, in the
-//! other part too. Compounds nest: `Compound::new(Compound::new(a, b)?, c)?`.
+//! as it would in one mesh. The second part is culled by the earliest contact the first found.
+//! Compounds nest: `Compound::new(Compound::new(a, b)?, c)?`.
+//!
+//! Active edges are each part's own: an edge that two parts share (a building's floor that
+//! meets the terrain's triangles edge to edge) stays active in both, where one mesh of all the
+//! triangles would switch a flat or valley seam off, and a ball rolling over it can catch on it
+//! as on a ridge. Keep triangles that share edges in one part; parts that touch without sharing
+//! edges (a wall standing on the ground, a crate on it) lose nothing.
 //!
 //! Indices: the first part's hits and visits keep their indices; the second's follow them,
-//! from [`Compound::offset`] (the first's [`Part::index_bound`]). Engines name the same idea
-//! a sub-shape ID (Jolt's `SubShapeID` in its compound shapes); here it is one number.
+//! from [`Compound::offset`] (the first's [`CompoundPart::index_bound`]). Engines name the
+//! same idea a sub-shape ID (Jolt's `SubShapeID` in its compound shapes); here it is one number.
 
 use crate::merge::{Earliest, earliest_of};
 use crate::{Error, Geometry, Hit, Scalar, SceneHit, StandardTriangle, Sweep, Vec3};
@@ -22,9 +28,11 @@ use crate::{Error, Geometry, Hit, Scalar, SceneHit, StandardTriangle, Sweep, Vec
 /// to one, and a compound. Your own [`Geometry`] can be one too: implement
 /// [`index_bound`](Self::index_bound); its [`cast`](Geometry::cast) is then taken as one contact
 /// (its merged normal counts once in a tie with the other part's).
-pub trait Part<S: Scalar>: Geometry<S> {
+pub trait CompoundPart<S: Scalar>: Geometry<S> {
     /// One more than the largest index the part's hits and visits report (zero when empty):
-    /// a compound numbers its second part's triangles from there.
+    /// a compound numbers its second part's triangles from there. For a mesh, one more than
+    /// its largest *kept* input index (a degenerate triangle skipped at the end of the input
+    /// takes no number); for a heightfield, two per cell, holes included.
     fn index_bound(&self) -> usize;
 
     /// Offers the part's contacts with the sweep to `acc` (by its quick path; with `scan`,
@@ -92,8 +100,8 @@ impl<A, B> Compound<A, B> {
     /// target, parts of more than 2^32 triangles in all).
     pub fn new<S: Scalar>(first: A, second: B) -> Result<Self, Error>
     where
-        A: Part<S>,
-        B: Part<S>,
+        A: CompoundPart<S>,
+        B: CompoundPart<S>,
     {
         let offset = first.index_bound();
         let bound = offset.checked_add(second.index_bound());
@@ -123,7 +131,14 @@ impl<A, B> Compound<A, B> {
         self.offset
     }
 
-    /// The part an index of a hit or a visit names, and its index there.
+    /// One more than the largest index the compound reports: its second part's bound after
+    /// the offset.
+    pub const fn index_bound(&self) -> usize {
+        self.bound
+    }
+
+    /// The part an index of a hit or a visit names, and its index there (in a nested compound,
+    /// locate it again in that part).
     pub const fn locate(&self, index: usize) -> PartIndex {
         if index < self.offset {
             PartIndex::First(index)
@@ -136,14 +151,14 @@ impl<A, B> Compound<A, B> {
     /// across both as one geometry would merge them.
     pub fn cast<S: Scalar>(&self, sweep: &Sweep<S>) -> Option<SceneHit<S>>
     where
-        A: Part<S>,
-        B: Part<S>,
+        A: CompoundPart<S>,
+        B: CompoundPart<S>,
     {
         earliest_of(|acc, scan| self.offer_contacts(sweep, acc, scan))
     }
 }
 
-impl<S: Scalar, A: Part<S>, B: Part<S>> Geometry<S> for Compound<A, B> {
+impl<S: Scalar, A: CompoundPart<S>, B: CompoundPart<S>> Geometry<S> for Compound<A, B> {
     fn cast(&self, sweep: &Sweep<S>) -> Option<SceneHit<S>> {
         Compound::cast(self, sweep)
     }
@@ -156,9 +171,9 @@ impl<S: Scalar, A: Part<S>, B: Part<S>> Geometry<S> for Compound<A, B> {
     }
 }
 
-impl<S: Scalar, A: Part<S>, B: Part<S>> Part<S> for Compound<A, B> {
+impl<S: Scalar, A: CompoundPart<S>, B: CompoundPart<S>> CompoundPart<S> for Compound<A, B> {
     fn index_bound(&self) -> usize {
-        self.bound
+        Compound::index_bound(self)
     }
 
     fn offer_contacts(&self, sweep: &Sweep<S>, acc: &mut Earliest<S>, scan: bool) -> bool {
@@ -172,7 +187,7 @@ impl<S: Scalar, A: Part<S>, B: Part<S>> Part<S> for Compound<A, B> {
     }
 }
 
-impl<S: Scalar, T: Part<S> + ?Sized> Part<S> for &T {
+impl<S: Scalar, T: CompoundPart<S> + ?Sized> CompoundPart<S> for &T {
     fn index_bound(&self) -> usize {
         (**self).index_bound()
     }

@@ -76,8 +76,8 @@
 //! - [`heightfield`] holds [`Heightfield`], a terrain as a grid of 16-bit heights (about 1.5
 //!   bytes per triangle), answering exactly as the same triangles in a mesh.
 //! - [`compound`] holds [`Compound`], two geometries (a heightfield and the meshes standing on
-//!   it) cast against as one, answering exactly as one mesh of all their triangles, and
-//!   [`Part`], what can be one of them.
+//!   it) cast against as one, answering exactly as one mesh of the same prepared triangles
+//!   (each part keeps its own active edges), and [`CompoundPart`], what can be one of them.
 //! - [`slide`] holds [`move_and_slide`], the collision response (Quake's fly-move, constrained
 //!   by every plane touched), [`Slide`], and the [`skin`](slide::skin) and
 //!   [`min_radius`](slide::min_radius) it works with; for a character, [`Slider`]'s ground
@@ -149,7 +149,7 @@ mod xorshift;
 
 pub use bvh::{Grid, Node};
 pub use compact::{CompactError, CompactMesh, MeshIndex};
-pub use compound::{Compound, Part, PartIndex};
+pub use compound::{Compound, CompoundPart, PartIndex};
 pub use contact::Features;
 pub use error::{Error, Input};
 pub use face::standard_face;

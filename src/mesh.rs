@@ -4,7 +4,7 @@
 mod build;
 
 use crate::bvh::{self, Grid, Node};
-use crate::compound::Part;
+use crate::compound::CompoundPart;
 use crate::merge::{Earliest, earliest_of};
 use crate::{Error, Features, Geometry, Parts, Scalar, SceneHit, StandardTriangle, Sweep};
 use crate::{Triangle, Vec3};
@@ -300,14 +300,16 @@ impl<'a, S: Scalar> Mesh<'a, S> {
     }
 }
 
-impl<S: Scalar> Part<S> for Mesh<'_, S> {
+impl<S: Scalar> CompoundPart<S> for Mesh<'_, S> {
     fn offer_contacts(&self, sweep: &Sweep<S>, acc: &mut Earliest<S>, scan: bool) -> bool {
         self.offer(sweep, acc, scan)
     }
 
     /// One more than the largest input index kept (the build may have skipped the last).
     fn index_bound(&self) -> usize {
-        self.order.iter().fold(0, |m, &i| m.max(i as usize + 1))
+        self.order
+            .iter()
+            .fold(0, |m, &i| m.max((i as usize).saturating_add(1)))
     }
 }
 

@@ -3,7 +3,7 @@
 use crate::Triangle;
 use crate::Vec3;
 use crate::bvh::{Grid, Node, nodes_for};
-use crate::compound::Part;
+use crate::compound::CompoundPart;
 use crate::merge::Earliest;
 use crate::{Degenerates, Geometry, Mesh, MeshError, Scalar, SceneHit, StandardTriangle, Sweep};
 use alloc::vec;
@@ -96,7 +96,7 @@ impl<S: Scalar> Geometry<S> for MeshBuf<S> {
     }
 }
 
-impl<S: Scalar> Part<S> for MeshBuf<S> {
+impl<S: Scalar> CompoundPart<S> for MeshBuf<S> {
     fn index_bound(&self) -> usize {
         self.mesh().index_bound()
     }

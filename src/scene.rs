@@ -2,7 +2,7 @@
 //! edges computed from adjacency, and its earliest-contact query.
 
 use crate::adjacency::{deactivate, hides};
-use crate::compound::Part;
+use crate::compound::CompoundPart;
 use crate::cover::{covered, interval};
 use crate::merge::{Earliest, PLANES, earliest};
 use crate::scalar::{largest, tie};
@@ -323,7 +323,7 @@ impl<S: Scalar> Geometry<S> for [StandardTriangle<S>] {
     }
 }
 
-impl<S: Scalar, const N: usize> Part<S> for Scene<S, N> {
+impl<S: Scalar, const N: usize> CompoundPart<S> for Scene<S, N> {
     fn index_bound(&self) -> usize {
         self.len()
     }
@@ -334,7 +334,7 @@ impl<S: Scalar, const N: usize> Part<S> for Scene<S, N> {
     }
 }
 
-impl<S: Scalar> Part<S> for [StandardTriangle<S>] {
+impl<S: Scalar> CompoundPart<S> for [StandardTriangle<S>] {
     fn index_bound(&self) -> usize {
         self.len()
     }

@@ -8,8 +8,8 @@ mod common;
 mod meshes;
 
 use ballcast::{
-    CompactMesh, Compound, Degenerates, Geometry, Heightfield, Part, PartIndex, Scalar, Scene,
-    StandardTriangle, Sweep, Triangle, Vec3, move_and_slide,
+    CompactMesh, Compound, CompoundPart, Degenerates, Geometry, Heightfield, Mesh, PartIndex,
+    Scalar, Scene, StandardTriangle, Sweep, Triangle, Vec3, move_and_slide,
 };
 use common::{P, Rng, v};
 use fixed::types::{I16F16, I32F32};
@@ -198,7 +198,7 @@ fn slides_as_one_mesh<S: Scalar>() {
 }
 
 /// A geometry of the user's own: a `Scene` behind a type the crate does not know, a part by
-/// `Part`'s default (its `cast` offered as one contact).
+/// `CompoundPart`'s default (its `cast` offered as one contact).
 struct Own<S: Scalar>(Scene<S, 2>);
 
 impl<S: Scalar> Geometry<S> for Own<S> {
@@ -211,7 +211,7 @@ impl<S: Scalar> Geometry<S> for Own<S> {
     }
 }
 
-impl<S: Scalar> Part<S> for Own<S> {
+impl<S: Scalar> CompoundPart<S> for Own<S> {
     fn index_bound(&self) -> usize {
         self.0.len()
     }
@@ -276,6 +276,97 @@ fn empty_and_own_parts<S: Scalar>() {
     );
 }
 
+/// A mesh of the level's boxes whose tree is broken (every child that names a node names one
+/// that is not there): it answers by testing every triangle, and so does a compound holding
+/// it, its other part included.
+fn a_malformed_part_is_scanned<S: Scalar>() {
+    with_level::<S>(0xc0_6000, |_, _, level| {
+        let mut cells = vec![0u8; (COLUMNS * ROWS) as usize];
+        let terrain = level.terrain::<S>(&mut cells);
+        let boxes: Vec<Triangle<S>> = level.boxes.iter().map(|&t| meshes::tri(t)).collect();
+        let good = meshes::build(&boxes, Degenerates::Refuse).unwrap();
+        let mut nodes = good.nodes.clone();
+        let mut broken = 0;
+        for child in nodes.iter_mut().flat_map(|n| n.children.iter_mut()) {
+            if *child & (1 << 31) == 0 {
+                *child = u32::MAX >> 1;
+                broken += 1;
+            }
+        }
+        assert!(broken > 0, "no inner node to break");
+        let bad = Mesh::from_parts(&nodes, &good.tris, &good.order, good.grid);
+        let (want, got) = (
+            Compound::new(terrain, good.mesh()).unwrap(),
+            Compound::new(terrain, bad).unwrap(),
+        );
+        let mut rng = Rng(0xc0_7000);
+        let mut boxes_hit = 0;
+        for k in 0..1000 {
+            let p0 = [
+                rng.range(-6.0, 6.0),
+                rng.range(-1.0, 3.0),
+                rng.range(-5.0, 5.0),
+            ];
+            let p1 = [
+                rng.range(-6.0, 6.0),
+                rng.range(-2.0, 3.0),
+                rng.range(-5.0, 5.0),
+            ];
+            let r = S::from_f64(rng.range(0.05, 1.0));
+            let Ok(sweep) = Sweep::new(v::<S>(p0), v(p1), r) else {
+                continue;
+            };
+            let hit = want.cast(&sweep);
+            assert_eq!(got.cast(&sweep), hit, "sweep {k}");
+            boxes_hit += hit.is_some_and(|h| h.index >= want.offset()) as usize;
+        }
+        assert!(boxes_hit > 50, "{boxes_hit} hits on the boxes");
+    });
+}
+
+/// More contacts tie than the accumulator keeps (eight), and the one it had to drop for room
+/// (a tilted wall, index 8) is in the final tie once a later, earlier contact (index 9) has
+/// narrowed the window: the second visit with the window fixed finds it, across the parts as in
+/// one slice. `I16F16`, whose alpha steps the walls are placed by.
+#[test]
+fn ties_beyond_the_buffer_across_parts() {
+    type S = I16F16;
+    let st = |t: [P; 3]| StandardTriangle::new(&meshes::tri::<S>(t)).unwrap();
+    let step = 1.0 / 65536.0;
+    // The plane x = c, facing -x; and one tilted 37° about z, its normal (-0.8, -0.6, 0).
+    let wall = |c: f64| st([[c, -1.0, -1.0], [c, -1.0, 1.0], [c, 1.0, 0.0]]);
+    let tilted = |c: f64| {
+        st([
+            [c - 0.6, 0.8, -1.0],
+            [c + 0.6, -0.8, 0.0],
+            [c - 0.6, 0.8, 1.0],
+        ])
+    };
+    let sweep = Sweep::new(v::<S>([0.0; 3]), v([1.0, 0.0, 0.0]), S::from_f64(0.25)).unwrap();
+    // Alpha in steps past 0.25, where the first wall (x = 0.5 + 4 steps) is met 4 steps past.
+    let steps = |t: &StandardTriangle<S>| {
+        let h = t.cast(&sweep)?;
+        Some(((h.alpha.to_f64() - 0.25) / step).round() as i64)
+    };
+    let placed = (-40..40).find_map(|k| {
+        let t = tilted(0.5625 + k as f64 * step);
+        steps(&t).filter(|a| (3..=6).contains(a)).map(|_| t)
+    });
+    let mut tris = vec![wall(0.5 + 4.0 * step)];
+    tris.extend((0..7).map(|_| wall(0.5 + 7.0 * step)));
+    tris.push(placed.expect("a place for the tilted wall"));
+    tris.push(wall(0.5 + 2.0 * step));
+    let alphas: Vec<_> = tris.iter().map(steps).collect();
+    assert_eq!(alphas[..8].iter().flatten().count(), 8, "{alphas:?}");
+    let one = Geometry::cast(tris.as_slice(), &sweep).unwrap();
+    // Walls 0 and 9 and the tilted 8 tie: two planes, the tilted one among them.
+    assert_eq!(one.planes.iter().flatten().count(), 2, "{one:?}");
+    for split in [1, 5, 8, 9] {
+        let parts = Compound::new(&tris[..split], &tris[split..]).unwrap();
+        assert_eq!(parts.cast(&sweep), Some(one), "split at {split}");
+    }
+}
+
 macro_rules! per_scalar {
     ($($m:ident: $t:ty),*) => {$(mod $m {
         #[allow(unused_imports)]
@@ -291,6 +382,10 @@ macro_rules! per_scalar {
         #[test]
         fn empty_and_own_parts() {
             super::empty_and_own_parts::<$t>();
+        }
+        #[test]
+        fn a_malformed_part_is_scanned() {
+            super::a_malformed_part_is_scanned::<$t>();
         }
     })*};
 }

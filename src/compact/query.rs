@@ -4,7 +4,7 @@
 
 use super::{CompactMesh, MeshIndex, TWO_SIDED};
 use crate::bvh::{self, Grid};
-use crate::compound::Part;
+use crate::compound::CompoundPart;
 use crate::contact::within_reach;
 use crate::cull::{Path, SOFT_F64, UnitBox, UnitHeights};
 use crate::merge::{Earliest, earliest_of};
@@ -144,7 +144,7 @@ fn with_byte<S: Scalar>(st: StandardTriangle<S>, byte: u8) -> StandardTriangle<S
         .with_two_sided(byte & TWO_SIDED != 0)
 }
 
-impl<S: Scalar, I: MeshIndex> Part<S> for CompactMesh<'_, S, I> {
+impl<S: Scalar, I: MeshIndex> CompoundPart<S> for CompactMesh<'_, S, I> {
     /// One more than the largest input index held.
     fn index_bound(&self) -> usize {
         self.order

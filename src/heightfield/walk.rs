@@ -3,7 +3,7 @@
 
 use super::units::UnitGrid;
 use super::{HOLE, Heightfield};
-use crate::compound::Part;
+use crate::compound::CompoundPart;
 use crate::cull::{Path, SOFT_F64, is_less};
 use crate::merge::{Earliest, earliest};
 use crate::{Geometry, Scalar, SceneHit, StandardTriangle, Sweep, Vec3};
@@ -198,7 +198,7 @@ impl<S: Scalar> Heightfield<'_, S> {
     }
 }
 
-impl<S: Scalar> Part<S> for Heightfield<'_, S> {
+impl<S: Scalar> CompoundPart<S> for Heightfield<'_, S> {
     /// Two per cell: triangle `2 c` and `2 c + 1` of cell `c = row × columns + column`.
     fn index_bound(&self) -> usize {
         self.cells_count().map_or(0, |n| 2 * n)
