@@ -138,6 +138,8 @@ pub enum Input {
     Velocity,
     /// The up direction of a floor rule.
     Up,
+    /// The normal of the floor a walk keeps to.
+    Floor,
     /// The cosine of the steepest slope taken for a floor.
     MaxSlope,
     /// The gap a ball keeps from what it touches.
@@ -180,6 +182,7 @@ impl Input {
             Input::Target => ("the target (position + displacement)", true),
             Input::Velocity => ("the velocity", true),
             Input::Up => ("the up direction", true),
+            Input::Floor => ("the floor's normal", true),
             Input::MaxSlope => ("the cosine of the steepest slope", false),
             Input::Skin => ("the skin", false),
             Input::Step => ("the step height", false),

@@ -130,6 +130,11 @@ fn each_argument_is_named<S: Scalar>() {
             Input::Step,
         ),
         (
+            ball.walk(&scene, z, z, Some(out), (Vec3::Y, half), one)
+                .map(drop),
+            Input::Floor,
+        ),
+        (
             ball.snap_to_floor(&scene, out, z, Vec3::Y, half, one)
                 .map(drop),
             Input::Position,
@@ -165,6 +170,11 @@ fn each_argument_is_named<S: Scalar>() {
     let e = ball.with_max_slope(z, half).unwrap_err();
     assert_eq!(e, Error::ZeroVector { input: Input::Up });
     assert_eq!(e.to_string(), "the up direction is the zero vector");
+    let e = ball.walk(&scene, z, z, Some(z), (Vec3::Y, half), one);
+    assert_eq!(
+        e.unwrap_err().to_string(),
+        "the floor's normal is the zero vector"
+    );
     let e = Sweep::new(z, out, one).unwrap_err();
     let l = S::LIMIT.to_f64();
     let said = format!(

@@ -244,7 +244,8 @@ impl<S: Scalar> Character<S> {
                 let pressed = ball.slide(level, me.position, press)?;
                 me.velocity = wish.reject_from_normalized(n);
                 let walk = me.velocity * dt;
-                let out = ball.step_slide(level, pressed.position, walk, up, min_cos, me.step)?;
+                let on = (up, min_cos);
+                let out = ball.walk(level, pressed.position, walk, Some(n), on, me.step)?;
                 let floor = out.floor_normal(up, min_cos)?;
                 me.floor = floor.or(pressed.floor_normal(up, min_cos)?);
                 out

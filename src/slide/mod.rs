@@ -32,7 +32,7 @@ use crate::{Error, Geometry, Input, Scalar, SceneHit, Sweep, Vec3, check};
 pub use character::Character;
 use heapless::Vec;
 use resolve::{resolve, settle};
-use rules::{FloorStop, Planes, add_planes, constrain, holds, magnitude};
+use rules::{FloorStop, Planes, Walk, add_planes, constrain, holds, keep_to_floor, magnitude};
 pub use slider::Slider;
 
 /// At most this many sweeps per call: each contact costs one, and a ball pressed into a corner
@@ -296,12 +296,17 @@ pub fn move_and_slide<S: Scalar, G: Geometry<S> + ?Sized>(
 }
 
 /// [`move_and_slide`] with `ball`, ending at the first contact `stop` (a ground probe's) stops at.
+/// A `walk` along the floor the ball stands on keeps to it: the floor is the first plane that
+/// constrains the rest of the motion once something stops it (as Quake III's `PM_SlideMove`
+/// seeds its planes with the ground's), and once that is a wall (too steep to stand on or step
+/// over), the rest stays in the floor's plane ([`keep_to_floor`](rules::keep_to_floor)).
 fn run<S: Scalar, G: Geometry<S> + ?Sized>(
     ball: &Slider<S>,
     scene: &G,
     position: Vec3<S>,
     displacement: Vec3<S>,
     stop: Option<FloorStop<S>>,
+    walk: Option<Walk<S>>,
 ) -> Result<Slide<S>, Error> {
     let radius = ball.radius;
     // Inside these ranges `position + displacement` stays within 2 * LIMIT: no overflow.
@@ -342,7 +347,7 @@ fn run<S: Scalar, G: Geometry<S> + ?Sized>(
         contacts: [None; MAX_SLIDES],
     };
     let (mut rest, mut elapsed) = (displacement, S::ZERO);
-    let mut planes: Planes<S> = Vec::new();
+    let mut planes: Planes<S> = walk.map(|w| w.floor).into_iter().collect();
     for slot in out.contacts.iter_mut() {
         if rest == zero {
             break;
@@ -368,7 +373,9 @@ fn run<S: Scalar, G: Geometry<S> + ?Sized>(
         let left = rest.scale(S::ONE - alpha);
         rest = if stop.is_some_and(|s| s.stops_at(&hit)) {
             zero
-        } else if add_planes(&mut planes, &hit, ball.max_slope) {
+        } else if add_planes(&mut planes, &hit, ball.max_slope)
+            && keep_to_floor(&mut planes, walk, &hit, radius)
+        {
             constrain(left, &planes, displacement)
         } else {
             zero

@@ -133,6 +133,51 @@ pub(super) fn add_planes<S: Scalar>(
         .all(|n| planes.iter().any(|p| same_plane(*p, n)) || planes.push(n).is_ok())
 }
 
+/// A walk along the floor a ball stands on (`floor`, a unit normal), as
+/// [`Slider::step_slide`](super::Slider::step_slide) sees it: `up` a unit vector, and the
+/// rule by which a contact may still be stepped over (see [`steps_over`](Self::steps_over)).
+#[derive(Clone, Copy, Debug)]
+pub(super) struct Walk<S> {
+    pub floor: Vec3<S>,
+    pub up: Vec3<S>,
+    /// The cosine of the steepest slope a ball stands on.
+    pub stands: S,
+    /// The cosine of the steepest slope the walk climbs by itself.
+    pub climbs: S,
+    /// The step's height, two skins and the walk's own rise.
+    pub reach: S,
+}
+
+impl<S: Scalar> Walk<S> {
+    /// Whether a contact of unit normal `n` is touched low enough for a ball of radius `r` to
+    /// step over it: `r (climbs - n·up)` above what the walk climbs by itself, within `reach`.
+    pub(super) fn steps_over(&self, n: Vec3<S>, r: S) -> bool {
+        r.mul(self.climbs - S::dot(n, self.up)) <= self.reach
+    }
+}
+
+/// For a walk that ran into something it can neither stand on nor step over (a wall): the
+/// floor's reverse as a plane too, so that what is left of the walk stays in the floor's plane,
+/// along its crease with the wall, and neither climbs the wall by the walk's own rise (a frame
+/// up, pressed back the next: a jitter) nor runs along it where the floor tilts (a creep).
+/// Anything else adds nothing: the ball walks onto a walkable contact, and the step's rule
+/// decides about a low one. False if the plane found no room, as for [`add_planes`].
+pub(super) fn keep_to_floor<S: Scalar>(
+    planes: &mut Planes<S>,
+    walk: Option<Walk<S>>,
+    hit: &SceneHit<S>,
+    r: S,
+) -> bool {
+    let Some(walk) = walk else {
+        return true;
+    };
+    let wall = |n: &Vec3<S>| S::dot(*n, walk.up) < walk.stands && !walk.steps_over(*n, r);
+    let under = Vec3::ZERO - walk.floor;
+    !hit.planes.iter().flatten().any(wall)
+        || planes.iter().any(|p| same_plane(*p, under))
+        || planes.push(under).is_ok()
+}
+
 /// The vertical wall behind a slope too steep to stand on: for a unit normal `n` that points
 /// up (`n · up > 0`) but less than `min_cos`, its horizontal part as a unit vector. A motion
 /// kept out of both cannot be carried up the slope by running into it, while a fall onto the

@@ -113,7 +113,7 @@ impl<S: Scalar> Slider<S> {
         position: Vec3<S>,
         displacement: Vec3<S>,
     ) -> Result<Slide<S>, Error> {
-        run(self, scene, position, displacement, None)
+        run(self, scene, position, displacement, None, None)
     }
 
     /// A ground probe: the floor a ball at `position` rests on, found by a slide of this ball
@@ -300,6 +300,7 @@ impl<S: Scalar> Slider<S> {
             position,
             Vec3::ZERO - up_unit.scale(reach),
             Some(stop),
+            None,
         )?;
         Ok(probe.floor_normal(up, min_cos)?.map(|normal| Floor {
             normal,

@@ -4,8 +4,9 @@
 //! kept where it got past what stopped the first.
 
 use super::resolve::settle;
-use super::rules::magnitude;
-use super::{MAX_SLIDES, Slide, SlideContact, Slider, slope_limit};
+use super::rules::{Walk, magnitude};
+use super::{MAX_SLIDES, Slide, SlideContact, Slider, run, slope_limit};
+use crate::contact::unit;
 use crate::{Error, Geometry, Input, Scalar, Sweep, Vec3, check};
 
 impl<S: Scalar> Slider<S> {
@@ -87,9 +88,83 @@ impl<S: Scalar> Slider<S> {
         min_cos: S,
         height: S,
     ) -> Result<Slide<S>, Error> {
+        self.walk(scene, position, displacement, None, (up, min_cos), height)
+    }
+
+    /// [`step_slide`](Self::step_slide) of a walk along the floor the ball stands on (`floor`,
+    /// its normal, of any length: [`Slide::floor_normal`] of the last frame, say), which keeps
+    /// to that floor where a wall stops it: what is left of the walk runs along the crease of
+    /// the floor and the wall, as Quake III's `PM_SlideMove` starts its planes with the
+    /// ground's. A wall is a contact the ball can neither stand on nor step over (by the rule
+    /// above). With `step_slide`, a walk up a slope into a wall keeps the walk's rise and
+    /// climbs the wall by it, to be pressed back down the next frame: the ball bobs by the
+    /// rise every frame, and where the floor also tilts along the wall, creeps along it.
+    /// [`Character`](super::Character) walks this way.
+    ///
+    /// ```
+    /// use ballcast::{Scene, Triangle, Vec3, slide::Slider};
+    /// let v = Vec3::new;
+    /// // A floor rising 1 in 5 towards a wall at x = 3 (facing -x).
+    /// let mut s: Scene<f64, 4> = Scene::new();
+    /// s.push(Triangle::new(v(-9.0, -1.8, -9.0), v(-9.0, -1.8, 9.0), v(4.0, 0.8, 9.0)))?;
+    /// s.push(Triangle::new(v(-9.0, -1.8, -9.0), v(4.0, 0.8, 9.0), v(4.0, 0.8, -9.0)))?;
+    /// s.push(Triangle::new(v(3.0, -5.0, -9.0), v(3.0, -5.0, 9.0), v(3.0, 9.0, 9.0)))?;
+    /// s.push(Triangle::new(v(3.0, -5.0, -9.0), v(3.0, 9.0, 9.0), v(3.0, 9.0, -9.0)))?;
+    /// let (up, walkable) = (v(0.0, 1.0, 0.0), core::f64::consts::FRAC_1_SQRT_2);
+    /// let ball = Slider::new(0.5)?.with_max_slope(up, walkable)?;
+    /// let floor = v(-0.2, 1.0, 0.0); // of any length
+    /// // Against the wall, a skin off the floor, walking on into it along the floor.
+    /// let y = 0.2 * 2.4995 + 0.5 * 1.04f64.sqrt() + 0.0005;
+    /// let (at, walk) = (v(2.4995, y, 0.0), v(0.05, 0.01, 0.0));
+    /// let bobs = ball.step_slide(&s, at, walk, up, walkable, 0.25)?;
+    /// assert!(bobs.position.y > at.y + 0.009); // up the wall by the walk's rise
+    /// let keeps = ball.walk(&s, at, walk, Some(floor), (up, walkable), 0.25)?;
+    /// assert!((keeps.position - at).length() < 1e-3); // stays in the crease
+    /// # Ok::<(), ballcast::Error>(())
+    /// ```
+    ///
+    /// Errors: as [`step_slide`](Self::step_slide); [`Error::NaN`], [`Error::OutOfRange`] or
+    /// [`Error::ZeroVector`] for a `floor` that is NaN, beyond `±`[`Scalar::LIMIT`] or zero.
+    pub fn walk<G: Geometry<S> + ?Sized>(
+        &self,
+        scene: &G,
+        position: Vec3<S>,
+        displacement: Vec3<S>,
+        floor: Option<Vec3<S>>,
+        (up, min_cos): (Vec3<S>, S),
+        height: S,
+    ) -> Result<Slide<S>, Error> {
+        let floor = match floor {
+            Some(n) => {
+                let n = check::point(n, S::LIMIT, Input::Floor)?;
+                let zero = Error::ZeroVector {
+                    input: Input::Floor,
+                };
+                Some(unit(n).ok_or(zero)?)
+            }
+            None => None,
+        };
         let (up_unit, cos) = slope_limit(up, min_cos)?;
         let height = check::within(height, S::ZERO, S::LIMIT, Input::Step)?;
-        let plain = self.slide(scene, position, displacement)?;
+        // The walk climbs by itself what its own slope limit lets it (without one, anything
+        // touched below the centre): the looser of that limit and `min_cos`.
+        let own = self.max_slope.map_or(S::ZERO, |(_, c)| c);
+        let own = if own > S::ZERO { own } else { S::ZERO };
+        let climbs = if own < cos { own } else { cos };
+        // A walk up a ramp carries the lifted ball its own rise higher still.
+        let rising = S::dot(displacement, up_unit);
+        let rising = if rising > S::ZERO { rising } else { S::ZERO };
+        let walk = floor.map(|floor| {
+            let skin = self.skin(magnitude(position));
+            Walk {
+                floor,
+                up: up_unit,
+                stands: cos,
+                climbs,
+                reach: height + skin + skin + rising,
+            }
+        });
+        let plain = run(self, scene, position, displacement, None, walk)?;
         if height == S::ZERO {
             return Ok(plain);
         }
@@ -103,14 +178,6 @@ impl<S: Scalar> Slider<S> {
         // over: lifted by `height`, the ball would meet it as too steep again and come back
         // down where it was.
         let mut risers = [None; MAX_SLIDES];
-        // The walk climbs by itself what its own slope limit lets it (without one, anything
-        // touched below the centre): the looser of that limit and `min_cos`.
-        let own = self.max_slope.map_or(S::ZERO, |(_, c)| c);
-        let own = if own > S::ZERO { own } else { S::ZERO };
-        let climbs = if own < cos { own } else { cos };
-        // A walk up a ramp carries the lifted ball its own rise higher still.
-        let rising = S::dot(displacement, up_unit);
-        let rising = if rising > S::ZERO { rising } else { S::ZERO };
         let within = height + skin + skin + rising;
         let pressed = plain.contacts.iter().flatten().filter(|c| {
             let slope = S::dot(c.hit.normal, up_unit);
