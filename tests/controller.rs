@@ -286,6 +286,45 @@ fn air_control_steers_a_jump_up_to_the_wish<S: Tolerance>() {
     }
 }
 
+/// Walking across two floors side by side (x below 0: triangles 0 and 1; above: 2 and 3), the
+/// floor it stands on names its triangle, on the side it stands, and its position is the ball's.
+fn the_floor_names_its_triangle<S: Tolerance>() {
+    let mut level: Scene<S, 4> = Scene::new();
+    for x in [-20.0, 0.0] {
+        for t in quad([x, 0.0, -20.0], [0.0, 0.0, 40.0], [20.0, 0.0, 0.0]) {
+            level
+                .push(Triangle::new(v(t[0]), v(t[1]), v(t[2])))
+                .unwrap();
+        }
+    }
+    let (gravity, dt) = (v::<S>([0.0, -9.81, 0.0]), S::from_f64(1.0 / 60.0));
+    let mut me = Character::new(v::<S>([-3.0, 0.6, 0.0]), S::from_f64(0.5)).unwrap();
+    let walk = v::<S>([2.0, 0.0, 0.0]);
+    let mut sides = [0, 0];
+    for frame in 0..180 {
+        me.update(&level, walk, gravity, dt).unwrap();
+        let Some(f) = me.floor() else {
+            assert!(frame < 10, "{}: off the floor at frame {frame}", S::NAME);
+            continue;
+        };
+        assert_eq!(Some(f.normal), me.floor_normal(), "{}", S::NAME);
+        assert_eq!(f.position, me.position, "{}", S::NAME);
+        let x = me.position.x.to_f64();
+        if x.abs() > 0.5 {
+            let side = (x > 0.0) as usize;
+            assert_eq!(
+                f.index / 2,
+                side,
+                "{}: at x {x}, on triangle {}",
+                S::NAME,
+                f.index
+            );
+            sides[side] += 1;
+        }
+    }
+    assert!(sides[0] > 60 && sides[1] > 60, "{}: {sides:?}", S::NAME);
+}
+
 macro_rules! per_scalar {
     ($($m:ident: $t:ty),*) => {$(mod $m {
         #[allow(unused_imports)]
@@ -305,6 +344,10 @@ macro_rules! per_scalar {
         #[test]
         fn air_control_steers_a_jump_up_to_the_wish() {
             super::air_control_steers_a_jump_up_to_the_wish::<$t>();
+        }
+        #[test]
+        fn the_floor_names_its_triangle() {
+            super::the_floor_names_its_triangle::<$t>();
         }
         #[test]
         fn bad_settings_are_errors() {

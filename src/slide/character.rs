@@ -1,7 +1,7 @@
 //! [`Character`]: the README's character loop as a type, one call a frame.
 
 use super::rules::magnitude;
-use super::{Slide, Slider, min_radius};
+use super::{Floor, Slide, Slider, min_radius};
 use crate::{Error, Geometry, Input, Scalar, Vec3, check};
 
 /// A walking ball: the character loop of game engines, one [`update`](Self::update) a frame.
@@ -51,7 +51,7 @@ pub struct Character<S> {
     step: S,
     snap: S,
     air: S,
-    floor: Option<Vec3<S>>,
+    floor: Option<Floor<S>>,
     /// The ball's centre.
     pub position: Vec3<S>,
     /// Its velocity, units per second: on the floor, the wished velocity along it as the
@@ -157,7 +157,15 @@ impl<S: Scalar> Character<S> {
 
     /// The normal of the floor it stands on, if any ([`Slide::floor_normal`]'s, or the probe's).
     pub fn floor_normal(&self) -> Option<Vec3<S>> {
-        self.floor
+        self.floor.map(|f| f.normal)
+    }
+
+    /// The floor it stands on, if any: its normal (as [`floor_normal`](Self::floor_normal)),
+    /// the index of its triangle in the level (what a game looks the surface up by: a
+    /// footstep's sound, a material), and where the ball stands on it (its position).
+    pub fn floor(&self) -> Option<Floor<S>> {
+        let position = self.position;
+        self.floor.map(|f| Floor { position, ..f })
     }
 
     /// Whether it stands on a floor: the engines' `is_on_floor`.
@@ -238,7 +246,7 @@ impl<S: Scalar> Character<S> {
         let mut me = *self;
         let (ball, up, min_cos) = (me.ball, me.up, me.min_cos);
         let walked = me.floor.is_some();
-        let out = match me.floor {
+        let out = match me.floor.map(|f| f.normal) {
             Some(n) => {
                 let press = Vec3::ZERO - n * gravity.length().mul(dt).mul(dt);
                 let pressed = ball.slide(level, me.position, press)?;
@@ -246,8 +254,8 @@ impl<S: Scalar> Character<S> {
                 let walk = me.velocity * dt;
                 let on = (up, min_cos);
                 let out = ball.walk(level, pressed.position, walk, Some(n), on, me.step)?;
-                let floor = out.floor_normal(up, min_cos)?;
-                me.floor = floor.or(pressed.floor_normal(up, min_cos)?);
+                let floor = out.ground_floor(up, min_cos)?;
+                me.floor = floor.or(pressed.ground_floor(up, min_cos)?);
                 out
             }
             None => {
@@ -260,7 +268,7 @@ impl<S: Scalar> Character<S> {
                 }
                 me.velocity += gravity * dt;
                 let out = ball.slide(level, me.position, me.velocity * dt)?;
-                me.floor = out.floor_normal(up, min_cos)?;
+                me.floor = out.ground_floor(up, min_cos)?;
                 out
             }
         };
@@ -273,7 +281,7 @@ impl<S: Scalar> Character<S> {
             let depth = if walked { me.snap } else { S::ZERO };
             let found = ball.snap_to_floor(level, me.position, me.velocity, up, min_cos, depth)?;
             if let Some(f) = found.filter(|f| walked || me.velocity.dot(f.normal) <= S::ZERO) {
-                (me.floor, me.position) = (Some(f.normal), f.position);
+                (me.floor, me.position) = (Some(f), f.position);
             }
         }
         *self = me;

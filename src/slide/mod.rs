@@ -71,6 +71,9 @@ pub struct Floor<S> {
     /// Where the probe's slide down ended: the ball's centre moved onto the floor, a skin off
     /// it, or where it was if it was closer (a game's floor snap).
     pub position: Vec3<S>,
+    /// The index of the triangle whose contact gave the floor (in a valley, that of the later
+    /// of its two slopes): what a game looks its surface up by (a footstep's sound).
+    pub index: usize,
 }
 
 /// A contact met by [`move_and_slide`], with where and when it happened.
@@ -169,6 +172,15 @@ impl<S: Scalar> Slide<S> {
     /// Errors: as [`floor`](Self::floor).
     pub fn floor_normal(&self, up: Vec3<S>, min_cos: S) -> Result<Option<Vec3<S>>, Error> {
         Ok(self.ground(up, min_cos)?.map(|(_, n)| n))
+    }
+
+    /// [`floor`](Self::floor) as a [`Floor`]: its normal, this slide's end, the triangle.
+    pub(crate) fn ground_floor(&self, up: Vec3<S>, min_cos: S) -> Result<Option<Floor<S>>, Error> {
+        Ok(self.ground(up, min_cos)?.map(|(c, normal)| Floor {
+            normal,
+            position: self.position,
+            index: c.hit.index,
+        }))
     }
 
     /// [`floor`](Self::floor) with its normal.

@@ -302,10 +302,7 @@ impl<S: Scalar> Slider<S> {
             Some(stop),
             None,
         )?;
-        Ok(probe.floor_normal(up, min_cos)?.map(|normal| Floor {
-            normal,
-            position: probe.position,
-        }))
+        probe.ground_floor(up, min_cos)
     }
 
     /// [`Slide::clip`] of `velocity` by what `slide` (a move of this ball) touched, held back
