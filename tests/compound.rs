@@ -197,6 +197,21 @@ fn slides_as_one_mesh<S: Scalar>() {
     });
 }
 
+/// A sweep across the level from above the terrain, radius 0.05 to 1.
+fn across<S: Scalar>(rng: &mut Rng) -> Option<Sweep<S>> {
+    let p0 = [
+        rng.range(-6.0, 6.0),
+        rng.range(-1.0, 3.0),
+        rng.range(-5.0, 5.0),
+    ];
+    let p1 = [
+        rng.range(-6.0, 6.0),
+        rng.range(-2.0, 3.0),
+        rng.range(-5.0, 5.0),
+    ];
+    Sweep::new(v::<S>(p0), v(p1), S::from_f64(rng.range(0.05, 1.0))).ok()
+}
+
 /// A geometry of the user's own: a `Scene` behind a type the crate does not know, a part by
 /// `CompoundPart`'s default (its `cast` offered as one contact).
 struct Own<S: Scalar>(Scene<S, 2>);
@@ -238,17 +253,7 @@ fn empty_and_own_parts<S: Scalar>() {
     let mut rng = Rng(0xc0_5000);
     let (mut walls, mut grounds) = (0, 0);
     for k in 0..2000 {
-        let p0 = [
-            rng.range(-6.0, 6.0),
-            rng.range(-1.0, 3.0),
-            rng.range(-5.0, 5.0),
-        ];
-        let p1 = [
-            rng.range(-6.0, 6.0),
-            rng.range(-2.0, 3.0),
-            rng.range(-5.0, 5.0),
-        ];
-        let Ok(sweep) = Sweep::new(v::<S>(p0), v(p1), S::from_f64(rng.range(0.05, 1.0))) else {
+        let Some(sweep) = across::<S>(&mut rng) else {
             continue;
         };
         let ground = terrain.cast(&sweep);
@@ -302,18 +307,7 @@ fn a_malformed_part_is_scanned<S: Scalar>() {
         let mut rng = Rng(0xc0_7000);
         let mut boxes_hit = 0;
         for k in 0..1000 {
-            let p0 = [
-                rng.range(-6.0, 6.0),
-                rng.range(-1.0, 3.0),
-                rng.range(-5.0, 5.0),
-            ];
-            let p1 = [
-                rng.range(-6.0, 6.0),
-                rng.range(-2.0, 3.0),
-                rng.range(-5.0, 5.0),
-            ];
-            let r = S::from_f64(rng.range(0.05, 1.0));
-            let Ok(sweep) = Sweep::new(v::<S>(p0), v(p1), r) else {
+            let Some(sweep) = across::<S>(&mut rng) else {
                 continue;
             };
             let hit = want.cast(&sweep);
