@@ -69,6 +69,58 @@ fn pushing_into_a_wall_on_rising_ground_stays_put<S: Tolerance>() {
     }
 }
 
+/// Walking at 2 units/s along +x and 0.6 into a wall (at z = 2, facing -z) across a valley: down
+/// a 25° slope, over 2 units of flat floor, up a 15° slope. Where the ground turns up, the
+/// walk's next floor takes over from the one it kept to: every frame it makes at least 0.024 of
+/// its 0.027 to 0.033 along the wall (keeping to the old floor, a frame there lost most of it).
+fn walking_along_a_wall_across_a_valley_keeps_its_pace<S: Tolerance>() {
+    let (down, up) = (25f64.to_radians().tan(), 15f64.to_radians().tan());
+    let y = |x: f64| match x {
+        _ if x < 0.0 => -x * down,
+        _ if x > 2.0 => (x - 2.0) * up,
+        _ => 0.0,
+    };
+    let mut level: Scene<S, 8> = Scene::new();
+    for (a, b) in [(-8.0, 0.0), (0.0, 2.0), (2.0, 8.0)] {
+        let p = |x: f64, z: f64| v::<S>([x, y(x), z]);
+        level
+            .push(Triangle::new(p(a, -6.0), p(a, 6.0), p(b, 6.0)))
+            .unwrap();
+        level
+            .push(Triangle::new(p(a, -6.0), p(b, 6.0), p(b, -6.0)))
+            .unwrap();
+    }
+    let w = |x: f64, h: f64| v::<S>([x, h, 2.0]);
+    level
+        .push(Triangle::new(w(-9.0, -2.0), w(-9.0, 9.0), w(9.0, 9.0)))
+        .unwrap();
+    level
+        .push(Triangle::new(w(-9.0, -2.0), w(9.0, 9.0), w(9.0, -2.0)))
+        .unwrap();
+    let (r, dt) = (S::from_f64(0.5), S::from_f64(1.0 / 60.0));
+    let (gravity, wish) = (v::<S>([0.0, -9.81, 0.0]), v::<S>([2.0, 0.0, 0.6]));
+    let mut me = Character::new(v::<S>([-3.0, y(-3.0) + 0.7, 1.0]), r).unwrap();
+    for frame in 0..250 {
+        let before = me.position.x.to_f64();
+        me.update(&level, wish, gravity, dt).unwrap();
+        let made = me.position.x.to_f64() - before;
+        if frame > 20 {
+            let at = me.position.to_array().map(|c| c.to_f64());
+            assert!(
+                made > 0.015,
+                "{} frame {frame}: made {made} at {at:?}",
+                S::NAME
+            );
+        }
+    }
+    assert!(
+        me.position.x.to_f64() > 3.0,
+        "{}: at {:?}",
+        S::NAME,
+        me.position
+    );
+}
+
 macro_rules! per_scalar {
     ($($m:ident: $t:ty),*) => {$(mod $m {
         #[allow(unused_imports)]
@@ -76,6 +128,10 @@ macro_rules! per_scalar {
         #[test]
         fn pushing_into_a_wall_on_rising_ground_stays_put() {
             super::pushing_into_a_wall_on_rising_ground_stays_put::<$t>();
+        }
+        #[test]
+        fn walking_along_a_wall_across_a_valley_keeps_its_pace() {
+            super::walking_along_a_wall_across_a_valley_keeps_its_pace::<$t>();
         }
     })*};
 }

@@ -318,7 +318,7 @@ fn run<S: Scalar, G: Geometry<S> + ?Sized>(
     position: Vec3<S>,
     displacement: Vec3<S>,
     stop: Option<FloorStop<S>>,
-    walk: Option<Walk<S>>,
+    mut walk: Option<Walk<S>>,
 ) -> Result<Slide<S>, Error> {
     let radius = ball.radius;
     // Inside these ranges `position + displacement` stays within 2 * LIMIT: no overflow.
@@ -386,7 +386,7 @@ fn run<S: Scalar, G: Geometry<S> + ?Sized>(
         rest = if stop.is_some_and(|s| s.stops_at(&hit)) {
             zero
         } else if add_planes(&mut planes, &hit, ball.max_slope)
-            && keep_to_floor(&mut planes, walk, &hit, radius)
+            && keep_to_floor(&mut planes, &mut walk, &hit, radius)
         {
             constrain(left, &planes, displacement)
         } else {

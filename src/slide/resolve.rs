@@ -8,11 +8,14 @@ use crate::{Geometry, Scalar, SceneHit, Sweep, Vec3};
 
 /// Where a ball that starts overlapping `scene` by more than `skin` is moved before its
 /// motion, at most [`MAX_SLIDES`] pushes (each may uncover the next deepest). Each round tries
-/// the joint push ([`push_out`]: out of the deepest overlap and up to two faces that push
-/// would fail, both slopes of a valley at once), then, if something stops it, the push along
-/// the deepest overlap's normal alone (another overlap may lie against the joint push and not
-/// against that one). Each is swept like a motion, so that it stops a skin short of anything it would
-/// run into; where both are stopped, the one that got farther is kept. A push is
+/// up to three pushes, each swept like a motion so that it stops a skin short of anything it
+/// would run into: the joint push ([`push_out`]: out of the deepest overlap and up to two faces
+/// that push would fail, both slopes of a valley at once); if something stops it, the push
+/// along the deepest overlap's normal alone, where that differs (another overlap may lie
+/// against the joint push and not against that one); and if that is stopped too, the push that
+/// meets the deepest overlap's demand and leaves what stopped the last one by a skin
+/// ([`around`]: over a ridge of the floor that a wall pushes the ball against). The first that
+/// gets through is taken; where none does, the one of the first two that got farther. A push is
 /// never longer than twice `radius + skin`, and never farther than
 /// `2 * MAX_SLIDES * (radius + skin)` in all.
 #[inline(never)] // its frame is live only while it runs, not through the whole motion
@@ -72,7 +75,7 @@ pub(super) fn resolve<S: Scalar, G: Geometry<S> + ?Sized>(
                 }
             }
         }
-        // All stopped: of the first two, the one that got farther, the joint push on a tie. (Depths are no
+        // All stopped: of the first two tried, the one that got farther, the joint push on a tie. (Depths are no
         // guide: next to an inactive edge they are measured to the face's plane.)
         let moved = |c: Vec3<S>| S::direction(c - centre).map_or(S::ZERO, |(len, _)| len);
         centre = match stops {

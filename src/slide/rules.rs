@@ -159,21 +159,28 @@ impl<S: Scalar> Walk<S> {
 /// For a walk that ran into something it can neither stand on nor step over (a wall): the
 /// floor's reverse as a plane too, so that what is left of the walk stays in the floor's plane,
 /// along its crease with the wall, and neither climbs the wall by the walk's own rise (a frame
-/// up, pressed back the next: a jitter) nor runs along it where the floor tilts (a creep).
-/// Anything else adds nothing: the ball walks onto a walkable contact, and the step's rule
-/// decides about a low one. False if the plane found no room, as for [`add_planes`].
+/// up, pressed back the next: a jitter) nor runs along it where the floor tilts (a creep). A
+/// walkable contact becomes the floor the walk keeps to (the old floor's reverse is dropped:
+/// the walk goes on up the new floor, out of a valley, onto a ramp); a low one the step's rule
+/// decides about adds nothing. False if the plane found no room, as for [`add_planes`].
 pub(super) fn keep_to_floor<S: Scalar>(
     planes: &mut Planes<S>,
-    walk: Option<Walk<S>>,
+    walk: &mut Option<Walk<S>>,
     hit: &SceneHit<S>,
     r: S,
 ) -> bool {
     let Some(walk) = walk else {
         return true;
     };
-    let wall = |n: &Vec3<S>| S::dot(*n, walk.up) < walk.stands && !walk.steps_over(*n, r);
     let under = Vec3::ZERO - walk.floor;
-    !hit.planes.iter().flatten().any(wall)
+    let normals = || hit.planes.iter().flatten();
+    if let Some(&floor) = normals().find(|n| S::dot(**n, walk.up) >= walk.stands) {
+        planes.retain(|p| !same_plane(*p, under));
+        walk.floor = floor;
+        return true;
+    }
+    let wall = |n: &&Vec3<S>| !walk.steps_over(**n, r);
+    normals().find(wall).is_none()
         || planes.iter().any(|p| same_plane(*p, under))
         || planes.push(under).is_ok()
 }

@@ -98,8 +98,12 @@ impl<S: Scalar> Slider<S> {
     /// ground's. A wall is a contact the ball can neither stand on nor step over (by the rule
     /// above). With `step_slide`, a walk up a slope into a wall keeps the walk's rise and
     /// climbs the wall by it, to be pressed back down the next frame: the ball bobs by the
-    /// rise every frame, and where the floor also tilts along the wall, creeps along it.
-    /// [`Character`](super::Character) walks this way.
+    /// rise every frame, and where the floor also tilts along the wall, creeps along it. A
+    /// walkable contact becomes the floor the rest keeps to. Which walls count depends on the
+    /// slope limit and the step: with [`with_max_slope`](Self::with_max_slope) at 45° and a
+    /// step of half the radius, walls within about 11° of vertical (or leaning over); without a
+    /// slope limit of its own the ball climbs anything touched below its centre, so no wall
+    /// counts. [`Character`](super::Character) walks this way.
     ///
     /// ```
     /// use ballcast::{Scene, Triangle, Vec3, slide::Slider};
