@@ -310,8 +310,9 @@ pub fn move_and_slide<S: Scalar, G: Geometry<S> + ?Sized>(
 /// [`move_and_slide`] with `ball`, ending at the first contact `stop` (a ground probe's) stops at.
 /// A `walk` along the floor the ball stands on keeps to it: the floor is the first plane that
 /// constrains the rest of the motion once something stops it (as Quake III's `PM_SlideMove`
-/// seeds its planes with the ground's), and once that is a wall (too steep to stand on or step
-/// over), the rest stays in the floor's plane ([`keep_to_floor`](rules::keep_to_floor)).
+/// seeds its planes with the ground's), and once that is a wall (a contact it can neither
+/// stand on nor step over), the rest stays in the floor's plane; a walkable contact becomes
+/// the floor it keeps to ([`keep_to_floor`](rules::keep_to_floor)).
 fn run<S: Scalar, G: Geometry<S> + ?Sized>(
     ball: &Slider<S>,
     scene: &G,

@@ -75,8 +75,9 @@ pub(super) fn resolve<S: Scalar, G: Geometry<S> + ?Sized>(
                 }
             }
         }
-        // All stopped: of the first two tried, the one that got farther, the joint push on a tie. (Depths are no
-        // guide: next to an inactive edge they are measured to the face's plane.)
+        // All stopped: of the first two tried, the one that got farther, the joint push on a
+        // tie. (Depths are no guide: next to an inactive edge they are measured to the face's
+        // plane.)
         let moved = |c: Vec3<S>| S::direction(c - centre).map_or(S::ZERO, |(len, _)| len);
         centre = match stops {
             [Some(a), Some(b)] if moved(b) > moved(a) => b,
