@@ -26,8 +26,8 @@ pub const PLANES: usize = 4;
 type Tie<S> = (usize, S, Vec3<S>, Contact);
 
 /// An accumulator for the contacts of one sweep, fed in any order with [`offer`](Self::offer).
-/// (Public only to name it in [`CompoundPart`](crate::compound::CompoundPart)'s hidden methods: this module is
-/// private, so no user can.)
+/// (Public only to name it in [`CompoundPart`](crate::compound::CompoundPart)'s hidden method:
+/// this module is private, so no user can.)
 #[derive(Debug)]
 pub struct Earliest<S: Scalar> {
     best: Option<(usize, Hit<S>)>,

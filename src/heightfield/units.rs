@@ -124,32 +124,30 @@ impl UnitGrid {
         let bound = UnitHeights::new(sweep);
         let d = sweep.p1() - sweep.p0();
         let w = field.columns as usize;
-        {
-            // Rows, then columns, in the direction of travel: near cells first, so that early
-            // contacts lower the reach the later cells are culled by.
-            for n in 0..=(k1 - k0) {
-                let k = if d.z >= S::ZERO { k0 + n } else { k1 - n };
-                for m in 0..=(i1 - i0) {
-                    let i = if d.x >= S::ZERO { i0 + m } else { i1 - m };
-                    let c = k as usize * w + i as usize;
-                    let Some(&byte) = field.cells.get(c).filter(|&&b| b & HOLE == 0) else {
-                        continue;
-                    };
-                    if !self.cell_in_reach(field, i as u32, k as u32) {
-                        continue;
-                    }
-                    let Some(corners) = field.corners(i as u32, k as u32) else {
-                        continue;
-                    };
-                    for t in [2 * c, 2 * c + 1] {
-                        let tri = half(corners, t % 2);
-                        let reach = acc.reach();
-                        let out = bound
-                            .as_ref()
-                            .is_some_and(|b| b.rule_out(sweep, tri.vertices(), reach, true));
-                        if !out && let Some(hit) = cast_lazily(&tri, t, byte, sweep, reach) {
-                            acc.offer(t, hit);
-                        }
+        // Rows, then columns, in the direction of travel: near cells first, so that early
+        // contacts lower the reach the later cells are culled by.
+        for n in 0..=(k1 - k0) {
+            let k = if d.z >= S::ZERO { k0 + n } else { k1 - n };
+            for m in 0..=(i1 - i0) {
+                let i = if d.x >= S::ZERO { i0 + m } else { i1 - m };
+                let c = k as usize * w + i as usize;
+                let Some(&byte) = field.cells.get(c).filter(|&&b| b & HOLE == 0) else {
+                    continue;
+                };
+                if !self.cell_in_reach(field, i as u32, k as u32) {
+                    continue;
+                }
+                let Some(corners) = field.corners(i as u32, k as u32) else {
+                    continue;
+                };
+                for t in [2 * c, 2 * c + 1] {
+                    let tri = half(corners, t % 2);
+                    let reach = acc.reach();
+                    let out = bound
+                        .as_ref()
+                        .is_some_and(|b| b.rule_out(sweep, tri.vertices(), reach, true));
+                    if !out && let Some(hit) = cast_lazily(&tri, t, byte, sweep, reach) {
+                        acc.offer(t, hit);
                     }
                 }
             }
