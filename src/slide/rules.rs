@@ -208,7 +208,11 @@ pub(super) fn steep_wall<S: Scalar>(n: Vec3<S>, (up, min_cos): (Vec3<S>, S)) -> 
 /// (with one or two of them in the way), whatever order they were touched in. A
 /// candidate that runs against `primal` is passed over: in a corner wider than a right angle,
 /// sliding along one wall leads back out of the corner, while the crease of the two walls leads
-/// down to the floor.
+/// down to the floor. A crease is also passed over where its direction runs into a third plane
+/// beyond the normals' rounding: however short the slide (its product with that plane below
+/// the rounding of a height, eight steps in fixed point), it would climb a step into it every
+/// call (`I16F16`: a ball pushing into a wall that leans back, on ground tilted along it,
+/// crept up their crease, which the wall's steep-slope plane forbids).
 pub(super) fn constrain<S: Scalar>(v: Vec3<S>, planes: &[Vec3<S>], primal: Vec3<S>) -> Vec3<S> {
     let zero = Vec3::ZERO;
     let slack = -along(v);
@@ -231,36 +235,51 @@ pub(super) fn constrain<S: Scalar>(v: Vec3<S>, planes: &[Vec3<S>], primal: Vec3<
     }
     let slides = planes.iter().map(|n| {
         let into = S::dot(v, *n);
-        if into < S::ZERO { v - n.scale(into) } else { v }
+        (if into < S::ZERO { v - n.scale(into) } else { v }, None)
     });
+    // The rounding of a product of unit normals, from those of the frames they come from: the
+    // tie window's four steps, twice.
+    let tie = crate::scalar::tie::<S>();
+    let skew = S::ZERO - (tie + tie);
     let creases = planes.iter().enumerate().flat_map(|(i, a)| {
         // The planes after `a` (`get`: no indexing, so no panic path for the link check).
         let later = planes.get(i + 1..).unwrap_or_default();
         let lines = later
             .iter()
-            .filter_map(|b| S::direction(cross_unit(*a, *b)));
-        lines.map(|(sin, c)| {
+            .filter_map(|b| Some((S::direction(cross_unit(*a, *b))?, *b)));
+        lines.map(move |((sin, c), b)| {
             let c = c.map(S::unit_to_scalar);
-            let w = c.scale(S::dot(v, c));
+            let run = S::dot(v, c);
+            let w = c.scale(run);
             // The crease's direction is uncertain by the normals' rounding, that of the frames
             // they come from included (in floats a few ulps of one each, eight seen), over the
             // sine of their angle: a slide along it within four times the noise is noise, and
             // taken call after call it would creep (an ulp a call into a 120° corner, `f64`).
             let twice = noise + noise;
             if S::mul(magnitude(w), sin) > twice + twice {
-                w
+                // Its heading, to check against the other planes (times the sine: that
+                // uncertainty, without a division).
+                let heading = if run < S::ZERO { Vec3::ZERO - c } else { c };
+                (w, Some((heading.scale(sin), [*a, b])))
             } else {
-                zero
+                (zero, None)
             }
         })
     });
+    // Whether a crease heading (times the sine of its planes' angle) runs into a plane other
+    // than its own two beyond the rounding of both.
+    let heads_in = |(h, own): (Vec3<S>, [Vec3<S>; 2])| {
+        planes
+            .iter()
+            .any(|n| !own.contains(n) && S::dot(h, *n) < skew)
+    };
     // Of those kept, the one that removes least: each is a projection of `v`, so `v · w` is
     // `|w|²`, and the largest is the closest motion to `v` that runs into no plane. Only one
     // longer than the best so far is checked against the planes (the first on a tie).
     let mut best: Option<(S, Vec3<S>)> = None;
-    for w in slides.chain(creases) {
+    for (w, heading) in slides.chain(creases) {
         let d = S::dot(v, w);
-        if best.is_none_or(|(b, _)| d > b) && keep(&w) {
+        if best.is_none_or(|(b, _)| d > b) && keep(&w) && !heading.is_some_and(heads_in) {
             best = Some((d, w));
         }
     }
