@@ -140,6 +140,9 @@ pub enum Input {
     Up,
     /// The normal of the floor a walk keeps to.
     Floor,
+    /// How the floor a walk keeps to faces: the cosine of its normal with up, which must not
+    /// be negative (a floor facing down is a ceiling).
+    FloorFacing,
     /// The cosine of the steepest slope taken for a floor.
     MaxSlope,
     /// The gap a ball keeps from what it touches.
@@ -183,6 +186,7 @@ impl Input {
             Input::Velocity => ("the velocity", true),
             Input::Up => ("the up direction", true),
             Input::Floor => ("the floor's normal", true),
+            Input::FloorFacing => ("the cosine of the floor's normal with up", false),
             Input::MaxSlope => ("the cosine of the steepest slope", false),
             Input::Skin => ("the skin", false),
             Input::Step => ("the step height", false),

@@ -175,6 +175,13 @@ fn each_argument_is_named<S: Scalar>() {
         e.unwrap_err().to_string(),
         "the floor's normal is the zero vector"
     );
+    // A floor facing down (here straight down) is a ceiling: refused, with its cosine.
+    let down = Vec3::new(S::ZERO, S::ZERO - one, S::ZERO);
+    let e = ball.walk(&scene, z, z, Some(down), (Vec3::Y, half), one);
+    assert_eq!(
+        e.unwrap_err().to_string(),
+        "the cosine of the floor's normal with up is -1, outside the accepted range [0, 1]"
+    );
     let e = Sweep::new(z, out, one).unwrap_err();
     let l = S::LIMIT.to_f64();
     let said = format!(

@@ -128,7 +128,9 @@ impl<S: Scalar> Slider<S> {
     /// ```
     ///
     /// Errors: as [`step_slide`](Self::step_slide); [`Error::NaN`], [`Error::OutOfRange`] or
-    /// [`Error::ZeroVector`] for a `floor` that is NaN, beyond `±`[`Scalar::LIMIT`] or zero.
+    /// [`Error::ZeroVector`] for a `floor` that is NaN, beyond `±`[`Scalar::LIMIT`] or zero;
+    /// [`Error::OutOfRange`] with [`Input::FloorFacing`](crate::Input::FloorFacing) for one
+    /// that faces down (its cosine with `up` negative: a ceiling is no floor).
     pub fn walk<G: Geometry<S> + ?Sized>(
         &self,
         scene: &G,
@@ -138,17 +140,28 @@ impl<S: Scalar> Slider<S> {
         (up, min_cos): (Vec3<S>, S),
         height: S,
     ) -> Result<Slide<S>, Error> {
+        let (up_unit, cos) = slope_limit(up, min_cos)?;
         let floor = match floor {
             Some(n) => {
                 let n = check::point(n, S::LIMIT, Input::Floor)?;
                 let zero = Error::ZeroVector {
                     input: Input::Floor,
                 };
-                Some(unit(n).ok_or(zero)?)
+                let n = unit(n).ok_or(zero)?;
+                let facing = S::dot(n, up_unit);
+                if facing < S::ZERO {
+                    return Err(Error::OutOfRange {
+                        input: Input::FloorFacing,
+                        value: facing.to_f64(),
+                        min: 0.0,
+                        max: 1.0,
+                        triangle: None,
+                    });
+                }
+                Some(n)
             }
             None => None,
         };
-        let (up_unit, cos) = slope_limit(up, min_cos)?;
         let height = check::within(height, S::ZERO, S::LIMIT, Input::Step)?;
         // The walk climbs by itself what its own slope limit lets it (without one, anything
         // touched below the centre): the looser of that limit and `min_cos`.
