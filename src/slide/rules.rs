@@ -165,13 +165,13 @@ impl<S: Scalar> Walk<S> {
     }
 }
 
-/// For a walk that ran into a wall (a face too steep to climb, or an edge or vertex it can
-/// neither stand on nor step over): the floor's reverse as a plane too, so that what is left of the walk stays in the floor's plane,
+/// For a walk that ran into something it can neither stand on nor step over (a wall): the
+/// floor's reverse as a plane too, so that what is left of the walk stays in the floor's plane,
 /// along its crease with the wall, and neither climbs the wall by the walk's own rise (a frame
 /// up, pressed back the next: a jitter) nor runs along it where the floor tilts (a creep). A
 /// walkable contact becomes the floor the walk keeps to (the old floor's reverse is dropped:
-/// the walk goes on up the new floor, out of a valley, onto a ramp); a low edge or vertex the
-/// step's rule decides about adds nothing. False if the plane found no room, as for [`add_planes`].
+/// the walk goes on up the new floor, out of a valley, onto a ramp); a low one the step's rule
+/// decides about adds nothing. False if the plane found no room, as for [`add_planes`].
 pub(super) fn keep_to_floor<S: Scalar>(
     planes: &mut Planes<S>,
     walk: &mut Option<Walk<S>>,
@@ -188,13 +188,7 @@ pub(super) fn keep_to_floor<S: Scalar>(
         walk.floor = floor;
         return true;
     }
-    // A face too steep to climb is a wall however low it was touched: rising does not turn
-    // its normal, as it turns an edge's (stepping onto what it bounds is the step's to try).
-    let face = hit.contact == Contact::Face;
-    let wall = |n: &&Vec3<S>| {
-        !walk.steps_over(**n, r)
-            || (face && same_plane(**n, hit.normal) && S::dot(**n, walk.up) < walk.climbs)
-    };
+    let wall = |n: &&Vec3<S>| !walk.steps_over(**n, r);
     normals().find(wall).is_none()
         || planes.iter().any(|p| same_plane(*p, under))
         || planes.push(under).is_ok()

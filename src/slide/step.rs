@@ -95,15 +95,15 @@ impl<S: Scalar> Slider<S> {
     /// its normal, of any length: [`Slide::floor_normal`] of the last frame, say), which keeps
     /// to that floor where a wall stops it: what is left of the walk runs along the crease of
     /// the floor and the wall, as Quake III's `PM_SlideMove` starts its planes with the
-    /// ground's. A wall is a face too steep for the ball to climb by itself (rising does not
-    /// turn a face's normal as it turns an edge's; stepping onto what the face bounds is the
-    /// step's to try), or an edge or vertex it can neither stand on nor step over (by the rule
+    /// ground's. A wall is a contact the ball can neither stand on nor step over (by the rule
     /// above). With `step_slide`, a walk up a slope into a wall keeps the walk's rise and
     /// climbs the wall by it, to be pressed back down the next frame: the ball bobs by the
     /// rise every frame, and where the floor also tilts along the wall, creeps along it. A
-    /// walkable contact becomes the floor the rest keeps to. Without a slope limit of its own
-    /// ([`with_max_slope`](Self::with_max_slope)) the ball climbs anything touched below its
-    /// centre, so only what leans over counts. [`Character`](super::Character) walks this way.
+    /// walkable contact becomes the floor the rest keeps to. Which walls count depends on the
+    /// slope limit and the step: with [`with_max_slope`](Self::with_max_slope) at 45° and a
+    /// step of half the radius, walls within about 11° of vertical (or leaning over); without a
+    /// slope limit of its own the ball climbs anything touched below its centre, so no wall
+    /// counts. [`Character`](super::Character) walks this way.
     ///
     /// ```
     /// use ballcast::{Scene, Triangle, Vec3, slide::Slider};
