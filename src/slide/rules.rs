@@ -40,9 +40,8 @@ impl<S: Scalar> FloorStop<S> {
 /// goes on to the contact (unless that travel is rounding too) and is lifted there by its
 /// motion's approach: at least `rounding` for floats; for fixed point, at least a step per
 /// unit of the motion left (its largest coordinate). Any other that started within a skin of
-/// the plane stays where it is. One met at once (already touching or overlapping) is lifted a
-/// skin off the plane instead: back along its motion where that runs steeply into the plane,
-/// else along the normal.
+/// the plane stays where it is. One met at once (already touching or overlapping) is lifted by
+/// a skin instead.
 pub(super) fn stand_off<S: Scalar>(
     hit: &SceneHit<S>,
     rest: Vec3<S>,
@@ -89,14 +88,6 @@ pub(super) fn stand_off<S: Scalar>(
         let alpha = hit.alpha - back;
         let settled = magnitude(rest).mul(alpha) <= rounding;
         return (if settled { S::ZERO } else { alpha }, zero);
-    }
-    // Met at once by a motion that runs steeply into the plane (by at least half its largest
-    // coordinate): lifted back along that motion, by what puts it a skin off the plane. Lifted
-    // along the normal, a motion whose rounding turned it (in `I16F16` at 960 Hz, gravity's
-    // press on a slope rounds to a step straight down) came back elsewhere: down the slope.
-    let steep = (S::ZERO - into) + (S::ZERO - into) >= magnitude(rest);
-    if hit.alpha == S::ZERO && into < S::ZERO && steep {
-        return (S::ZERO, rest.scale(S::div(skin, into)));
     }
     (hit.alpha, hit.normal.scale(skin))
 }
