@@ -222,5 +222,20 @@ pub fn cases() -> Vec<Case> {
             heading: [1.0, 0.0, 0.0],
         });
     }
+    // Standing still on slopes: progress is a creep down them.
+    for slope in [5.0, 20.0, 40.0] {
+        let mut t = Vec::new();
+        ground(&mut t, &|x, _| tan(slope) * x, 2.0);
+        let name = format!("standing on a slope of {slope}");
+        let start = [0.0, 0.55 / slope.to_radians().cos(), 0.0];
+        let down = unit([-1.0, -tan(slope), 0.0]);
+        out.push(Case {
+            name,
+            tris: t,
+            start,
+            wish: [0.0; 3],
+            heading: down,
+        });
+    }
     out
 }
