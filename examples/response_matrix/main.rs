@@ -80,7 +80,8 @@ fn run<S: Scalar>(case: &Case, hz: f64, scalar: &str) -> String {
         let d = [now[0] - before[0], now[1] - before[1], now[2] - before[2]];
         let along = d[0] * case.heading[0] + d[1] * case.heading[1] + d[2] * case.heading[2];
         prog += along;
-        stuck += (along < step / 20.0) as usize;
+        // (Standing still, no frame is stuck.)
+        stuck += (along < step / 20.0 && step > 0.0) as usize;
         if d[1] * last_dy < 0.0 {
             zig = zig.max(d[1].abs().min(last_dy.abs()));
         }
