@@ -140,6 +140,52 @@ fn walking_along_a_wall_across_a_valley_keeps_its_pace<S: Tolerance>() {
     );
 }
 
+/// A rock face leaning back 20° (too steep to stand on, low enough to step over) on ground
+/// rising 10° towards it: the wall behind a steep slope stood level, so the walk into it kept
+/// its rise and climbed the face by it, pressed back down the next frame (5.7 mm every frame,
+/// every scalar). It now stands on the floor, and the ball stays put.
+fn pushing_into_a_face_leaning_back_on_rising_ground_stays_put<S: Tolerance>() {
+    let (rise, lean) = (10f64.to_radians().tan(), 20f64.to_radians().tan());
+    walks_into_the_wall_and_stays_put(&crease::<S>(rise, 0.0, lean), "lean 20°, rise 10°");
+}
+
+/// A V-shaped ditch of 50° sides (each too steep to stand on; their trough, rising 5° along
+/// x, holds the ball as a floor), walked up at 2 units/s along x and 0.4 into one side: the
+/// sides' walls stood level, leaning back across the trough's rise, and held the ball back
+/// (it made 0.37 in 3 s, or slid back). Now it walks up the trough at the wished pace: more
+/// than 5.5 of the 5.95 along x in 3 s, grounded every frame.
+fn walks_up_a_steep_ditch_pushed_into_one_side<S: Tolerance>() {
+    let (side, rise) = (50f64.to_radians().tan(), 5f64.to_radians().tan());
+    let p = |x: f64, z: f64| v::<S>([x, side * z.abs() + rise * x, z]);
+    let mut level: Scene<S, 4> = Scene::new();
+    for z in [3.0, -3.0] {
+        // Counter-clockwise from above, so each side faces up into the ditch.
+        let (a, b) = if z > 0.0 { (0.0, z) } else { (z, 0.0) };
+        level
+            .push(Triangle::new(p(-9.0, a), p(-9.0, b), p(9.0, b)))
+            .unwrap();
+        level
+            .push(Triangle::new(p(-9.0, a), p(9.0, b), p(9.0, a)))
+            .unwrap();
+    }
+    let (r, dt) = (S::from_f64(0.5), S::from_f64(1.0 / 60.0));
+    let (gravity, wish) = (v::<S>([0.0, -9.81, 0.0]), v::<S>([2.0, 0.0, 0.4]));
+    let y = 0.5 / 50f64.to_radians().cos() + 0.05 - 5.0 * rise;
+    let mut me = Character::new(v::<S>([-5.0, y, 0.0]), r).unwrap();
+    for _ in 0..60 {
+        me.update(&level, wish, gravity, dt).unwrap();
+    }
+    let from = me.position.x.to_f64();
+    for frame in 0..180 {
+        me.update(&level, wish, gravity, dt).unwrap();
+        assert!(me.is_grounded(), "{} frame {frame}: off the floor", S::NAME);
+    }
+    let made = me.position.x.to_f64() - from;
+    assert!(made > 5.5, "{}: made {made} at {:?}", S::NAME, me.position);
+    let left = penetration(&level, me.position, r).unwrap();
+    assert!(left.is_none(), "{}: {left:?}", S::NAME);
+}
+
 macro_rules! per_scalar {
     ($($m:ident: $t:ty),*) => {$(mod $m {
         #[allow(unused_imports)]
@@ -151,6 +197,14 @@ macro_rules! per_scalar {
         #[test]
         fn pushing_into_a_wall_leaning_back_on_tilted_ground_stays_put() {
             super::pushing_into_a_wall_leaning_back_on_tilted_ground_stays_put::<$t>();
+        }
+        #[test]
+        fn pushing_into_a_face_leaning_back_on_rising_ground_stays_put() {
+            super::pushing_into_a_face_leaning_back_on_rising_ground_stays_put::<$t>();
+        }
+        #[test]
+        fn walks_up_a_steep_ditch_pushed_into_one_side() {
+            super::walks_up_a_steep_ditch_pushed_into_one_side::<$t>();
         }
         #[test]
         fn walking_along_a_wall_across_a_valley_keeps_its_pace() {

@@ -116,18 +116,20 @@ pub(super) fn magnitude<S: Scalar>(p: Vec3<S>) -> S {
 }
 
 /// Adds a contact's planes to those already touched, each distinct plane once, and, with a
-/// slope limit `(up, min_cos)` (`up` a unit vector), the vertical wall each too-steep plane
-/// also stands for ([`steep_wall`]); false if one found no room, in which case the caller must
-/// not move on (it cannot respect that plane).
+/// slope limit `(up, min_cos)` (`up` a unit vector), the wall each too-steep plane also stands
+/// for on the `floor` a walk keeps to, or upright without one ([`steep_wall`]); false if one
+/// found no room, in which case the caller must not move on (it cannot respect that plane).
 pub(super) fn add_planes<S: Scalar>(
     planes: &mut Planes<S>,
     hit: &SceneHit<S>,
     limit: Option<(Vec3<S>, S)>,
+    floor: impl Fn(Vec3<S>) -> Option<Vec3<S>>,
 ) -> bool {
     let normals = || hit.planes.iter().flatten().copied();
+    let floor = &floor;
     let walls = limit
         .into_iter()
-        .flat_map(|limit| normals().filter_map(move |n| steep_wall(n, limit)));
+        .flat_map(|limit| normals().filter_map(move |n| steep_wall(n, limit, floor(n))));
     normals()
         .chain(walls)
         .all(|n| planes.iter().any(|p| same_plane(*p, n)) || planes.push(n).is_ok())
@@ -185,18 +187,32 @@ pub(super) fn keep_to_floor<S: Scalar>(
         || planes.push(under).is_ok()
 }
 
-/// The vertical wall behind a slope too steep to stand on: for a unit normal `n` that points
-/// up (`n · up > 0`) but less than `min_cos`, its horizontal part as a unit vector. A motion
-/// kept out of both cannot be carried up the slope by running into it, while a fall onto the
-/// slope, which does not run into the wall, still slides down it (Jolt's `CharacterVirtual`
-/// adds the same second constraint beyond its maximum slope angle).
-pub(super) fn steep_wall<S: Scalar>(n: Vec3<S>, (up, min_cos): (Vec3<S>, S)) -> Option<Vec3<S>> {
+/// The wall behind a slope too steep to stand on: for a unit normal `n` that points up
+/// (`n · up > 0`) but less than `min_cos`, a plane such that a motion kept out of both cannot
+/// be carried up the slope by running into it, while a fall onto the slope, which does not run
+/// into the wall, still slides down it (Jolt's `CharacterVirtual` adds the same second
+/// constraint beyond its maximum slope angle). Without a floor the wall stands upright: its
+/// normal is `n`'s level part. Given the unit normal of the floor a walk keeps to, it stands
+/// square on that floor, through the slope's foot: its normal is `n`'s part across `floor`, so
+/// what it leaves of a walk along the floor stays in the floor's plane. Upright, it left a walk
+/// into a face leaning back on ground rising towards it the walk's rise, which climbed the face
+/// by that much every frame, pressed back down the next (a bob); and along a V-shaped ditch of
+/// steep sides, whose rising trough holds the ball as a floor, the sides' upright walls leant
+/// back across the rise and held the walk back. A slope within 1/32 rad of the floor's plane
+/// gives its part across the floor no reliable direction: its wall is upright.
+pub(super) fn steep_wall<S: Scalar>(
+    n: Vec3<S>,
+    (up, min_cos): (Vec3<S>, S),
+    floor: Option<Vec3<S>>,
+) -> Option<Vec3<S>> {
     let d = S::dot(n, up);
-    if d > S::ZERO && d < min_cos {
-        unit(n - up.scale(d))
-    } else {
-        None
+    if !(d > S::ZERO && d < min_cos) {
+        return None;
     }
+    let across = floor
+        .map(|f| n - f.scale(S::dot(n, f)))
+        .filter(|a| magnitude(*a) > S::div_pow2(S::ONE, 5));
+    across.and_then(unit).or_else(|| unit(n - up.scale(d)))
 }
 
 /// `v` constrained by every plane (unit normals): unchanged if it moves into none; else the

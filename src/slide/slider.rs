@@ -59,7 +59,11 @@ impl<S: Scalar> Slider<S> {
     /// sliding into such a slope no longer carries the ball up it, while a fall onto it still
     /// slides down. Jolt's `CharacterVirtual` adds the same second constraint beyond its
     /// maximum slope angle, and Godot's `CharacterBody3D` calls it not sliding up steep slopes.
-    /// Use [`Slider::clip`] to constrain a velocity the same way.
+    /// Use [`Slider::clip`] to constrain a velocity the same way. In a walk along a floor
+    /// ([`walk`](Self::walk)), a steep face touched low enough to step over has its wall
+    /// stand square on that floor instead (normal: `n`'s part across the floor's normal), so
+    /// that what is left of the walk stays on the floor: it neither climbs a face leaning back
+    /// by the rise of the ground towards it nor is held back walking up a steep-sided ditch.
     ///
     /// A step's edge is such a slope where the ball rounds it: a riser higher than
     /// `radius * (1 - min_cos)` (0.29 r for 45°) stops a ball it would otherwise lift onto the
