@@ -150,40 +150,49 @@ fn pushing_into_a_face_leaning_back_on_rising_ground_stays_put<S: Tolerance>() {
 }
 
 /// A V-shaped ditch of 50° sides (each too steep to stand on; their trough, rising 5° along
-/// x, holds the ball as a floor), walked up at 2 units/s along x and 0.4 into one side: the
-/// sides' walls stood level, leaning back across the trough's rise, and held the ball back
-/// (it made 0.37 in 3 s, or slid back). Now it walks up the trough at the wished pace: more
-/// than 5.5 of the 5.95 along x in 3 s, grounded every frame.
+/// x, holds the ball as a floor), walked up at 2 units/s along x and 0.4 into one side, at 60
+/// and 240 Hz: the sides' walls stood upright, leaning back across the trough's rise, and
+/// held the ball back (it made 0.37 in 3 s, or slid back); then, in `I16F16` at 240 Hz, a
+/// walk that touched one side only ended off the floor, and the snap's probe slid back down
+/// the trough by more than the walk (1.0 in 3 s). Now it walks up the trough at the wished
+/// pace: more than 5.5 of the 5.95 along x in 3 s, grounded every frame.
 fn walks_up_a_steep_ditch_pushed_into_one_side<S: Tolerance>() {
     let (side, rise) = (50f64.to_radians().tan(), 5f64.to_radians().tan());
     let p = |x: f64, z: f64| v::<S>([x, side * z.abs() + rise * x, z]);
-    let mut level: Scene<S, 4> = Scene::new();
-    for z in [3.0, -3.0] {
-        // Counter-clockwise from above, so each side faces up into the ditch.
-        let (a, b) = if z > 0.0 { (0.0, z) } else { (z, 0.0) };
-        level
-            .push(Triangle::new(p(-9.0, a), p(-9.0, b), p(9.0, b)))
-            .unwrap();
-        level
-            .push(Triangle::new(p(-9.0, a), p(9.0, b), p(9.0, a)))
-            .unwrap();
+    // Unit cells, as a level's mesh has them (x in -8..8, z in -3..3), counter-clockwise from
+    // above so that each side faces up into the ditch.
+    let mut level: Scene<S, 192> = Scene::new();
+    for i in -8..8 {
+        for k in -3..3 {
+            let (x, z) = (i as f64, k as f64);
+            let (a, b, c, d) = (p(x, z), p(x, z + 1.0), p(x + 1.0, z + 1.0), p(x + 1.0, z));
+            level.push(Triangle::new(a, b, c)).unwrap();
+            level.push(Triangle::new(a, c, d)).unwrap();
+        }
     }
-    let (r, dt) = (S::from_f64(0.5), S::from_f64(1.0 / 60.0));
-    let (gravity, wish) = (v::<S>([0.0, -9.81, 0.0]), v::<S>([2.0, 0.0, 0.4]));
-    let y = 0.5 / 50f64.to_radians().cos() + 0.05 - 5.0 * rise;
-    let mut me = Character::new(v::<S>([-5.0, y, 0.0]), r).unwrap();
-    for _ in 0..60 {
-        me.update(&level, wish, gravity, dt).unwrap();
+    for hz in [60, 240] {
+        let (r, dt) = (S::from_f64(0.5), S::from_f64(1.0 / hz as f64));
+        let (gravity, wish) = (v::<S>([0.0, -9.81, 0.0]), v::<S>([2.0, 0.0, 0.4]));
+        let y = 0.5 / 50f64.to_radians().cos() + 0.05 - 5.0 * rise;
+        let mut me = Character::new(v::<S>([-5.0, y, 0.0]), r).unwrap();
+        for _ in 0..hz {
+            me.update(&level, wish, gravity, dt).unwrap();
+        }
+        let from = me.position.x.to_f64();
+        for frame in 0..3 * hz {
+            me.update(&level, wish, gravity, dt).unwrap();
+            assert!(
+                me.is_grounded(),
+                "{} {hz} Hz frame {frame}: off the floor",
+                S::NAME
+            );
+        }
+        let made = me.position.x.to_f64() - from;
+        let at = me.position;
+        assert!(made > 5.5, "{} {hz} Hz: made {made} at {at:?}", S::NAME);
+        let left = penetration(&level, me.position, r).unwrap();
+        assert!(left.is_none(), "{} {hz} Hz: {left:?}", S::NAME);
     }
-    let from = me.position.x.to_f64();
-    for frame in 0..180 {
-        me.update(&level, wish, gravity, dt).unwrap();
-        assert!(me.is_grounded(), "{} frame {frame}: off the floor", S::NAME);
-    }
-    let made = me.position.x.to_f64() - from;
-    assert!(made > 5.5, "{}: made {made} at {:?}", S::NAME, me.position);
-    let left = penetration(&level, me.position, r).unwrap();
-    assert!(left.is_none(), "{}: {left:?}", S::NAME);
 }
 
 macro_rules! per_scalar {

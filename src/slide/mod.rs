@@ -361,6 +361,7 @@ fn run<S: Scalar, G: Geometry<S> + ?Sized>(
     };
     let (mut rest, mut elapsed) = (displacement, S::ZERO);
     let mut planes: Planes<S> = walk.map(|w| w.floor).into_iter().collect();
+    let mut touched: Planes<S> = Vec::new();
     for slot in out.contacts.iter_mut() {
         if rest == zero {
             break;
@@ -384,7 +385,7 @@ fn run<S: Scalar, G: Geometry<S> + ?Sized>(
         let alpha = rules::stand_off(&hit, rest, skin, rounding).0;
         out.position = settle(scene, &hit, out.position, rest, (radius, skin), rounding);
         let left = rest.scale(S::ONE - alpha);
-        rest = if stop.is_some_and(|s| s.stops_at(&hit)) {
+        rest = if stop.is_some_and(|s| s.stops_at(&hit, &mut touched)) {
             zero
         } else if add_planes(&mut planes, &hit, ball.max_slope, |n| {
             // A walk's steep faces low enough to step over have their walls square on its
