@@ -195,6 +195,48 @@ fn walks_up_a_steep_ditch_pushed_into_one_side<S: Tolerance>() {
     }
 }
 
+/// Walking diagonally into a pocket of steep bumps (slopes near 60°), where the ball is held
+/// for good: from its second second on it rests. With walls square on the floor for faces but
+/// upright for edges, an edge's upright wall left the walk its rise on one frame and the face
+/// beside it its square wall on the next: the ball shook up and down by up to 4 mm every
+/// other frame (218 reversals in these 240 frames, every scalar).
+fn a_ball_wedged_in_a_pocket_of_steep_bumps_rests<S: Tolerance>() {
+    let f = |x: f64, z: f64| {
+        0.4 * ((1.7 * x + 0.3).sin() + (2.3 * z + x).cos() + 0.5 * (3.1 * (x + z)).sin())
+    };
+    let p = |x: f64, z: f64| v::<S>([x, f(x, z), z]);
+    let mut level: Scene<S, 128> = Scene::new();
+    for i in 0..8 {
+        for k in 0..8 {
+            let (x, z) = (-6.5 + 0.5 * i as f64, -3.5 + 0.5 * k as f64);
+            let (a, b, c, d) = (p(x, z), p(x, z + 0.5), p(x + 0.5, z + 0.5), p(x + 0.5, z));
+            level.push(Triangle::new(a, b, c)).unwrap();
+            level.push(Triangle::new(a, c, d)).unwrap();
+        }
+    }
+    let (r, dt) = (S::from_f64(0.5), S::from_f64(1.0 / 60.0));
+    let (gravity, wish) = (v::<S>([0.0, -9.81, 0.0]), v::<S>([1.414, 0.0, 1.414]));
+    let mut me = Character::new(v::<S>([-4.775, 0.06, -1.741]), r).unwrap();
+    let (mut reversals, mut last) = (0, 0.0f64);
+    for frame in 0..300 {
+        let before = me.position.y.to_f64();
+        me.update(&level, wish, gravity, dt).unwrap();
+        let dy = me.position.y.to_f64() - before;
+        if frame >= 60 && dy * last < 0.0 && dy.abs() > 1e-4 {
+            reversals += 1;
+        }
+        last = dy;
+    }
+    let at = me.position;
+    assert!(
+        reversals <= 5,
+        "{}: {reversals} reversals, at {at:?}",
+        S::NAME
+    );
+    let left = penetration(&level, me.position, r).unwrap();
+    assert!(left.is_none(), "{}: {left:?}", S::NAME);
+}
+
 macro_rules! per_scalar {
     ($($m:ident: $t:ty),*) => {$(mod $m {
         #[allow(unused_imports)]
@@ -214,6 +256,10 @@ macro_rules! per_scalar {
         #[test]
         fn walks_up_a_steep_ditch_pushed_into_one_side() {
             super::walks_up_a_steep_ditch_pushed_into_one_side::<$t>();
+        }
+        #[test]
+        fn a_ball_wedged_in_a_pocket_of_steep_bumps_rests() {
+            super::a_ball_wedged_in_a_pocket_of_steep_bumps_rests::<$t>();
         }
         #[test]
         fn walking_along_a_wall_across_a_valley_keeps_its_pace() {

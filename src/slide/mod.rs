@@ -28,7 +28,7 @@ mod slider;
 mod step;
 
 use crate::contact::unit;
-use crate::{Contact, Error, Geometry, Input, Scalar, SceneHit, Sweep, Vec3, check};
+use crate::{Error, Geometry, Input, Scalar, SceneHit, Sweep, Vec3, check};
 pub use character::Character;
 use heapless::Vec;
 use resolve::{resolve, settle};
@@ -388,15 +388,11 @@ fn run<S: Scalar, G: Geometry<S> + ?Sized>(
         rest = if stop.is_some_and(|s| s.stops_at(&hit, &mut touched)) {
             zero
         } else if add_planes(&mut planes, &hit, ball.max_slope, |n| {
-            // A walk's steep faces low enough to step over have their walls square on its
-            // floor. Walls keep upright ones (the walk keeps to the floor's plane against them
+            // A walk's steep contacts low enough to step over have their walls square on its
+            // floor. Walls keep upright ones: the walk keeps to the floor's plane against them
             // anyway, and a wall square on ground tilted along a wall leaning back has a
-            // skewed foot, along which a push into the wall crept: `tests/creases.rs`), and so
-            // do edges (a walk up a ramp into a ledge's edge rises onto it by the walk's rise
-            // an upright wall leaves it: `tests/steps.rs`).
-            let face = hit.contact == Contact::Face;
-            walk.filter(|w| face && w.steps_over(n, radius))
-                .map(|w| w.floor)
+            // skewed foot, along which a push into the wall crept (`tests/creases.rs`).
+            walk.filter(|w| w.steps_over(n, radius)).map(|w| w.floor)
         }) && keep_to_floor(&mut planes, &mut walk, &hit, radius)
         {
             constrain(left, &planes, displacement)

@@ -60,7 +60,7 @@ impl<S: Scalar> Slider<S> {
     /// slides down. Jolt's `CharacterVirtual` adds the same second constraint beyond its
     /// maximum slope angle, and Godot's `CharacterBody3D` calls it not sliding up steep slopes.
     /// Use [`Slider::clip`] to constrain a velocity the same way. In a walk along a floor
-    /// ([`walk`](Self::walk)), a steep face touched low enough to step over has its wall
+    /// ([`walk`](Self::walk)), a steep contact touched low enough to step over has its wall
     /// stand square on that floor instead (normal: `n`'s part across the floor's normal), so
     /// that what is left of the walk stays on the floor: it neither climbs a face leaning back
     /// by the rise of the ground towards it nor is held back walking up a steep-sided ditch.

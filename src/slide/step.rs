@@ -34,10 +34,11 @@ impl<S: Scalar> Slider<S> {
     ///
     /// Which ledges: heights are measured from the ball's lowest point where it stopped (on a
     /// slope running up to a riser, that is below the slope's top). A ledge up to `height`
-    /// with a floor beyond it is climbed at any speed. The ball rises by `height`, and, as the
-    /// walk alone climbs `r (1 - min_cos)` (with the ball's own slope limit at `min_cos`, as in
-    /// the README's recipe), a move across long enough climbs ledges up to
-    /// `height + r (1 - min_cos)`; higher ones stop it as a wall would.
+    /// with a floor beyond it is climbed at any speed. The ball rises by `height` and by what
+    /// the walk itself rises (up a ramp to a ledge at its top), and, as the walk alone climbs
+    /// `r (1 - min_cos)` (with the ball's own slope limit at `min_cos`, as in the README's
+    /// recipe), a move across long enough climbs ledges up to `height + r (1 - min_cos)` above
+    /// that; higher ones stop it as a wall would.
     ///
     /// The lowering stops at the first thing below, a skin short of it (a slide would carry a
     /// ball landed on a walkable part of an edge down it, off the ledge). A stepped move's
@@ -215,7 +216,10 @@ impl<S: Scalar> Slider<S> {
             let Some((_, into)) = lowest.and_then(|(i, _)| risers.get_mut(i)?.take()) else {
                 break;
             };
-            let stepped = self.stepped(scene, start, displacement, into, (up_unit, cos), height);
+            // Lifted by the walk's own rise too, which the contacts it may step over allow
+            // for: the move across, blocked at the edge, would not rise by it.
+            let lift = height + rising;
+            let stepped = self.stepped(scene, start, displacement, into, (up_unit, cos), lift);
             // Past where the walk stopped, across what stopped it (not merely higher: a wall
             // beside an up-slope), and farther along the walk (measured along its unit
             // direction: fixed-point products of two short vectors round to zero).
