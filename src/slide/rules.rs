@@ -269,14 +269,23 @@ pub(super) fn constrain<S: Scalar>(v: Vec3<S>, planes: &[Vec3<S>], primal: Vec3<
     if clear(v) {
         return v;
     }
-    let slides = planes.iter().map(|n| {
-        let into = S::dot(v, *n);
-        (if into < S::ZERO { v - n.scale(into) } else { v }, None)
-    });
     // The rounding of a product of unit normals, from those of the frames they come from: the
     // tie window's four steps, twice.
     let tie = crate::scalar::tie::<S>();
     let skew = S::ZERO - (tie + tie);
+    // In fixed point, whose allowance above holds a height's rounding of eight steps however
+    // short the motion, a slide that runs into another plane beyond the rounding of the
+    // normals times the motion and of a product is none: within the allowance, an `I16F16`
+    // walk slid up a steep face into the wall square on the floor beside it by a few steps
+    // every frame, pressed back down the next (a jitter). Floats' allowance is relative.
+    let bound = skew.mul(magnitude(v)) - steps;
+    let fixed = !S::PRECISION.relative;
+    let slides = planes.iter().map(move |n| {
+        let into = S::dot(v, *n);
+        let w = if into < S::ZERO { v - n.scale(into) } else { v };
+        let dips = fixed && planes.iter().any(|p| p != n && S::dot(w, *p) < bound);
+        (if dips { zero } else { w }, None)
+    });
     let creases = planes.iter().enumerate().flat_map(|(i, a)| {
         // The planes after `a` (`get`: no indexing, so no panic path for the link check).
         let later = planes.get(i + 1..).unwrap_or_default();
