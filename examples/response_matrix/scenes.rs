@@ -2,6 +2,8 @@
 //! triangle lists, with where the ball starts, what it wishes and the heading progress is
 //! measured along.
 
+use std::f64::consts::FRAC_1_SQRT_2;
+
 pub type Tri = [[f64; 3]; 3];
 pub type P = [f64; 3];
 
@@ -222,6 +224,39 @@ pub fn cases() -> Vec<Case> {
             heading: [1.0, 0.0, 0.0],
         });
     }
+    // A ditch with a walkable side (the floor) and a steep one, walked along pushing into the
+    // steep side; and a pocket of steep bumps walked into diagonally (held there: stuck frames
+    // are expected, a zig is a shake).
+    for (low, high) in [(20.0, 60.0), (35.0, 75.0)] {
+        let mut t = Vec::new();
+        let y = move |_: f64, z: f64| {
+            if z < 0.0 {
+                -tan(low) * z
+            } else {
+                tan(high) * z
+            }
+        };
+        ground(&mut t, &y, 0.5);
+        out.push(Case {
+            name: format!("ditch sides {low}/{high} along the steep side"),
+            tris: t,
+            start: [-5.0, 0.7, 0.0],
+            wish: [2.0, 0.0, 0.4],
+            heading: [1.0, 0.0, 0.0],
+        });
+    }
+    let mut t = Vec::new();
+    let steep = |x: f64, z: f64| {
+        0.4 * ((1.7 * x + 0.3).sin() + (2.3 * z + x).cos() + 0.5 * (3.1 * (x + z)).sin())
+    };
+    ground(&mut t, &steep, 0.5);
+    out.push(Case {
+        name: "pocket of steep bumps".into(),
+        tris: t,
+        start: [-4.775, 0.3, -1.741],
+        wish: [1.414, 0.0, 1.414],
+        heading: [FRAC_1_SQRT_2, 0.0, FRAC_1_SQRT_2],
+    });
     // Standing still on slopes: progress is a creep down them.
     for slope in [5.0, 20.0, 40.0] {
         let mut t = Vec::new();
