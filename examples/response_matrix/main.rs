@@ -1,9 +1,10 @@
 //! A matrix of character scenes for judging a change to the response: walls leaning back or
 //! over, inside corners and convex edges, stairs up and down, V-shaped and lopsided ditches,
-//! bumpy ground beside a wall, a pocket of steep bumps and standing still on slopes, each run through `slide::Character` in `f64`,
-//! `f32` and `I16F16` at 60 to 960 Hz (a few seconds on two cores). A rule that stops a ball in
-//! one scene often makes another jitter or stick, which a test of the scene at hand does not
-//! show: run the matrix before and after a change to the response, and compare.
+//! bumpy ground beside a wall, a pocket of steep bumps and standing still on slopes, each run
+//! through `slide::Character` in `f64`, `f32` and `I16F16` at 60 to 960 Hz (a few seconds on
+//! two cores). A rule that stops a ball in one scene often makes another jitter or stick,
+//! which a test of the scene at hand does not show: run the matrix before and after a change
+//! to the response, and compare.
 //!
 //! ```sh
 //! cargo run --release --example response_matrix > before.txt   # on the old code
