@@ -61,9 +61,12 @@ fn groups<S: Scalar, I: MeshIndex + Default>(
         vec![I::default(); n],
         vec![0u8; n],
     );
-    let compact = CompactMesh::compact(mesh, vertices, indices, &mut t, &mut o, &mut b).unwrap();
-    let bytes =
-        size_of_val(mesh.nodes()) + size_of_val(vertices.as_slice()) + n * (4 * size_of::<I>() + 1);
+    // The compact mesh borrows the tree with leaves of four, the smallest.
+    let small = level.small_tree_mesh();
+    let compact = CompactMesh::compact(&small, vertices, indices, &mut t, &mut o, &mut b).unwrap();
+    let bytes = size_of_val(small.nodes())
+        + size_of_val(vertices.as_slice())
+        + n * (4 * size_of::<I>() + 1);
     eprintln!(
         "{name} {n} triangles: compact mesh {:.1} bytes per triangle ({}-byte indices)",
         bytes as f64 / n as f64,

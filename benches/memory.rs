@@ -41,7 +41,9 @@ fn compact<S: Scalar, I: MeshIndex + Default>(
         vec![0u8; n],
     );
     let (v, i) = (&level.vertices, &level.indices);
-    let c = CompactMesh::compact(mesh, v, i, &mut t, &mut o, &mut b).unwrap();
+    // The compact mesh borrows the tree with leaves of four, the smallest.
+    let small = level.small_tree_mesh();
+    let c = CompactMesh::compact(&small, v, i, &mut t, &mut o, &mut b).unwrap();
     let (nodes, _, vertices, triangles, order, bytes, _) = c.parts();
     size_of_val(nodes)
         + size_of_val(vertices)

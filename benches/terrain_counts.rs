@@ -71,7 +71,9 @@ fn compact<S: Scalar, I: MeshIndex + Default>(
         vec![0u8; n],
     );
     let (v, i) = (&level.vertices, &level.indices);
-    let compact = CompactMesh::compact(mesh, v, i, &mut t, &mut o, &mut b).unwrap();
+    // The compact mesh borrows the tree with leaves of four, the smallest.
+    let small = level.small_tree_mesh();
+    let compact = CompactMesh::compact(&small, v, i, &mut t, &mut o, &mut b).unwrap();
     assert_eq!(short_compact(&compact, short), hits.0);
     assert_eq!(long_compact(&compact, long), hits.1);
 }

@@ -4,7 +4,7 @@
 //! both I16F16 meshes in flash; and the compact forms of `forms` (`src/forms.rs`): `compact.rs`
 //! (the arena as a `CompactMesh`) and `terrain.rs` (a 64 × 64 `Heightfield`). A bad level fails
 //! the build with the loader's message.
-use ballcast::bvh::nodes_for;
+use ballcast::bvh::{LeafSize, nodes_for};
 use ballcast::{CompactMesh, Degenerates, Heightfield, Mesh, Node, Vec3};
 use fixed::types::I16F16;
 use std::fmt::Write as _;
@@ -50,9 +50,10 @@ fn compact() -> String {
     let n = tris.len();
     let (mut nodes, mut prepared) = (vec![Node::default(); nodes_for(n)], vec![Mesh::filler(); n]);
     let (mut order, mut scratch) = (vec![0u32; n], vec![0u64; 6 * n]);
+    // Leaves of four: the smallest tree, which the compact mesh borrows.
     let (mesh, _) = Mesh::build(
         &tris,
-        Degenerates::Skip,
+        Degenerates::Skip.with_leaf_size(LeafSize::Four),
         &mut nodes,
         &mut prepared,
         &mut order,

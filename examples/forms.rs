@@ -7,7 +7,7 @@
 //!
 //! Run: `cargo run --release --example forms`
 
-use ballcast::bvh::nodes_for;
+use ballcast::bvh::{LeafSize, nodes_for};
 use ballcast::{CompactMesh, Compound, Degenerates, Heightfield, Mesh, Node, Vec3};
 use fixed::types::I16F16;
 
@@ -25,9 +25,10 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let n = tris.len();
     let (mut nodes, mut prepared) = (vec![Node::default(); nodes_for(n)], vec![Mesh::filler(); n]);
     let (mut order, mut scratch) = (vec![0u32; n], vec![0u64; 6 * n]);
+    // Leaves of four: the smallest tree, which the compact mesh borrows.
     let (mesh, _) = Mesh::build(
         &tris,
-        Degenerates::Skip,
+        Degenerates::Skip.with_leaf_size(LeafSize::Four),
         &mut nodes,
         &mut prepared,
         &mut order,

@@ -14,16 +14,22 @@
 //! parent are the compressed wide BVH's (Ylitie, Karras and Laine, *Efficient incoherent ray
 //! traversal on GPUs through compressed wide BVHs*, HPG 2017). Here the arithmetic is integer,
 //! so decoding is exact and the same on every target. A leaf is a run of at most [`LEAF`]
-//! consecutive triangles, referenced from its parent's child slot, whose top bits also carry the
-//! subtree's *seam class* (below). The boxes are stored bound by bound (the four children's
+//! consecutive triangles (the build makes leaves of up to two, or four: [`LeafSize`]),
+//! referenced from its parent's child slot, whose top bits also carry the subtree's *seam
+//! class* (below). The boxes are stored bound by bound (the four children's
 //! minima in x, then in y, ...), so the traversal loads one bound of all four children at once.
-//! A node costs 44 bytes per about 12 triangles: 3.7 bytes per triangle, in every scalar.
+//! A node costs 44 bytes per about 6 triangles with leaves of two (7.3 bytes per triangle, in
+//! every scalar), per about 12 with leaves of four (3.7 bytes). Leaves of two test fewer
+//! triangles that are near but out of reach (a short move on a terrain of 10^5 triangles: about
+//! 8 instead of 13), which saves more than the extra nodes cost: such queries take about 0.85
+//! times as long, long casts about 0.8 times; a compact mesh, whose triangles are small and
+//! whose tree is a large share of its memory, takes leaves of four.
 //!
 //! # Build
 //! Top down, a node's triangles are split at the median of their box centres along the longest
 //! axis of the node's box, and each half again along its own longest axis (of the node's box cut
 //! at the median), into up to four runs, each (but the last) as long as a complete subtree one
-//! level down holds, so leaves are full and a node is shared by about `3 LEAF` triangles (Jolt's
+//! level down holds, so leaves are full and a node is shared by about three leaves' triangles (Jolt's
 //! `AABBTreeBuilder` likewise gathers a binary tree's descendants into quad-tree nodes).
 //! Splitting into equal counts along the longest axis is pbrt's *equal counts* method (Pharr,
 //! Jakob and Humphreys, *Physically Based Rendering*, 4th ed., 7.3). Each triangle is one
@@ -31,7 +37,7 @@
 //! its index; each split rotates the split axis's centre to the top of the keys and selects
 //! (`select_nth_unstable`, `O(n)`) by the whole key: the centre on that axis, the other two, the
 //! index. So each level costs `O(N)`, the build `O(N log N)`, and the depth is at most
-//! `log4(N / LEAF) + 1`, which bounds the traversal stack. Keys and boxes are integers and the
+//! `log4(N / 2) + 1`, which bounds the traversal stack. Keys and boxes are integers and the
 //! order is total, so every split is exact: the same triangles in the same order give the same
 //! nodes, byte for byte, on every target, whatever algorithm makes the selection. Equal counts
 //! give up some of the quality of binned SAH (Wald, *On fast construction of SAH-based bounding
@@ -97,15 +103,40 @@ mod traverse;
 
 use crate::{Scalar, Triangle, Vec3};
 
-pub use build::nodes_for;
 pub(crate) use build::{BuildError, build, item, key_index, set_classes};
+pub use build::{nodes_for, nodes_for_leaves};
 pub(crate) use overlap::{overlapping, query_cells};
 pub(crate) use short::unit_pad;
 pub(crate) use traverse::{leaf_slots, leaves_along, rounding_pad};
 
-/// Most triangles in a leaf.
+/// Most triangles in a leaf of any tree (a leaf reference holds its count in two bits).
 pub const LEAF: usize = 4;
-/// Deepest tree the traversal's stack is sized for: `log4(2^24 / LEAF) + 1 = 12` levels suffice
+
+/// How many triangles the build puts in a leaf: the tree's memory against the triangles a query
+/// tests. Queries test every triangle of the leaves they reach, so smaller leaves test fewer
+/// triangles that are near but out of reach, for about twice the nodes.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum LeafSize {
+    /// Up to two triangles a leaf: about 7.3 bytes of tree per triangle, the fastest queries.
+    #[default]
+    Two,
+    /// Up to four: about 3.7 bytes of tree per triangle, for the smallest meshes (a
+    /// [`CompactMesh`](crate::CompactMesh) borrows its mesh's tree); queries test about 1.5
+    /// times the triangles.
+    Four,
+}
+
+impl LeafSize {
+    /// The most triangles in a leaf.
+    pub const fn triangles(self) -> usize {
+        match self {
+            LeafSize::Two => 2,
+            LeafSize::Four => 4,
+        }
+    }
+}
+
+/// Deepest tree the traversal's stack is sized for: `log4(2^24 / 2) + 1 = 13` levels suffice
 /// for the largest mesh the build accepts.
 pub const MAX_DEPTH: usize = 16;
 /// Entries of the traversal stack: three siblings wait per level, plus the root.

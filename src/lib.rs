@@ -156,7 +156,7 @@ pub use face::standard_face;
 pub use heightfield::{Heightfield, HeightfieldError};
 pub use hit::{Contact, Hit};
 pub use merge::PLANES;
-pub use mesh::{Buffer, Degenerates, Mesh, MeshError};
+pub use mesh::{Buffer, Degenerates, Mesh, MeshError, MeshOptions};
 #[cfg(feature = "alloc")]
 pub use mesh_buf::MeshBuf;
 pub use penetration::{Penetration, penetration};

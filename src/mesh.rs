@@ -3,7 +3,7 @@
 
 mod build;
 
-use crate::bvh::{self, Grid, Node};
+use crate::bvh::{self, Grid, LeafSize, Node};
 use crate::compound::CompoundPart;
 use crate::merge::{Earliest, earliest_of};
 use crate::{Error, Features, Geometry, Parts, Scalar, SceneHit, StandardTriangle, Sweep};
@@ -58,10 +58,44 @@ pub enum Degenerates {
     Skip,
 }
 
+/// How [`Mesh::build`] builds: what it does with degenerate triangles, and how many triangles a
+/// leaf of its tree holds. A [`Degenerates`] converts to the options with the default
+/// [`LeafSize::Two`], so `Mesh::build(&triangles, Degenerates::Skip, ...)` takes it as it is.
+///
+/// ```
+/// use ballcast::{bvh::LeafSize, Degenerates, MeshOptions};
+/// // The smallest tree, for a compact mesh that will borrow it.
+/// let options = Degenerates::Refuse.with_leaf_size(LeafSize::Four);
+/// assert_eq!(options, MeshOptions { degenerates: Degenerates::Refuse, leaf_size: LeafSize::Four });
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct MeshOptions {
+    /// What to do with a degenerate triangle.
+    pub degenerates: Degenerates,
+    /// The most triangles in a leaf of the tree.
+    pub leaf_size: LeafSize,
+}
+
+impl Degenerates {
+    /// These options with leaves of `leaf_size`.
+    pub const fn with_leaf_size(self, leaf_size: LeafSize) -> MeshOptions {
+        MeshOptions {
+            degenerates: self,
+            leaf_size,
+        }
+    }
+}
+
+impl From<Degenerates> for MeshOptions {
+    fn from(degenerates: Degenerates) -> Self {
+        degenerates.with_leaf_size(LeafSize::Two)
+    }
+}
+
 /// Which buffer given to [`Mesh::build`] was too small.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Buffer {
-    /// The nodes: [`nodes_for`](crate::bvh::nodes_for) of the triangles kept.
+    /// The nodes: [`nodes_for_leaves`](crate::bvh::nodes_for_leaves) of the triangles kept.
     Nodes,
     /// The prepared triangles: one per input triangle.
     Triangles,
@@ -212,7 +246,7 @@ impl<'a, S: Scalar> Mesh<'a, S> {
     pub fn verify(
         &self,
         sources: &[Triangle<S>],
-        degenerates: Degenerates,
+        options: impl Into<MeshOptions>,
         nodes: &mut [Node],
         triangles: &mut [StandardTriangle<S>],
         order: &mut [u32],
@@ -221,7 +255,7 @@ impl<'a, S: Scalar> Mesh<'a, S> {
         self.verify_sided(
             sources,
             |_| false,
-            degenerates,
+            options,
             nodes,
             triangles,
             order,
@@ -235,20 +269,14 @@ impl<'a, S: Scalar> Mesh<'a, S> {
         &self,
         sources: &[Triangle<S>],
         two_sided: impl Fn(usize) -> bool,
-        degenerates: Degenerates,
+        options: impl Into<MeshOptions>,
         nodes: &mut [Node],
         triangles: &mut [StandardTriangle<S>],
         order: &mut [u32],
         scratch: &mut [u64],
     ) -> Result<(), MeshError> {
         let (built, _) = Mesh::build_sided(
-            sources,
-            two_sided,
-            degenerates,
-            nodes,
-            triangles,
-            order,
-            scratch,
+            sources, two_sided, options, nodes, triangles, order, scratch,
         )?;
         let mut pairs = built.triangles.iter().zip(self.triangles);
         let identical = pairs.all(|(a, b)| a.to_parts().identical(&b.to_parts()));

@@ -2,10 +2,10 @@
 
 use crate::Triangle;
 use crate::Vec3;
-use crate::bvh::{Grid, Node, nodes_for};
+use crate::bvh::{Grid, Node, nodes_for_leaves};
 use crate::compound::CompoundPart;
 use crate::merge::Earliest;
-use crate::{Degenerates, Geometry, Mesh, MeshError, Scalar, SceneHit, StandardTriangle, Sweep};
+use crate::{Geometry, Mesh, MeshError, MeshOptions, Scalar, SceneHit, StandardTriangle, Sweep};
 use alloc::vec;
 use alloc::vec::Vec;
 
@@ -35,8 +35,11 @@ impl<S: Scalar> MeshBuf<S> {
     /// Builds the mesh of `sources` as [`Mesh::build`] does, into buffers it allocates.
     ///
     /// Errors: those of [`Mesh::build`] (never [`MeshError::Capacity`]).
-    pub fn build(sources: &[Triangle<S>], degenerates: Degenerates) -> Result<Self, MeshError> {
-        Self::build_sided(sources, |_| false, degenerates)
+    pub fn build(
+        sources: &[Triangle<S>],
+        options: impl Into<MeshOptions>,
+    ) -> Result<Self, MeshError> {
+        Self::build_sided(sources, |_| false, options)
     }
 
     /// [`build`](Self::build) as [`Mesh::build_sided`] builds: the triangles for which
@@ -44,10 +47,11 @@ impl<S: Scalar> MeshBuf<S> {
     pub fn build_sided(
         sources: &[Triangle<S>],
         two_sided: impl Fn(usize) -> bool,
-        degenerates: Degenerates,
+        options: impl Into<MeshOptions>,
     ) -> Result<Self, MeshError> {
+        let options = options.into();
         let n = sources.len();
-        let mut nodes = vec![Node::default(); nodes_for(n)];
+        let mut nodes = vec![Node::default(); nodes_for_leaves(n, options.leaf_size)];
         let mut triangles = vec![Mesh::<S>::filler(); n];
         let mut order = vec![0u32; n];
         let mut scratch = vec![0u64; 6 * n];
@@ -55,7 +59,7 @@ impl<S: Scalar> MeshBuf<S> {
             let (mesh, skipped) = Mesh::build_sided(
                 sources,
                 two_sided,
-                degenerates,
+                options,
                 &mut nodes,
                 &mut triangles,
                 &mut order,

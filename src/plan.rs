@@ -47,7 +47,8 @@
 //! against a reference that uses the same rounded constants; `tests/plan.rs` checks the
 //! `speed × time × rounding of dt` figure against a run.
 
-use crate::{Node, Scalar, StandardTriangle, Vec3, bvh::nodes_for};
+use crate::bvh::{LeafSize, nodes_for_leaves};
+use crate::{Node, Scalar, StandardTriangle, Vec3};
 use core::mem::size_of;
 use fixed::types::{I16F16, I32F32};
 
@@ -270,9 +271,11 @@ impl Verdict {
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Memory {
-    /// A [`Mesh`](crate::Mesh): prepared triangles, their input order and the tree's nodes.
+    /// A [`Mesh`](crate::Mesh): prepared triangles, their input order and the tree's nodes
+    /// (leaves of up to two triangles, the default).
     pub mesh: usize,
-    /// A [`CompactMesh`](crate::CompactMesh): the same nodes, the shared vertices, and per
+    /// A [`CompactMesh`](crate::CompactMesh): the nodes of a tree with leaves of up to four
+    /// triangles, the shared vertices, and per
     /// triangle three vertex indices, its input index and a byte (`u16` indices where vertices
     /// and triangles number at most 65 536, else `u32`).
     pub compact: usize,
@@ -298,15 +301,19 @@ impl Memory {
             ),
             ScalarType::F64 => (size_of::<StandardTriangle<f64>>(), size_of::<Vec3<f64>>()),
         };
-        let nodes = nodes_for(triangles).saturating_mul(size_of::<Node>());
+        let node = size_of::<Node>();
+        let (tree, small_tree) = (
+            nodes_for_leaves(triangles, LeafSize::Two).saturating_mul(node),
+            nodes_for_leaves(triangles, LeafSize::Four).saturating_mul(node),
+        );
         let index = if triangles <= 1 << 16 && vertices <= 1 << 16 {
             2
         } else {
             4
         };
         Self {
-            mesh: nodes.saturating_add(triangles.saturating_mul(prepared + 4)),
-            compact: nodes
+            mesh: tree.saturating_add(triangles.saturating_mul(prepared + 4)),
+            compact: small_tree
                 .saturating_add(vertices.saturating_mul(vertex))
                 .saturating_add(triangles.saturating_mul(4 * index + 1)),
             heightfield: vertices.saturating_mul(2).saturating_add(triangles / 2),

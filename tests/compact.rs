@@ -6,6 +6,7 @@
 mod common;
 mod meshes;
 
+use ballcast::bvh::LeafSize;
 use ballcast::penetration::penetration;
 use ballcast::plan::Memory;
 use ballcast::winding::winding;
@@ -106,9 +107,15 @@ fn memory_is_what_the_builds_make<S: Scalar>() {
     let owned = build(&input, Degenerates::Refuse).unwrap();
     let mesh = owned.mesh();
     let n = mesh.len();
+    // The compact form counted on the tree of leaves of four, the smallest.
+    let four = Degenerates::Refuse.with_leaf_size(LeafSize::Four);
+    let small = build(&input, four).unwrap();
     let (mut t, mut o, mut b) = (vec![[0u16; 3]; n], vec![0u16; n], vec![0u8; n]);
-    let compact = CompactMesh::compact(&mesh, &vertices, &indices, &mut t, &mut o, &mut b).unwrap();
+    let small = small.mesh();
+    let compact =
+        CompactMesh::compact(&small, &vertices, &indices, &mut t, &mut o, &mut b).unwrap();
     let (nodes, _, v, tris, order, bytes, _) = compact.parts();
+    assert!(size_of_val(nodes) < size_of_val(mesh.nodes()));
     let heights = vec![0i16; 13 * 13];
     let mut cells = vec![0u8; 144];
     let one = S::ONE;

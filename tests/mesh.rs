@@ -6,7 +6,7 @@
 mod common;
 mod meshes;
 
-use ballcast::bvh::nodes_for;
+use ballcast::bvh::{LeafSize, nodes_for};
 use ballcast::penetration::{Penetration, penetration};
 use ballcast::winding::winding;
 use ballcast::{
@@ -374,12 +374,13 @@ fn deterministic<S: Scalar>() {
     assert!(hits > 30);
 }
 
-/// A hash of every byte of a built mesh, pinned: the same in debug and release, on every target.
-fn pinned_bytes<S: Scalar>() -> u64 {
+/// A hash of every byte of a mesh built with leaves of `leaves`, pinned: the same in debug and
+/// release, on every target.
+fn pinned_bytes<S: Scalar>(leaves: LeafSize) -> u64 {
     let mut rng = Rng(0x5eed_0004);
     let src = heightfield(&mut rng, 10, 1.0, 0.65);
     let input: Vec<Triangle<S>> = src.iter().map(|&t| tri(t)).collect();
-    let m = build(&input, Degenerates::Refuse).unwrap();
+    let m = build(&input, Degenerates::Refuse.with_leaf_size(leaves)).unwrap();
     let parts: Vec<_> = m.tris.iter().map(|t| t.to_parts()).collect();
     let text = format!("{:?}{:?}{:?}{:?}", m.nodes, m.order, m.grid, parts);
     text.bytes().fold(0xcbf2_9ce4_8422_2325u64, |h, b| {
@@ -389,16 +390,27 @@ fn pinned_bytes<S: Scalar>() -> u64 {
 
 #[test]
 fn same_bytes_everywhere() {
-    let got = [
-        pinned_bytes::<f32>(),
-        pinned_bytes::<f64>(),
-        pinned_bytes::<I16F16>(),
-        pinned_bytes::<I32F32>(),
-    ];
-    assert_eq!(got, PINNED, "{got:#x?}");
+    for (leaves, pinned) in [(LeafSize::Two, PINNED), (LeafSize::Four, PINNED_FOUR)] {
+        let got = [
+            pinned_bytes::<f32>(leaves),
+            pinned_bytes::<f64>(leaves),
+            pinned_bytes::<I16F16>(leaves),
+            pinned_bytes::<I32F32>(leaves),
+        ];
+        assert_eq!(got, pinned, "{leaves:?} {got:#x?}");
+    }
 }
 
+/// Leaves of up to two triangles, the default.
 const PINNED: [u64; 4] = [
+    0x1062ac13936f01f4,
+    0x8a0aa186f5ae4bb2,
+    0xcf6ccb005fd3946f,
+    0xe89fdf7b3e270a24,
+];
+
+/// Leaves of up to four: the bytes every mesh had before leaves of two became the default.
+const PINNED_FOUR: [u64; 4] = [
     0x23c2fb8c027cd522,
     0xd647571cf4d6345e,
     0xfa6e75875f87dacb,

@@ -82,12 +82,15 @@ fn planner_refuses_what_overflows() {
     // Sizes beyond memory saturate, at once (nodes are counted in O(log² n)).
     let huge = ballcast::plan::Memory::of(ballcast::plan::ScalarType::F64, usize::MAX / 8, 3);
     assert_eq!(huge.mesh, usize::MAX);
+    use ballcast::bvh::{LeafSize, nodes_for, nodes_for_leaves};
     for n in (0..5000).chain([1 << 24, (1 << 40) + 12_345]) {
-        assert_eq!(
-            ballcast::bvh::nodes_for(n),
-            nodes_for_by_recursion(n),
-            "{n}"
-        );
+        for leaves in [LeafSize::Two, LeafSize::Four] {
+            let by_recursion = nodes_for_by_recursion(n, leaves.triangles());
+            assert_eq!(nodes_for_leaves(n, leaves), by_recursion, "{n} {leaves:?}");
+        }
+        // The default's count is enough for every leaf size.
+        assert_eq!(nodes_for(n), nodes_for_leaves(n, LeafSize::Two));
+        assert!(nodes_for(n) >= nodes_for_leaves(n, LeafSize::Four), "{n}");
     }
     // Cheaper scalars show larger errors on the same scene.
     let v = ballcast::plan(100.0, 1.0, 10.0);
@@ -177,23 +180,23 @@ fn drift_from_rounded_dt_is_speed_times_time_times_its_rounding() {
     );
 }
 
-/// `nodes_for` as the build makes nodes, child by child: the closed count must agree with it.
-fn nodes_for_by_recursion(n: usize) -> usize {
+/// `nodes_for_leaves` as the build makes nodes, child by child, for leaves of up to `leaf`
+/// triangles: the closed count must agree with it.
+fn nodes_for_by_recursion(n: usize, leaf: usize) -> usize {
     if n == 0 {
         return 0;
     }
-    let leaf = ballcast::bvh::LEAF;
     let leaves = n.div_ceil(leaf);
     let mut per = 1;
     while per * 4 < leaves {
         per *= 4;
     }
-    // Complete children alike: at most three of size `per * LEAF`, then the rest.
+    // Complete children alike: at most three of size `per * leaf`, then the rest.
     let (full, rest) = (per * leaf, n % (per * leaf));
     let k = (n / full).min(4);
     let child = |m: usize| {
         if m > leaf {
-            nodes_for_by_recursion(m)
+            nodes_for_by_recursion(m, leaf)
         } else {
             0
         }

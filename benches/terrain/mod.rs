@@ -87,11 +87,48 @@ pub struct Level<S: ballcast::Scalar> {
     pub triangles: Vec<ballcast::Triangle<S>>,
     pub vertices: Vec<ballcast::Vec3<S>>,
     pub indices: Vec<[u32; 3]>,
-    /// The prepared mesh of the same triangles: nodes, prepared triangles, order and grid.
+    /// The prepared meshes of the same triangles, with leaves of up to two triangles (the
+    /// default) and of four (the tree a compact mesh borrows).
+    meshes: [Prepared<S>; 2],
+}
+
+/// A prepared mesh's parts: nodes, prepared triangles, order and grid.
+struct Prepared<S: ballcast::Scalar> {
     nodes: Vec<ballcast::Node>,
-    prepared: Vec<ballcast::StandardTriangle<S>>,
+    triangles: Vec<ballcast::StandardTriangle<S>>,
     order: Vec<u32>,
     grid: ballcast::Grid,
+}
+
+impl<S: ballcast::Scalar> Prepared<S> {
+    fn build(triangles: &[ballcast::Triangle<S>], leaves: ballcast::bvh::LeafSize) -> Self {
+        let n = triangles.len();
+        let mut nodes = vec![ballcast::Node::default(); ballcast::bvh::nodes_for(n)];
+        let mut prepared = vec![ballcast::Mesh::<S>::filler(); n];
+        let (mut order, mut scratch) = (vec![0u32; n], vec![0u64; 6 * n]);
+        let options = ballcast::Degenerates::Refuse.with_leaf_size(leaves);
+        let (mesh, _) = ballcast::Mesh::build(
+            triangles,
+            options,
+            &mut nodes,
+            &mut prepared,
+            &mut order,
+            &mut scratch,
+        )
+        .unwrap();
+        let (used, grid) = (mesh.nodes().len(), mesh.grid());
+        nodes.truncate(used);
+        Self {
+            nodes,
+            triangles: prepared,
+            order,
+            grid,
+        }
+    }
+
+    fn mesh(&self) -> ballcast::Mesh<'_, S> {
+        ballcast::Mesh::from_parts(&self.nodes, &self.triangles, &self.order, self.grid)
+    }
 }
 
 impl<S: ballcast::Scalar> Level<S> {
@@ -127,22 +164,8 @@ impl<S: ballcast::Scalar> Level<S> {
                 }
             })
             .collect();
-        let n = 2 * w * w;
-        let mut nodes = vec![ballcast::Node::default(); ballcast::bvh::nodes_for(n)];
-        let mut prepared = vec![ballcast::Mesh::<S>::filler(); n];
-        let (mut order, mut scratch) = (vec![0u32; n], vec![0u64; 6 * n]);
-        let refuse = ballcast::Degenerates::Refuse;
-        let (mesh, _) = ballcast::Mesh::build(
-            &triangles,
-            refuse,
-            &mut nodes,
-            &mut prepared,
-            &mut order,
-            &mut scratch,
-        )
-        .unwrap();
-        let (used, grid) = (mesh.nodes().len(), mesh.grid());
-        nodes.truncate(used);
+        use ballcast::bvh::LeafSize;
+        let meshes = [LeafSize::Two, LeafSize::Four].map(|l| Prepared::build(&triangles, l));
         Self {
             w,
             heights,
@@ -152,16 +175,18 @@ impl<S: ballcast::Scalar> Level<S> {
             triangles,
             vertices,
             indices,
-            nodes,
-            prepared,
-            order,
-            grid,
+            meshes,
         }
     }
 
-    /// The prepared mesh of the level's triangles.
+    /// The prepared mesh of the level's triangles (leaves of up to two triangles).
     pub fn mesh(&self) -> ballcast::Mesh<'_, S> {
-        ballcast::Mesh::from_parts(&self.nodes, &self.prepared, &self.order, self.grid)
+        self.meshes[0].mesh()
+    }
+
+    /// The prepared mesh with leaves of up to four triangles, whose tree a compact mesh borrows.
+    pub fn small_tree_mesh(&self) -> ballcast::Mesh<'_, S> {
+        self.meshes[1].mesh()
     }
 
     fn build<'a>(

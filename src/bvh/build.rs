@@ -2,7 +2,7 @@
 //! the module docs of [`bvh`](super)).
 
 use super::{
-    CLASS_SHIFT, Cells, LEAF, LEAF_FLAG, MAX_CLASS, MAX_DEPTH, Node, PAYLOAD, STACK, leaf_slots,
+    CLASS_SHIFT, Cells, LEAF_FLAG, LeafSize, MAX_CLASS, MAX_DEPTH, Node, PAYLOAD, STACK, leaf_slots,
 };
 
 /// Why a tree could not be built.
@@ -14,17 +14,18 @@ pub(crate) enum BuildError {
     Depth,
 }
 
-/// The sizes of the up to four children of a node over `n > 0` items (zeros unused): each takes
-/// as many as a complete subtree one level down holds (`LEAF * 4^k` for the smallest `k` with
-/// `4^(k+1)` leaves enough for all), the last what remains. Every subtree but the last at each
-/// level is complete, so a mesh of `N` triangles needs about `N / (3 LEAF)` nodes.
-const fn parts(n: usize) -> [usize; 4] {
-    let leaves = n.div_ceil(LEAF);
+/// The sizes of the up to four children of a node over `n > 0` items (zeros unused), for
+/// leaves of up to `leaf` items: each takes as many as a complete subtree one level down holds
+/// (`leaf * 4^k` for the smallest `k` with `4^(k+1)` leaves enough for all), the last what
+/// remains. Every subtree but the last at each level is complete, so a mesh of `N` triangles
+/// needs about `N / (3 leaf)` nodes.
+const fn parts(n: usize, leaf: usize) -> [usize; 4] {
+    let leaves = n.div_ceil(leaf);
     let mut per = 1;
     while per * 4 < leaves {
         per *= 4;
     }
-    let per = per * LEAF;
+    let per = per * leaf;
     let mut out = [0; 4];
     let (mut k, mut left) = (0, n);
     while k < 4 {
@@ -35,21 +36,28 @@ const fn parts(n: usize) -> [usize; 4] {
     out
 }
 
-/// Nodes the build makes for `n` triangles (zero for none): size the node slice with it.
-/// `O(log² n)`: a node's complete children are alike, so one of them is counted for all.
+/// Nodes the build makes for `n` triangles (zero for none) with the default
+/// [`LeafSize::Two`]: size the node slice with it (it is enough for every leaf size).
 pub const fn nodes_for(n: usize) -> usize {
+    nodes_for_leaves(n, LeafSize::Two)
+}
+
+/// Nodes the build makes for `n` triangles (zero for none) with leaves of `leaves`.
+/// `O(log² n)`: a node's complete children are alike, so one of them is counted for all.
+pub const fn nodes_for_leaves(n: usize, leaves: LeafSize) -> usize {
     if n == 0 {
         return 0;
     }
-    let p = parts(n);
+    let leaf = leaves.triangles();
+    let p = parts(n, leaf);
     let mut total = 1;
     // The last child counted: its size and nodes.
     let (mut size, mut nodes) = (0, 0);
     let mut k = 0;
     while k < 4 {
-        if p[k] > LEAF {
+        if p[k] > leaf {
             if p[k] != size {
-                (size, nodes) = (p[k], nodes_for(p[k]));
+                (size, nodes) = (p[k], nodes_for_leaves(p[k], leaves));
             }
             total += nodes;
         }
@@ -182,20 +190,22 @@ fn split(
 }
 
 /// Builds the tree over `items` (each a triangle's box, index and seam class) into `nodes`, the
-/// root's box being `root`. `keys` (one per item, any values) ends in leaf order: slot `s`
+/// root's box being `root`, with leaves of `leaves`. `keys` (one per item, any values) ends in leaf order: slot `s`
 /// holds item [`key_index`]`(keys[s])`. Returns the number of nodes used.
 pub(crate) fn build(
     items: &[Item],
     keys: &mut [u64],
     root: Cells,
     nodes: &mut [Node],
+    leaves: LeafSize,
 ) -> Result<usize, BuildError> {
     let n = items.len().min(keys.len());
     let keys = &mut keys[..n];
     for (c, (key, it)) in keys.iter_mut().zip(items).enumerate() {
         *key = key_of(it, c, root);
     }
-    let needed = nodes_for(n);
+    let needed = nodes_for_leaves(n, leaves);
+    let leaf = leaves.triangles();
     if nodes.len() < needed {
         return Err(BuildError::Nodes(needed));
     }
@@ -213,7 +223,7 @@ pub(crate) fn build(
         }
         let range = &mut keys[first..first + count];
         // Up to four runs: the two halves split at the median, each split again.
-        let p = parts(count);
+        let p = parts(count, leaf);
         let (lb, rb) = split(range, p[0] + p[1], (lo, hi), root, &mut top);
         let (left, right) = range.split_at_mut(p[0] + p[1]);
         let (mut ltop, mut rtop) = (top, top);
@@ -254,7 +264,7 @@ pub(crate) fn build(
                 dlo[ax] = lo[ax] + ((qlo as i32) << sh);
                 dhi[ax] = lo[ax] + ((qhi as i32) << sh);
             }
-            if part.len() <= LEAF {
+            if part.len() <= leaf {
                 part.sort_unstable_by_key(|&k| k & INDEX);
                 node.children[k] = LEAF_FLAG | ((first + s) as u32) << 2 | (part.len() - 1) as u32;
             } else {

@@ -1,7 +1,7 @@
 //! [`Mesh::build`]: preparation, active edges (shared edges by a radix sort, then the open
 //! ones along T-junctions by the tree), the tree, and the triangles into its leaf order.
 
-use super::{Buffer, Degenerates, Mesh, MeshError};
+use super::{Buffer, Degenerates, Mesh, MeshError, MeshOptions};
 use crate::adjacency::{link_all, open_edges};
 use crate::bvh::{self, BuildError, Grid, MAX_TRIANGLES, Node};
 use crate::cover::cover_open;
@@ -22,18 +22,22 @@ impl<'a, S: Scalar> Mesh<'a, S> {
     /// triangles near it, stays active, and after `256 N` triangles met near edges in all (only
     /// where the triangles' boxes overlap wholesale) the edges not yet checked stay active.
     ///
-    /// Buffers: `nodes` at least [`nodes_for`](crate::bvh::nodes_for)`(kept)` (kept = input less
-    /// skipped; `nodes_for(sources.len())` always suffices), `triangles` and `order` one per input
-    /// triangle, `scratch` six words per input triangle. Time `O(N log N)` (active edges: plus one
+    /// `options`: a [`Degenerates`], or [`MeshOptions`] to choose the tree's leaf size too
+    /// (leaves of up to two triangles unless told otherwise).
+    ///
+    /// Buffers: `nodes` at least [`nodes_for_leaves`](crate::bvh::nodes_for_leaves)`(kept,
+    /// leaf size)` (kept = input less skipped; [`nodes_for`](crate::bvh::nodes_for)`(sources.len())`
+    /// always suffices), `triangles` and `order` one per input triangle, `scratch` six words per
+    /// input triangle. Time `O(N log N)` (active edges: plus one
     /// comparison per pair of triangles on either side of a shared edge), no allocation, stack
     /// use independent of `N`. The same input gives the same parts, byte for byte, on every target.
     ///
     /// Errors: [`MeshError::Triangle`] for a triangle [`StandardTriangle::new`] refuses (unless it
     /// is degenerate and `degenerates` is [`Degenerates::Skip`]); [`MeshError::Capacity`] for a
-    /// buffer too small; [`MeshError::TooMany`] beyond 2^28 triangles.
+    /// buffer too small; [`MeshError::TooMany`] beyond 2^24 triangles.
     pub fn build(
         sources: &[Triangle<S>],
-        degenerates: Degenerates,
+        options: impl Into<MeshOptions>,
         nodes: &'a mut [Node],
         triangles: &'a mut [StandardTriangle<S>],
         order: &'a mut [u32],
@@ -42,7 +46,7 @@ impl<'a, S: Scalar> Mesh<'a, S> {
         Self::build_sided(
             sources,
             |_| false,
-            degenerates,
+            options,
             nodes,
             triangles,
             order,
@@ -79,12 +83,16 @@ impl<'a, S: Scalar> Mesh<'a, S> {
     pub fn build_sided(
         sources: &[Triangle<S>],
         two_sided: impl Fn(usize) -> bool,
-        degenerates: Degenerates,
+        options: impl Into<MeshOptions>,
         nodes: &'a mut [Node],
         triangles: &'a mut [StandardTriangle<S>],
         order: &'a mut [u32],
         scratch: &mut [u64],
     ) -> Result<(Self, usize), MeshError> {
+        let MeshOptions {
+            degenerates,
+            leaf_size,
+        } = options.into();
         let n = sources.len();
         if n > MAX_TRIANGLES {
             return Err(MeshError::TooMany);
@@ -135,7 +143,11 @@ impl<'a, S: Scalar> Mesh<'a, S> {
                 }
             }
         }
-        if let Some(e) = short(Buffer::Nodes, nodes.len(), bvh::nodes_for(kept)) {
+        if let Some(e) = short(
+            Buffer::Nodes,
+            nodes.len(),
+            bvh::nodes_for_leaves(kept, leaf_size),
+        ) {
             return Err(e);
         }
         let (triangles, order) = (&mut triangles[..kept], &mut order[..kept]);
@@ -161,7 +173,7 @@ impl<'a, S: Scalar> Mesh<'a, S> {
             *it = bvh::item(Grid::cells(exponent, blo, bhi), c, class);
         }
         let given = nodes.len();
-        let used = bvh::build(items, keys, (lo, hi), nodes).map_err(|e| match e {
+        let used = bvh::build(items, keys, (lo, hi), nodes, leaf_size).map_err(|e| match e {
             BuildError::Nodes(needed) => MeshError::Capacity {
                 buffer: Buffer::Nodes,
                 needed,

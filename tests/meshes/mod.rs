@@ -5,10 +5,10 @@
 #![allow(dead_code)] // each test binary uses a different part
 
 use crate::common::{P, Rng, v};
-use ballcast::bvh::nodes_for;
+use ballcast::bvh::{LeafSize, nodes_for};
 use ballcast::{
-    Degenerates, Geometry, Grid, Mesh, MeshError, Node, Scalar, SceneHit, StandardTriangle, Sweep,
-    Triangle, Vec3,
+    Degenerates, Geometry, Grid, Mesh, MeshError, MeshOptions, Node, Scalar, SceneHit,
+    StandardTriangle, Sweep, Triangle, Vec3,
 };
 use std::collections::HashMap;
 
@@ -51,15 +51,18 @@ impl<S: Scalar> Owned<S> {
     }
 }
 
-pub fn build<S: Scalar>(src: &[Triangle<S>], deg: Degenerates) -> Result<Owned<S>, MeshError> {
-    build_sided(src, |_| false, deg)
+pub fn build<S: Scalar>(
+    src: &[Triangle<S>],
+    options: impl Into<MeshOptions>,
+) -> Result<Owned<S>, MeshError> {
+    build_sided(src, |_| false, options)
 }
 
 /// [`build`] with the triangles for which `sided(index)` holds two-sided.
 pub fn build_sided<S: Scalar>(
     src: &[Triangle<S>],
     sided: impl Fn(usize) -> bool,
-    deg: Degenerates,
+    options: impl Into<MeshOptions>,
 ) -> Result<Owned<S>, MeshError> {
     let n = src.len();
     let mut nodes = vec![Node::default(); nodes_for(n)];
@@ -69,7 +72,7 @@ pub fn build_sided<S: Scalar>(
     let (mesh, _) = Mesh::build_sided(
         src,
         sided,
-        deg,
+        options,
         &mut nodes,
         &mut tris,
         &mut order,
@@ -322,6 +325,9 @@ pub fn against_linear_by_sided<S: Scalar>(
 ) {
     let input: Vec<Triangle<S>> = src.iter().map(|&t| tri(t)).collect();
     let owned = build_sided(&input, sided, Degenerates::Skip).unwrap();
+    // The same triangles under a tree of leaves of four: the same answers.
+    let four = Degenerates::Skip.with_leaf_size(LeafSize::Four);
+    let small = build_sided(&input, sided, four).unwrap();
     let (mesh, reference) = (owned.mesh(), owned.reference());
     let mut hits = 0;
     for k in 0..sweeps {
@@ -331,6 +337,8 @@ pub fn against_linear_by_sided<S: Scalar>(
         };
         let (got, want) = (mesh.cast(&sweep), reference(&sweep));
         assert_eq!(got, want, "sweep {k}: {p0:?} -> {p1:?}, r {r}");
+        let leaves_of_four = small.mesh().cast(&sweep);
+        assert_eq!(leaves_of_four, want, "leaves of four, sweep {k}");
         hits += got.is_some() as usize;
     }
     // The sweeps must exercise the tree: a fair share of them hit something.
