@@ -121,7 +121,7 @@ pub enum LeafSize {
     #[default]
     Two,
     /// Up to four: about 3.7 bytes of tree per triangle, for the smallest meshes (a
-    /// [`CompactMesh`](crate::CompactMesh) borrows its mesh's tree); queries test about 1.5
+    /// [`CompactMesh`](crate::CompactMesh) borrows its mesh's tree); queries test about 1.6
     /// times the triangles.
     Four,
 }
@@ -136,8 +136,8 @@ impl LeafSize {
     }
 }
 
-/// Deepest tree the traversal's stack is sized for: `log4(2^24 / 2) + 1 = 13` levels suffice
-/// for the largest mesh the build accepts.
+/// Deepest tree the traversal's stack is sized for: the largest mesh the build accepts, 2^24
+/// triangles in leaves of two, takes 12 levels.
 pub const MAX_DEPTH: usize = 16;
 /// Entries of the traversal stack: three siblings wait per level, plus the root.
 const STACK: usize = 3 * MAX_DEPTH + 4;

@@ -1,5 +1,5 @@
 //! [`CompactMesh`]: a [`Mesh`]'s tree over shared vertices and indexed triangles, about 19
-//! bytes per triangle of a terrain in `f32` or `I16F16` (a prepared mesh: 100), answering exactly
+//! bytes per triangle of a terrain in `f32` or `I16F16` (a prepared mesh: 103), answering exactly
 //! as the prepared mesh.
 //!
 //! # Layout
@@ -21,7 +21,7 @@
 //! culls are the `f64` box, plane and edge-line tests, and the triangle is prepared at once
 //! (`query.rs`).
 //! Preparing costs a few hundred instructions per triangle reached: a query costs more than on
-//! the prepared mesh, in exchange for a sixth of the memory.
+//! the prepared mesh, in exchange for a fifth of the memory.
 
 use crate::bvh::{self, Grid, Node};
 use crate::{Mesh, Scalar, Vec3};

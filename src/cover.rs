@@ -87,20 +87,24 @@ const NEIGHBOURS: usize = 256;
 const MEETINGS: usize = 256;
 
 /// [`covered`] for the open edges of a mesh (those `open` gives for a slot: active, and
-/// sharing no vertex pair with an opposite edge), switching each covered one off.
-/// `near(a, b, r, f)` calls `f` with the slots of every triangle that may come within `r` of
-/// the segment from `a` to `b` (each slot `s` being `triangles[s]`, prepared from
-/// `source(s)`); a neighbour whose edge runs along one within the tolerance does. Returns
-/// whether any edge was switched off.
+/// sharing no vertex pair with an opposite edge), switching each covered one off, taking the
+/// triangles in the order of `slots`. `near(a, b, r, f)` calls `f` with the slots of every
+/// triangle that may come within `r` of the segment from `a` to `b` (each slot `s` being
+/// `triangles[s]`, prepared from `source(s)`), and maybe more; a neighbour whose edge runs along
+/// one within the tolerance does. Only the triangles whose boxes meet the segment's, grown by
+/// `r`, are counted and looked at, and `slots` is the input order, so the result, limits
+/// included, does not depend on how `near` finds them (the tree's leaf size). Returns whether
+/// any edge was switched off.
 pub(crate) fn cover_open<'a, S: Scalar + 'a>(
     triangles: &mut [StandardTriangle<S>],
+    slots: impl Iterator<Item = usize>,
     source: impl Fn(usize) -> Option<&'a Triangle<S>>,
     open: impl Fn(usize) -> u8,
     near: impl Fn(Vec3<S>, Vec3<S>, S, &mut dyn FnMut(usize)),
 ) -> bool {
     let mut changed = false;
     let (budget, mut spent) = (MEETINGS * triangles.len() + 4096, 0);
-    for s in 0..triangles.len() {
+    for s in slots {
         let mask = open(s);
         if mask == 0 {
             continue;
@@ -118,12 +122,15 @@ pub(crate) fn cover_open<'a, S: Scalar + 'a>(
             let mut found: heapless::Vec<(S, S), STRETCHES> = heapless::Vec::new();
             let (mut full, mut looked) = (false, 0);
             near(a, b, tol + tol, &mut |o| {
-                looked += 1;
-                full |= looked > NEIGHBOURS;
-                if full {
+                let (Some(ot), Some(osrc)) = (triangles.get(o), source(o)) else {
+                    return;
+                };
+                if full || !boxes_meet(osrc, (a, b), tol + tol) {
                     return;
                 }
-                if let (Some(ot), Some(osrc)) = (triangles.get(o), source(o)) {
+                looked += 1;
+                full = looked > NEIGHBOURS;
+                if !full {
                     for stretch in intervals(t, i, ot, osrc) {
                         full |= found.push(stretch).is_err();
                     }
@@ -137,6 +144,21 @@ pub(crate) fn cover_open<'a, S: Scalar + 'a>(
         }
     }
     changed
+}
+
+/// Whether the box of `t` meets the box of the segment from `a` to `b` grown by `r`: the
+/// neighbours [`cover_open`] counts, a set that does not depend on how they were found.
+fn boxes_meet<S: Scalar>(t: &Triangle<S>, (a, b): (Vec3<S>, Vec3<S>), r: S) -> bool {
+    let [v0, v1, v2] = t.vertices();
+    let (lo, hi) = (v0.min(v1).min(v2), v0.max(v1).max(v2));
+    let grow = Vec3::new(r, r, r);
+    let (slo, shi) = (a.min(b) - grow, a.max(b) + grow);
+    lo.x <= shi.x
+        && lo.y <= shi.y
+        && lo.z <= shi.z
+        && hi.x >= slo.x
+        && hi.y >= slo.y
+        && hi.z >= slo.z
 }
 
 /// The stretch `[lo, hi]` of edge `i` of `t` (as distances from its start) that edge `j` of the

@@ -147,7 +147,7 @@ pub mod winding;
 #[cfg(test)]
 mod xorshift;
 
-pub use bvh::{Grid, Node};
+pub use bvh::{Grid, LeafSize, Node};
 pub use compact::{CompactError, CompactMesh, MeshIndex};
 pub use compound::{Compound, CompoundPart, PartIndex};
 pub use contact::Features;

@@ -20,8 +20,9 @@ use core::fmt;
 /// simultaneous contacts; `index` is the triangle's index in the input.
 ///
 /// Memory per triangle: the prepared triangle (92 bytes for `f32` and `I16F16`, 184 for `f64`
-/// and `I32F32`), 4 bytes of `order`, and 3.7 bytes of nodes (a 44-byte node per about 12
-/// triangles; 8 364 for 100 352): the tree adds about 7.7 bytes per triangle in every scalar.
+/// and `I32F32`), 4 bytes of `order`, and 7.3 bytes of nodes (a 44-byte node per about 6
+/// triangles; 16 725 for 100 352): the tree adds about 11.3 bytes per triangle in every scalar.
+/// With leaves of four ([`LeafSize::Four`]) the nodes take 3.7 bytes per triangle (8 364).
 /// The build also needs six scratch words (48 bytes) per triangle while it runs.
 ///
 /// ```
@@ -108,7 +109,7 @@ pub enum Buffer {
 impl fmt::Display for Buffer {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         f.write_str(match self {
-            Buffer::Nodes => "nodes (bvh::nodes_for of the triangles kept)",
+            Buffer::Nodes => "nodes (bvh::nodes_for_leaves of the triangles kept)",
             Buffer::Triangles => "triangles (one per input triangle)",
             Buffer::Order => "order (one per input triangle)",
             Buffer::Scratch => "scratch (six words per input triangle)",
@@ -240,7 +241,9 @@ impl<'a, S: Scalar> Mesh<'a, S> {
     }
 
     /// Checks baked parts against the mesh `Mesh::build` makes of `sources` into the given
-    /// buffers (sized as for `build`): the way to test a `static` mesh.
+    /// buffers (sized as for `build`): the way to test a `static` mesh. `options` must be
+    /// those the parts were built with, the leaf size too (parts built with leaves of four
+    /// differ from the default's: [`MeshError::Mismatch`]).
     ///
     /// Errors: those of [`build`](Self::build), or [`MeshError::Mismatch`] on any difference.
     pub fn verify(

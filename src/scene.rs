@@ -84,7 +84,7 @@ pub struct SceneHit<S> {
 /// (304 in `f64` and `I32F32`: the prepared triangle, its source and its box), so a
 /// `Scene<f32, 65_536>` is 10 MB, more than a thread's stack holds (`Box::new(Scene::new())`
 /// builds it on the stack first, in a debug build). Whole levels belong in a
-/// [`Mesh`](crate::Mesh): a tree over caller-provided buffers, 100 bytes per triangle in `f32`.
+/// [`Mesh`](crate::Mesh): a tree over caller-provided buffers, 103 bytes per triangle in `f32`.
 ///
 /// ```
 /// use ballcast::{Contact, Scene, Sweep, Triangle, Vec3};

@@ -28,8 +28,10 @@ fn matches_prepared_mesh<S: Scalar>() {
     for (src, half) in shapes {
         let (vertices, indices) = indexed::<S>(&src);
         let input: Vec<_> = src.iter().map(|&t| tri::<S>(t)).collect();
-        // Every fourth triangle two-sided: the compact form keeps the side in its byte.
-        let owned = build_sided(&input, |i: usize| i.is_multiple_of(4), Degenerates::Skip).unwrap();
+        // Every fourth triangle two-sided: the compact form keeps the side in its byte. On the
+        // tree with leaves of four, the one a compact mesh is meant to borrow.
+        let four = Degenerates::Skip.with_leaf_size(LeafSize::Four);
+        let owned = build_sided(&input, |i: usize| i.is_multiple_of(4), four).unwrap();
         let mesh = owned.mesh();
         let n = mesh.len();
         let (mut t, mut o, mut b) = (vec![[0u16; 3]; n], vec![0u16; n], vec![0u8; n]);

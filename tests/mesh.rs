@@ -6,7 +6,7 @@
 mod common;
 mod meshes;
 
-use ballcast::bvh::{LeafSize, nodes_for};
+use ballcast::bvh::{LeafSize, nodes_for, nodes_for_leaves};
 use ballcast::penetration::{Penetration, penetration};
 use ballcast::winding::winding;
 use ballcast::{
@@ -220,9 +220,11 @@ fn box_queries_as_linear<S: Scalar>() {
         boxes(&mut rng, 16, 5.0),
         soup(&mut rng, 200, 4.0),
     ];
-    for src in shapes {
+    // Each shape under both leaf sizes.
+    let sizes = [LeafSize::Two, LeafSize::Four];
+    for (src, leaves) in shapes.iter().flat_map(|s| sizes.map(|l| (s, l))) {
         let input: Vec<Triangle<S>> = src.iter().map(|&t| tri(t)).collect();
-        let owned = build(&input, Degenerates::Skip).unwrap();
+        let owned = build(&input, Degenerates::Skip.with_leaf_size(leaves)).unwrap();
         let (mesh, linear) = (owned.mesh(), owned.linear());
         let mut kept: Vec<u32> = owned.order.clone();
         kept.sort();
@@ -510,7 +512,7 @@ fn errors_not_panics<S: Scalar>() {
     }
     let short = attempt(&src, [1, n, n, 6 * n], Degenerates::Refuse).unwrap_err();
     let said = format!(
-        "the buffer of nodes (bvh::nodes_for of the triangles kept) holds 1, too few: {} needed",
+        "the buffer of nodes (bvh::nodes_for_leaves of the triangles kept) holds 1, too few: {} needed",
         nodes_for(n)
     );
     assert_eq!(short.to_string(), said);
@@ -639,6 +641,89 @@ fn short_step_touching_at_its_end<S: Scalar>() {
     assert_eq!(owned.mesh().cast(&sweep), want);
 }
 
+/// A node slice of exactly `nodes_for_leaves(n, leaf size)` is enough for each leaf size and
+/// used to the last node; one node fewer is a capacity error naming the count needed.
+#[test]
+fn node_buffers_sized_exactly_for_each_leaf_size() {
+    let mut rng = Rng(0x5eed_000c);
+    let cells = heightfield(&mut rng, 9, 1.0, 0.65);
+    for n in 1..cells.len() {
+        let input: Vec<Triangle<f32>> = cells[..n].iter().map(|&t| tri(t)).collect();
+        for leaves in [LeafSize::Two, LeafSize::Four] {
+            let need = nodes_for_leaves(n, leaves);
+            let options = Degenerates::Refuse.with_leaf_size(leaves);
+            let mut tris = vec![Mesh::<f32>::filler(); n];
+            let (mut order, mut scratch) = (vec![0u32; n], vec![0u64; 6 * n]);
+            let mut nodes = vec![Node::default(); need];
+            let built = Mesh::build(
+                &input,
+                options,
+                &mut nodes,
+                &mut tris,
+                &mut order,
+                &mut scratch,
+            );
+            assert_eq!(
+                built.map(|(m, _)| m.nodes().len()),
+                Ok(need),
+                "{n} {leaves:?}"
+            );
+            let mut short = vec![Node::default(); need - 1];
+            let built = Mesh::build(
+                &input,
+                options,
+                &mut short,
+                &mut tris,
+                &mut order,
+                &mut scratch,
+            );
+            let capacity = MeshError::Capacity {
+                buffer: Buffer::Nodes,
+                needed: need,
+                given: need - 1,
+            };
+            assert_eq!(built.map(|_| ()), Err(capacity), "{n} {leaves:?}");
+        }
+    }
+}
+
+/// A floor edge covered by two flat neighbours meeting in a T-junction, with 400 tiny posts
+/// standing along it (more than the 256 triangles near one edge the build looks at): the
+/// edges switched off must not depend on how the tree found the posts. With leaves of four the
+/// build met more of them near the edge than with leaves of two and left the edge active; the
+/// two trees then answered sweeps across it differently.
+fn t_junction_among_many_posts_has_the_same_edges_for_every_leaf_size<S: Scalar>() {
+    let floor = [
+        [[0.0, 0.0, 0.0], [8.0, 0.0, 0.0], [4.0, 0.0, -4.0]],
+        [[4.0, 0.0, 0.0], [0.0, 0.0, 0.0], [2.0, 0.0, 3.0]],
+        [[8.0, 0.0, 0.0], [4.0, 0.0, 0.0], [6.0, 0.0, 3.0]],
+    ];
+    let posts = (0..400).map(|k| {
+        let x = 0.1 + 7.8 * k as f64 / 400.0;
+        let y = if k % 4 == 0 { 0.0 } else { 0.005 };
+        [[x, y, -0.002], [x, y, 0.002], [x, y + 0.004, 0.0]]
+    });
+    let src: Vec<[P; 3]> = floor.into_iter().chain(posts).collect();
+    let input: Vec<Triangle<S>> = src.iter().map(|&t| tri(t)).collect();
+    let two = build(&input, Degenerates::Skip).unwrap();
+    let four = build(&input, Degenerates::Skip.with_leaf_size(LeafSize::Four)).unwrap();
+    let (two, four) = (two.mesh(), four.mesh());
+    for i in 0..input.len() {
+        let features = |m: &Mesh<'_, S>| m.triangle(i).map(|t| t.features());
+        assert_eq!(features(&two), features(&four), "triangle {i}");
+    }
+    let mut rng = Rng(0x5eed_000b);
+    for k in 0..2000 {
+        let x = rng.range(0.0, 8.0);
+        let r = rng.range(0.001, 0.01);
+        let (z0, h) = (rng.range(-0.5, 0.5), r * rng.range(0.99, 1.01));
+        let sweep = Sweep::new(v::<S>([x, h, z0]), v([x + 0.003, h, -z0]), S::from_f64(r));
+        if let Ok(sweep) = sweep {
+            assert_eq!(two.cast(&sweep), four.cast(&sweep), "sweep {k}");
+        }
+    }
+}
+
 /// `Mesh::verify`, the check for baked parts: a mesh from `from_parts` passes against its
 /// triangles, and fails once a triangle of the input differs.
 fn verify_baked_parts<S: Scalar>() {
@@ -683,6 +768,7 @@ meshes::per_scalar!(
     sliver_seam_beyond_its_corner,
     short_step_touching_at_its_end,
     verify_baked_parts,
+    t_junction_among_many_posts_has_the_same_edges_for_every_leaf_size,
     matches_linear_scan_long #[ignore = "10^5 sweeps per scalar: run with --release -- --ignored"],
 );
 

@@ -19,8 +19,11 @@ impl<'a, S: Scalar> Mesh<'a, S> {
     /// second rule to open edges only (an edge both
     /// shared and covered, which takes three or more triangles along one line, stays as the
     /// pair decides); an edge along more than 64 neighbours' edges, or with more than 256
-    /// triangles near it, stays active, and after `256 N` triangles met near edges in all (only
-    /// where the triangles' boxes overlap wholesale) the edges not yet checked stay active.
+    /// triangles near it (their boxes meeting its own, grown by a few roundings), stays active,
+    /// and after `256 N` triangles met near edges in all (only where the triangles' boxes
+    /// overlap wholesale) the edges not yet checked, in input order, stay active. These limits
+    /// count by geometry and input order alone, so the active edges are the same whatever the
+    /// leaf size.
     ///
     /// `options`: a [`Degenerates`], or [`MeshOptions`] to choose the tree's leaf size too
     /// (leaves of up to two triangles unless told otherwise).
@@ -89,10 +92,27 @@ impl<'a, S: Scalar> Mesh<'a, S> {
         order: &'a mut [u32],
         scratch: &mut [u64],
     ) -> Result<(Self, usize), MeshError> {
+        // One copy of the build per scalar, whatever the closure and the options' type.
+        let options = options.into();
+        Self::build_into(
+            sources, &two_sided, options, nodes, triangles, order, scratch,
+        )
+    }
+
+    /// [`build_sided`](Self::build_sided) itself.
+    fn build_into(
+        sources: &[Triangle<S>],
+        two_sided: &dyn Fn(usize) -> bool,
+        options: MeshOptions,
+        nodes: &'a mut [Node],
+        triangles: &'a mut [StandardTriangle<S>],
+        order: &'a mut [u32],
+        scratch: &mut [u64],
+    ) -> Result<(Self, usize), MeshError> {
         let MeshOptions {
             degenerates,
             leaf_size,
-        } = options.into();
+        } = options;
         let n = sources.len();
         if n > MAX_TRIANGLES {
             return Err(MeshError::TooMany);
@@ -211,7 +231,7 @@ impl<'a, S: Scalar> Mesh<'a, S> {
         }
         let grid = Grid { exponent, lo, hi };
         let nodes = &mut nodes[..used];
-        if cover(sources, nodes, &grid, triangles, order) {
+        if cover(sources, nodes, &grid, triangles, order, &mut scratch[..n]) {
             bvh::set_classes(nodes, |s| triangles.get(s).map_or(0, bvh::class_of));
         }
         for o in order.iter_mut() {
@@ -231,14 +251,24 @@ fn cover<S: Scalar>(
     grid: &Grid,
     triangles: &mut [StandardTriangle<S>],
     order: &[u32],
+    scratch: &mut [u64],
 ) -> bool {
     let source = |s: usize| {
         let (i, _) = open_edges(*order.get(s)?);
         sources.get(i as usize)
     };
     let open = |s: usize| order.get(s).map_or(0, |&o| open_edges(o).1);
+    // The slots in input order (one more than each slot, by input index; zero for a triangle
+    // skipped), so that the edges are checked in an order every tree shares.
+    scratch.fill(0);
+    for (s, &o) in order.iter().enumerate() {
+        if let Some(at) = scratch.get_mut(open_edges(o).0 as usize) {
+            *at = s as u64 + 1;
+        }
+    }
+    let slots = scratch.iter().filter(|&&s| s != 0).map(|&s| s as usize - 1);
     // Along each edge as a sweep of a ball: the leaves near its line only, however it runs.
-    cover_open(triangles, source, open, |a, b, r, f| {
+    cover_open(triangles, slots, source, open, |a, b, r, f| {
         let Ok(edge) = Sweep::new(a, b, r) else {
             return;
         };
