@@ -3,10 +3,13 @@
 //! `const` constructors, so firmware keeps the level in flash and does no work at start-up.
 //!
 //! Run: `cargo run --release --example bake -- LEVEL [--scalar f32|f64|i16f16|i32f32] [--radius R]
-//! [--two-sided]`
+//! [--two-sided] [--leaves 2|4]`
 //!
 //! Triangles of a glTF material marked `doubleSided` are baked two-sided (they stop balls from
 //! both sides); `--two-sided` makes every triangle so (an OBJ file has no such mark).
+//! `--leaves 4` builds the tree with leaves of up to four triangles: 3.6 bytes per triangle
+//! less flash, queries that test more triangles (verify the statics with
+//! `Degenerates::Skip.with_leaf_size(LeafSize::Four)`).
 //!
 //! Writes the source to stdout (`include!` it in a module; `MESH` is the mesh) and one line of
 //! statistics to stderr: triangles, degenerate ones skipped (by index), nodes, bytes in flash
@@ -14,12 +17,13 @@
 //! radius R (default 0.5). A bad file or a level outside the scalar's range gets a message
 //! naming the file and the problem, a non-zero exit status and no output on stdout.
 
+use ballcast::bvh::LeafSize;
 use ballcast::plan::{Memory, ScalarType};
-use ballcast_level::{Baked, LevelError, bake, load, verdicts};
+use ballcast_level::{Baked, LevelError, bake_with, load, verdicts};
 use fixed::types::{I16F16, I32F32};
 use std::process::ExitCode;
 
-const USAGE: &str = "usage: bake LEVEL [--scalar f32|f64|i16f16|i32f32 (default i16f16)] [--radius R] [--two-sided]";
+const USAGE: &str = "usage: bake LEVEL [--scalar f32|f64|i16f16|i32f32 (default i16f16)] [--radius R] [--two-sided] [--leaves 2|4 (default 2)]";
 
 fn usage() -> ExitCode {
     eprintln!("{USAGE}");
@@ -29,7 +33,7 @@ fn usage() -> ExitCode {
 fn main() -> ExitCode {
     let mut args = std::env::args().skip(1);
     let (mut path, mut scalar, mut radius) = (None, "i16f16".to_string(), 0.5);
-    let mut two_sided = false;
+    let (mut two_sided, mut leaves) = (false, LeafSize::Two);
     while let Some(a) = args.next() {
         match a.as_str() {
             "--scalar" => match args.next() {
@@ -41,6 +45,11 @@ fn main() -> ExitCode {
                 _ => return usage(),
             },
             "--two-sided" => two_sided = true,
+            "--leaves" => match args.next().as_deref() {
+                Some("2") => leaves = LeafSize::Two,
+                Some("4") => leaves = LeafSize::Four,
+                _ => return usage(),
+            },
             _ if path.is_none() && !a.starts_with("--") => path = Some(a),
             _ => return usage(),
         }
@@ -48,7 +57,7 @@ fn main() -> ExitCode {
     let Some(path) = path else {
         return usage();
     };
-    match run(&path, &scalar, radius, two_sided) {
+    match run(&path, &scalar, radius, two_sided, leaves) {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {
             eprintln!("bake: {e}");
@@ -62,16 +71,17 @@ fn run(
     scalar: &str,
     radius: f64,
     two_sided: bool,
+    leaves: LeafSize,
 ) -> Result<(), Box<dyn std::error::Error>> {
     let mut level = load(path)?;
     if two_sided {
         level.two_sided = vec![true; level.triangles.len()];
     }
     let all: [(&str, Result<Baked, LevelError>); 4] = [
-        ("f32", bake::<f32>(&level)),
-        ("f64", bake::<f64>(&level)),
-        ("i16f16", bake::<I16F16>(&level)),
-        ("i32f32", bake::<I32F32>(&level)),
+        ("f32", bake_with::<f32>(&level, leaves)),
+        ("f64", bake_with::<f64>(&level, leaves)),
+        ("i16f16", bake_with::<I16F16>(&level, leaves)),
+        ("i32f32", bake_with::<I32F32>(&level, leaves)),
     ];
     let chosen = all
         .iter()

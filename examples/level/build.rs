@@ -1,5 +1,5 @@
-//! Bakes the firmware's levels (`examples/data/ramp.obj` in every scalar, `arena.obj` in
-//! I16F16) into `OUT_DIR` with this crate's own bake, so `tests/baked.rs` can compile the
+//! Bakes the firmware's levels (`examples/data/ramp.obj` in every scalar, and in `f32` with
+//! leaves of four too; `arena.obj` in I16F16) into `OUT_DIR` with this crate's own bake, so `tests/baked.rs` can compile the
 //! statics and check them against the run-time build.
 
 use std::path::{Path, PathBuf};
@@ -23,6 +23,8 @@ fn main() {
     };
     let ramp = load("ramp.obj");
     write("ramp_f32.rs", level::bake::<f32>(&ramp));
+    let four = ballcast::bvh::LeafSize::Four;
+    write("ramp_f32_four.rs", level::bake_with::<f32>(&ramp, four));
     write("ramp_f64.rs", level::bake::<f64>(&ramp));
     write("ramp_i16f16.rs", level::bake::<fixed::types::I16F16>(&ramp));
     write("ramp_i32f32.rs", level::bake::<fixed::types::I32F32>(&ramp));

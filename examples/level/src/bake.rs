@@ -3,7 +3,7 @@
 //! triangle.
 
 use super::{Level, LevelError, Problem};
-use ballcast::bvh::nodes_for;
+use ballcast::bvh::{LeafSize, nodes_for_leaves};
 use ballcast::{Degenerates, Error, Mesh, Node, Scalar, StandardTriangle, Triangle, Vec3};
 use fixed::types::{I2F30, I2F62, I16F16, I32F32};
 use std::fmt::{self, Write};
@@ -73,6 +73,8 @@ pub struct Stats {
     pub two_sided: usize,
     /// Tree nodes.
     pub nodes: usize,
+    /// The most triangles in a leaf of the tree.
+    pub leaf_size: LeafSize,
     /// Bytes of the statics: prepared triangles, order and nodes.
     pub bytes: usize,
     /// The largest coordinate's magnitude.
@@ -90,13 +92,14 @@ impl fmt::Display for Stats {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         write!(
             f,
-            "{}: {} triangles, {} degenerate skipped {:?}, {} two-sided, {} nodes, {} bytes in flash ({:.1} per triangle)",
+            "{}: {} triangles, {} degenerate skipped {:?}, {} two-sided, {} nodes (leaves of up to {}), {} bytes in flash ({:.1} per triangle)",
             self.scalar,
             self.triangles,
             self.skipped.len(),
             self.skipped,
             self.two_sided,
             self.nodes,
+            self.leaf_size.triangles(),
             self.bytes,
             self.per_triangle()
         )
@@ -160,6 +163,16 @@ pub fn triangles<S: Scalar + Emit>(level: &Level) -> Result<Vec<Triangle<S>>, Le
 /// Errors: [`Problem::OutOfRange`], [`Problem::AllDegenerate`] when no triangle is left, or
 /// [`Problem::Mesh`] when the build refuses a triangle.
 pub fn bake<S: Scalar + Emit>(level: &Level) -> Result<Baked, LevelError> {
+    bake_with::<S>(level, LeafSize::Two)
+}
+
+/// [`bake`] with leaves of up to `leaf_size` triangles: [`LeafSize::Four`] takes 3.6 bytes per
+/// triangle less flash for queries that test about 1.6 times the triangles. Check the statics
+/// with `Mesh::verify_sided` given the same leaf size.
+pub fn bake_with<S: Scalar + Emit>(
+    level: &Level,
+    leaf_size: LeafSize,
+) -> Result<Baked, LevelError> {
     let sources = triangles::<S>(level)?;
     let n = sources.len();
     let skipped: Vec<usize> = (0..n)
@@ -170,14 +183,14 @@ pub fn bake<S: Scalar + Emit>(level: &Level) -> Result<Baked, LevelError> {
             )
         })
         .collect();
-    let mut nodes = vec![Node::default(); nodes_for(n)];
+    let mut nodes = vec![Node::default(); nodes_for_leaves(n, leaf_size)];
     let mut prepared = vec![Mesh::<S>::filler(); n];
     let mut order = vec![0u32; n];
     let mut scratch = vec![0u64; 6 * n];
     let (mesh, _) = Mesh::build_sided(
         &sources,
         |i| level.is_two_sided(i),
-        Degenerates::Skip,
+        Degenerates::Skip.with_leaf_size(leaf_size),
         &mut nodes,
         &mut prepared,
         &mut order,
@@ -202,6 +215,7 @@ pub fn bake<S: Scalar + Emit>(level: &Level) -> Result<Baked, LevelError> {
         skipped,
         two_sided: mesh.triangles().iter().filter(|t| t.is_two_sided()).count(),
         nodes: mesh.nodes().len(),
+        leaf_size,
         bytes: size_of_val(mesh.triangles())
             + size_of_val(mesh.order())
             + size_of_val(mesh.nodes()),

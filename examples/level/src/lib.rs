@@ -16,7 +16,7 @@ mod bake;
 mod gltf_file;
 mod obj;
 
-pub use bake::{Baked, Emit, Stats, bake, triangles, verdicts};
+pub use bake::{Baked, Emit, Stats, bake, bake_with, triangles, verdicts};
 
 use std::fmt;
 use std::path::{Path, PathBuf};

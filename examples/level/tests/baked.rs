@@ -2,11 +2,15 @@
 //! firmware's build script does) are exactly the mesh `Mesh::build` makes of the loaded level
 //! at run time: nodes, prepared triangles with their active edges, order and grid, bit for bit.
 
-use ballcast::{Degenerates, Mesh, Node, Scalar, bvh::nodes_for};
+use ballcast::bvh::{LeafSize, nodes_for};
+use ballcast::{Degenerates, Mesh, MeshError, Node, Scalar};
 use ballcast_level::{Emit, load, triangles};
 
 mod ramp_f32 {
     include!(concat!(env!("OUT_DIR"), "/ramp_f32.rs"));
+}
+mod ramp_f32_four {
+    include!(concat!(env!("OUT_DIR"), "/ramp_f32_four.rs"));
 }
 mod ramp_f64 {
     include!(concat!(env!("OUT_DIR"), "/ramp_f64.rs"));
@@ -26,6 +30,17 @@ fn equals_run_time_build<S: Scalar + Emit>(
     file: &str,
     triangles_in: usize,
 ) {
+    equals_run_time_build_with(baked, file, triangles_in, LeafSize::Two);
+}
+
+/// The statics baked with leaves of `leaf_size` are the mesh built with them at run time (and
+/// not the one built with the other size).
+fn equals_run_time_build_with<S: Scalar + Emit>(
+    baked: &Mesh<'static, S>,
+    file: &str,
+    triangles_in: usize,
+    leaf_size: LeafSize,
+) {
     let level = load(format!("{}/../data/{file}", env!("CARGO_MANIFEST_DIR"))).unwrap();
     let sources = triangles::<S>(&level).unwrap();
     let n = sources.len();
@@ -34,16 +49,23 @@ fn equals_run_time_build<S: Scalar + Emit>(
     let mut prepared = vec![Mesh::<S>::filler(); n];
     let mut order = vec![0u32; n];
     let mut scratch = vec![0u64; 6 * n];
-    let verdict = baked.verify_sided(
-        &sources,
-        |i| level.is_two_sided(i),
-        Degenerates::Skip,
-        &mut nodes,
-        &mut prepared,
-        &mut order,
-        &mut scratch,
-    );
-    assert_eq!(verdict, Ok(()));
+    let mut verify = |leaves| {
+        baked.verify_sided(
+            &sources,
+            |i| level.is_two_sided(i),
+            Degenerates::Skip.with_leaf_size(leaves),
+            &mut nodes,
+            &mut prepared,
+            &mut order,
+            &mut scratch,
+        )
+    };
+    assert_eq!(verify(leaf_size), Ok(()));
+    let other = match leaf_size {
+        LeafSize::Two => LeafSize::Four,
+        LeafSize::Four => LeafSize::Two,
+    };
+    assert_eq!(verify(other), Err(MeshError::Mismatch));
 }
 
 #[test]
@@ -52,6 +74,7 @@ fn baked_ramp_equals_run_time_build_in_every_scalar() {
     equals_run_time_build(&ramp_f64::MESH, "ramp.obj", 96);
     equals_run_time_build(&ramp_i16f16::MESH, "ramp.obj", 96);
     equals_run_time_build(&ramp_i32f32::MESH, "ramp.obj", 96);
+    equals_run_time_build_with(&ramp_f32_four::MESH, "ramp.obj", 96, LeafSize::Four);
 }
 
 #[test]
