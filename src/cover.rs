@@ -92,9 +92,11 @@ const MEETINGS: usize = 256;
 /// triangle that may come within `r` of the segment from `a` to `b` (each slot `s` being
 /// `triangles[s]`, prepared from `source(s)`), and maybe more; a neighbour whose edge runs along
 /// one within the tolerance does. Only the triangles whose boxes meet the segment's, grown by
-/// `r`, are counted and looked at, and `slots` is the input order, so the result, limits
-/// included, does not depend on how `near` finds them (the tree's leaf size). Returns whether
-/// any edge was switched off.
+/// `r`, are looked at and counted towards an edge's limit, so below the overall budget (every
+/// triangle `near` gives counts towards that, which bounds the time) the result does not
+/// depend on how `near` finds them (the tree's leaf size); `slots` is the input order, so
+/// edges are cut off by the budget in an order every tree shares. Returns whether any edge was
+/// switched off.
 pub(crate) fn cover_open<'a, S: Scalar + 'a>(
     triangles: &mut [StandardTriangle<S>],
     slots: impl Iterator<Item = usize>,
@@ -120,8 +122,11 @@ pub(crate) fn cover_open<'a, S: Scalar + 'a>(
             let (a, b) = (src.vertices()[i], src.vertices()[(i + 1) % 3]);
             let tol = tolerance(t, i);
             let mut found: heapless::Vec<(S, S), STRETCHES> = heapless::Vec::new();
-            let (mut full, mut looked) = (false, 0);
+            let (mut full, mut looked, mut met) = (false, 0, 0);
             near(a, b, tol + tol, &mut |o| {
+                // Every triangle met counts towards the time budget, only those whose boxes
+                // meet the edge's towards the edge's own limit.
+                met += 1;
                 let (Some(ot), Some(osrc)) = (triangles.get(o), source(o)) else {
                     return;
                 };
@@ -136,7 +141,7 @@ pub(crate) fn cover_open<'a, S: Scalar + 'a>(
                     }
                 }
             });
-            spent += looked;
+            spent += met;
             if !full && spans(t, i, found.iter().copied()) {
                 crate::adjacency::deactivate(&mut triangles[s], i);
                 changed = true;

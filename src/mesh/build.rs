@@ -21,9 +21,9 @@ impl<'a, S: Scalar> Mesh<'a, S> {
     /// pair decides); an edge along more than 64 neighbours' edges, or with more than 256
     /// triangles near it (their boxes meeting its own, grown by a few roundings), stays active,
     /// and after `256 N` triangles met near edges in all (only where the triangles' boxes
-    /// overlap wholesale) the edges not yet checked, in input order, stay active. These limits
-    /// count by geometry and input order alone, so the active edges are the same whatever the
-    /// leaf size.
+    /// overlap wholesale) the edges not yet checked, in input order, stay active. The
+    /// per-edge limits count by geometry alone, so below the overall budget the active edges
+    /// are the same whatever the leaf size.
     ///
     /// `options`: a [`Degenerates`], or [`MeshOptions`] to choose the tree's leaf size too
     /// (leaves of up to two triangles unless told otherwise).
