@@ -261,6 +261,28 @@ impl Error {
         }
     }
 
+    /// The same [`Error::NaN`] or [`Error::OutOfRange`] about `input` (others unchanged): for
+    /// a conversion that found the value, named by the caller that knows what it was.
+    pub(crate) const fn of(self, input: Input) -> Self {
+        match self {
+            Error::NaN { triangle, .. } => Error::NaN { input, triangle },
+            Error::OutOfRange {
+                value,
+                min,
+                max,
+                triangle,
+                ..
+            } => Error::OutOfRange {
+                input,
+                value,
+                min,
+                max,
+                triangle,
+            },
+            other => other,
+        }
+    }
+
     /// Whether this is [`Error::Degenerate`], wherever it was found.
     pub const fn is_degenerate(&self) -> bool {
         matches!(self, Error::Degenerate { .. })
@@ -278,22 +300,28 @@ impl fmt::Display for Error {
             }
             Error::NaN { input, .. } => write!(f, "{input} is NaN"),
             Error::OutOfRange {
-                input: Input::Number,
-                value,
-                min,
-                max,
-                ..
-            } => write!(f, "{value} is outside the accepted range [{min}, {max}]"),
-            Error::OutOfRange {
                 input,
                 value,
                 min,
                 max,
                 ..
-            } => write!(
-                f,
-                "{input} is {value}, outside the accepted range [{min}, {max}]"
-            ),
+            } => {
+                if input == Input::Number {
+                    write!(f, "{value} is outside the accepted range [{min}, {max}]")?;
+                } else {
+                    write!(
+                        f,
+                        "{input} is {value}, outside the accepted range [{min}, {max}]"
+                    )?;
+                }
+                if saturated(value) {
+                    f.write_str(
+                        " (a fixed-point extreme: `Scalar::from_f64` saturates larger numbers, \
+                         and NaN, to it)",
+                    )?;
+                }
+                Ok(())
+            }
             Error::NegativeRadius { value } => write!(f, "the radius {value} is negative"),
             Error::Full { capacity: 1 } => f.write_str("full: it holds 1 triangle"),
             Error::Full { capacity } => write!(f, "full: it holds {capacity} triangles"),
@@ -327,3 +355,16 @@ impl fmt::Display for Error {
 }
 
 impl core::error::Error for Error {}
+
+/// Whether `value` is the largest or smallest value of a fixed-point scalar: what a conversion
+/// of a larger number, or of NaN, gives ([`Scalar::from_f64`](crate::Scalar::from_f64)).
+fn saturated(value: f64) -> bool {
+    use fixed::types::{I16F16, I32F32};
+    [
+        I16F16::MAX.to_num::<f64>(),
+        I16F16::MIN.to_num(),
+        I32F32::MAX.to_num(),
+        I32F32::MIN.to_num(),
+    ]
+    .contains(&value)
+}

@@ -109,7 +109,7 @@ pub enum HeightfieldError {
         /// The spacing given.
         value: f64,
     },
-    /// `unit`, the height step, is NaN or infinite.
+    /// `unit`, the height step, is zero, NaN or infinite.
     Unit {
         /// The unit given.
         value: f64,
@@ -161,7 +161,10 @@ impl fmt::Display for HeightfieldError {
             Self::Spacing { value } => {
                 write!(f, "heightfield spacing {value} is not positive and finite")
             }
-            Self::Unit { value } => write!(f, "heightfield height unit {value} is not finite"),
+            Self::Unit { value } => write!(
+                f,
+                "heightfield height unit {value} is not a finite nonzero step"
+            ),
             Self::Origin { value } => {
                 write!(f, "heightfield origin coordinate {value} is not finite")
             }

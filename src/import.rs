@@ -3,7 +3,7 @@
 //! triangles converted from one scalar to another; and (with `alloc`) shared vertices and
 //! indices welded from a triangle soup.
 
-use crate::{Error, Scalar, Scene, Triangle, Vec3};
+use crate::{Error, Input, Scalar, Scene, Triangle, Vec3};
 #[cfg(feature = "alloc")]
 use alloc::vec::Vec;
 
@@ -112,21 +112,32 @@ impl<S: Scalar> Triangle<S> {
     /// coordinate that `T` cannot hold within its safe range rather than saturating it.
     ///
     /// Errors: [`Error::NaN`]; [`Error::OutOfRange`] with the coordinate's value and `T`'s
-    /// range.
+    /// range. Either names the vertex ([`Input::Vertex`]); for one triangle of many,
+    /// [`Error::at`] adds its index (`t.try_cast().map_err(|e| e.at(i))`), as a mesh's build
+    /// names the triangles it refuses.
     ///
     /// ```
-    /// use ballcast::{Error, Triangle, Vec3};
+    /// use ballcast::{Error, Input, Triangle, Vec3};
     /// use fixed::types::I16F16;
     /// let v = Vec3::new;
     /// let t = Triangle::new(v(0.0f32, 0.0, 0.0), v(0.0, 0.0, 1.5), v(1.0, 0.0, 0.0));
     /// assert_eq!(t.try_cast::<I16F16>()?.v1.z, I16F16::from_num(1.5));
     /// let far = Triangle::new(v(0.0f32, 0.0, 0.0), v(0.0, 0.0, 1e6), v(1.0, 0.0, 0.0));
-    /// assert!(matches!(far.try_cast::<I16F16>(), Err(Error::OutOfRange { value: 1e6, .. })));
+    /// let err = far.try_cast::<I16F16>().map_err(|e| e.at(7)).unwrap_err();
+    /// assert!(matches!(err, Error::OutOfRange { input: Input::Vertex(1), value: 1e6, .. }));
+    /// assert_eq!(
+    ///     err.to_string(),
+    ///     "triangle 7: a coordinate of v1 is 1000000, outside the accepted range [-4096, 4096]"
+    /// );
     /// # Ok::<(), Error>(())
     /// ```
     pub fn try_cast<T: Scalar>(&self) -> Result<Triangle<T>, Error> {
-        let [a, b, c] = self.vertices().map(Vec3::try_cast::<T>);
-        Ok(Triangle::new(a?, b?, c?))
+        let cast = |k: u8, p: Vec3<S>| p.try_cast::<T>().map_err(|e| e.of(Input::Vertex(k)));
+        Ok(Triangle::new(
+            cast(0, self.v0)?,
+            cast(1, self.v1)?,
+            cast(2, self.v2)?,
+        ))
     }
 }
 

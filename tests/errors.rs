@@ -261,3 +261,22 @@ fn nan_is_its_own_cause_f32() {
 fn nan_is_its_own_cause_f64() {
     nan_is_its_own_cause::<f64>();
 }
+
+/// A NaN converted to fixed point becomes its largest value (`from_f64` saturates, so the
+/// value is refused rather than read as zero): the sentence says that its value is such an
+/// extreme, where the number alone (32767.99998474121) would not tell a porter what happened.
+/// A value the caller gave is not so marked.
+#[test]
+fn nan_converted_to_fixed_point_is_named_a_saturated_extreme() {
+    fn case<S: Scalar>() {
+        let nan = Vec3::new(S::from_f64(f64::NAN), S::ONE, S::ZERO);
+        let e = Character::new(nan, S::from_f64(0.5)).unwrap_err();
+        assert_eq!(e.input(), Some(Input::Position));
+        assert!(e.to_string().contains("saturates"), "{e}");
+        let far = Vec3::new(S::from_f64(2.0 * S::LIMIT.to_f64()), S::ONE, S::ZERO);
+        let e = Character::new(far, S::from_f64(0.5)).unwrap_err();
+        assert!(!e.to_string().contains("saturates"), "{e}");
+    }
+    case::<I16F16>();
+    case::<I32F32>();
+}

@@ -593,7 +593,38 @@ fn edge_cases_match_the_scan<S: Scalar>() {
     assert!(hits > 1000, "{hits} hits");
 }
 
+/// A height step of zero (what `I16F16::from_f64(1e-6)` gives) would lay every height in the
+/// origin's plane, a terrain flat whatever its heights: refused, naming the step.
+fn zero_height_unit_is_refused<S: Scalar>() {
+    let (heights, mut cells) = ([0i16, 0, 0, 3000], [0u8; 1]);
+    let tiny = S::from_f64(S::EPSILON.to_f64() / 4.0);
+    for unit in [S::ZERO, tiny] {
+        let built = Heightfield::build(
+            Vec3::ZERO,
+            S::ONE,
+            unit,
+            1,
+            1,
+            &heights,
+            |_, _| false,
+            &mut cells,
+        );
+        let refused = HeightfieldError::Unit {
+            value: unit.to_f64(),
+        };
+        if unit == S::ZERO {
+            assert_eq!(built.map(|_| ()), Err(refused));
+            assert!(refused.to_string().contains("nonzero"));
+        } else {
+            // A float keeps a tiny step: the top vertex sits at 3000 steps.
+            let top = built.unwrap().vertex(1, 1).unwrap().y.to_f64();
+            assert_eq!(top, S::from_f64(3000.0 * unit.to_f64()).to_f64());
+        }
+    }
+}
+
 meshes::per_scalar!(
+    zero_height_unit_is_refused,
     prepared_as_mesh,
     matches_linear_scan,
     tie_on_a_long_grazing_path,

@@ -102,8 +102,8 @@ fn collect_extend_and_clear<S: Scalar>() {
     assert_eq!(scene.try_extend(tris()), Err(Error::Full { capacity: 8 }));
 }
 
-/// A triangle converts to every scalar that can hold it, and is refused, with its value, by
-/// one that cannot.
+/// A triangle converts to every scalar that can hold it, and is refused, with its value and
+/// the vertex that holds it, by one that cannot.
 fn triangle_try_cast_refuses_what_does_not_fit<S: Scalar>() {
     let t: Triangle<f64> = Triangle::new(v([0.5; 3]), v([-2.25, 0.0, 1.0]), v([1.0, 3.0, 0.0]));
     let c = t.try_cast::<S>().unwrap();
@@ -114,7 +114,7 @@ fn triangle_try_cast_refuses_what_does_not_fit<S: Scalar>() {
     assert_eq!(
         t.try_cast::<S>(),
         Err(Error::OutOfRange {
-            input: ballcast::Input::Number,
+            input: ballcast::Input::Vertex(1),
             value: far,
             min: -l,
             max: l,

@@ -11,8 +11,17 @@ impl<'a, S: Scalar> Heightfield<'a, S> {
     /// cell's byte (active edges, [`HOLE`] where `hole(column, row)`) into the first
     /// `columns × rows` bytes of `cells`. Time `O(N)`, no allocation.
     ///
+    /// `heights` holds `(columns + 1) × (rows + 1)` values, row by row: vertex `(i, k)`
+    /// (column `i` along x, row `k` along z) at `heights[k (columns + 1) + i]`, at height
+    /// `origin.y + unit × heights[..]`. `spacing` is the cells' side, `unit` the height step.
+    /// In fixed point both are the scalar's nearest values (`0.3` in `I16F16` is 0.300003):
+    /// a power of two, or a multiple of the scalar's step, keeps the terrain exactly as drawn
+    /// in every scalar.
+    ///
     /// Errors: [`HeightfieldError`]: sizes that do not match or overflow, a spacing that is not
-    /// positive and finite, a grid beyond the scalar's range, a degenerate triangle.
+    /// positive and finite, a height step that is zero (as a fixed-point conversion makes of a
+    /// step below half the scalar's resolution) or not finite, a grid beyond the scalar's
+    /// range, a degenerate triangle.
     #[allow(clippy::too_many_arguments)]
     pub fn build(
         origin: Vec3<S>,
@@ -45,7 +54,8 @@ impl<'a, S: Scalar> Heightfield<'a, S> {
             let value = spacing.to_f64();
             return Err(HeightfieldError::Spacing { value });
         }
-        if !unit.is_finite() {
+        // A zero step would flatten every height into the origin's plane, whatever they say.
+        if !unit.is_finite() || unit == S::ZERO {
             let value = unit.to_f64();
             return Err(HeightfieldError::Unit { value });
         }
