@@ -36,9 +36,14 @@
 //! cells under the box of its grown path, culled by their heights and each triangle by a bound
 //! on the sweep's heights above its plane, the same answer.
 
+#[cfg(feature = "alloc")]
+mod buf;
 mod build;
 mod units;
 mod walk;
+
+#[cfg(feature = "alloc")]
+pub use buf::HeightfieldBuf;
 
 use crate::adjacency::deactivate;
 use crate::{Error, Scalar, StandardTriangle, Triangle, Vec3};

@@ -74,7 +74,8 @@
 //! - [`compact`] holds [`CompactMesh`], a mesh's tree over shared vertices and indexed
 //!   triangles (about 19 bytes per triangle), answering exactly as the prepared mesh.
 //! - [`heightfield`] holds [`Heightfield`], a terrain as a grid of 16-bit heights (about 1.5
-//!   bytes per triangle), answering exactly as the same triangles in a mesh.
+//!   bytes per triangle), answering exactly as the same triangles in a mesh; with the `alloc`
+//!   feature also `HeightfieldBuf`, one owning its heights and cell bytes.
 //! - [`compound`] holds [`Compound`], two geometries (a heightfield and the meshes standing on
 //!   it) cast against as one, answering exactly as one mesh of the same prepared triangles
 //!   (each part keeps its own active edges), and [`CompoundPart`], what can be one of them.
@@ -153,6 +154,8 @@ pub use compound::{Compound, CompoundPart, PartIndex};
 pub use contact::Features;
 pub use error::{Error, Input};
 pub use face::standard_face;
+#[cfg(feature = "alloc")]
+pub use heightfield::HeightfieldBuf;
 pub use heightfield::{Heightfield, HeightfieldError};
 pub use hit::{Contact, Hit};
 pub use merge::PLANES;

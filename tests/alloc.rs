@@ -1,4 +1,4 @@
-//! What the `alloc` feature adds: `MeshBuf` (a mesh owning its parts) and `import::weld` (shared
+//! What the `alloc` feature adds: `MeshBuf` and `HeightfieldBuf` (a mesh and a heightfield owning their parts) and `import::weld` (shared
 //! vertices from a triangle soup, for `CompactMesh`). Run by CI with
 //! `cargo test --all-features --test alloc`; without the feature this file is empty.
 #![cfg(feature = "alloc")]
@@ -7,7 +7,10 @@ mod common;
 mod meshes;
 
 use ballcast::import::weld;
-use ballcast::{CompactMesh, Degenerates, Error, MeshBuf, Sweep, Triangle, Vec3};
+use ballcast::{
+    CompactMesh, Compound, Degenerates, Error, Geometry, Heightfield, HeightfieldBuf,
+    HeightfieldError, MeshBuf, Sweep, Triangle, Vec3,
+};
 use common::{Rng, Tolerance, v};
 use fixed::types::{I16F16, I32F32};
 use meshes::{boxes, build_sided, heightfield, soup, tri};
@@ -97,12 +100,73 @@ fn weld_keeps_signed_zeros_apart_and_refuses_nans() {
     assert_eq!(weld(&soup), Err(e));
 }
 
+/// `HeightfieldBuf` holds what `Heightfield::build` makes of the same heights (cell bytes,
+/// bounds, class) and answers as it, alone, lent out and as a compound's part; it refuses
+/// what `build` refuses, with the same error.
+fn heightfield_buf_answers_as_the_borrowed_build<S: Tolerance>() {
+    let mut rng = Rng(0x4846_4255);
+    let (w, h) = (12u32, 9u32);
+    let heights: Vec<i16> = (0..(w + 1) * (h + 1))
+        .map(|_| rng.range(-40.0, 40.0) as i16)
+        .collect();
+    let hole = |i: u32, k: u32| (i + 2 * k).is_multiple_of(7);
+    let (o, sp, unit) = (v::<S>([-6.0, 0.5, -4.5]), S::ONE, S::from_f64(1.0 / 64.0));
+    let mut cells = vec![0u8; (w * h) as usize];
+    let borrowed = Heightfield::build(o, sp, unit, w, h, &heights, hole, &mut cells).unwrap();
+    let owned = HeightfieldBuf::build(o, sp, unit, w, h, heights.clone(), hole).unwrap();
+    assert_eq!(owned.heightfield(), borrowed, "{}", S::NAME);
+    let wall = MeshBuf::build(
+        &[tri::<S>([
+            [0.0, -2.0, -5.0],
+            [0.0, 3.0, 5.0],
+            [0.0, 3.0, -5.0],
+        ])],
+        Degenerates::Refuse,
+    )
+    .unwrap();
+    let (a, b) = (
+        Compound::new(&owned, &wall).unwrap(),
+        Compound::new(borrowed, &wall).unwrap(),
+    );
+    let mut hits = 0;
+    for _ in 0..500 {
+        let (p0, p1, r) = (rng.point(7.0), rng.point(7.0), rng.range(0.05, 1.0));
+        let sweep = Sweep::new(v::<S>(p0), v(p1), S::from_f64(r)).unwrap();
+        let x = owned.cast(&sweep);
+        assert_eq!(
+            format!("{x:?}"),
+            format!("{:?}", borrowed.cast(&sweep)),
+            "{}",
+            S::NAME
+        );
+        assert_eq!(
+            format!("{:?}", a.cast(&sweep)),
+            format!("{:?}", b.cast(&sweep))
+        );
+        hits += x.is_some() as usize;
+    }
+    assert!(hits > 50, "{hits}");
+    let short = HeightfieldBuf::build(o, sp, unit, w, h, heights[1..].to_vec(), hole);
+    let needed = ((w + 1) * (h + 1)) as usize;
+    let want = HeightfieldError::Size {
+        needed,
+        given: needed - 1,
+    };
+    assert_eq!(short.map(|_| ()), Err(want));
+    let huge = HeightfieldBuf::build(o, sp, unit, u32::MAX, u32::MAX, vec![], hole);
+    assert_eq!(huge.map(|_| ()), Err(HeightfieldError::TooMany));
+}
+
 macro_rules! per_scalar {
     ($($m:ident: $t:ty),*) => {$(mod $m {
         use super::*;
         #[test]
         fn welded_soups_compact_as_the_mesh() {
             welded_soups_compact::<$t>();
+        }
+        #[test]
+        fn heightfield_buf_answers_as_the_borrowed_build() {
+            super::heightfield_buf_answers_as_the_borrowed_build::<$t>();
         }
     })*};
 }
