@@ -115,6 +115,7 @@ extern crate alloc;
 
 mod adjacency;
 pub mod bvh;
+pub mod cache;
 mod check;
 pub mod compact;
 pub mod compound;
@@ -149,6 +150,7 @@ pub mod winding;
 mod xorshift;
 
 pub use bvh::{Grid, LeafSize, Node};
+pub use cache::{Cacheable, Cached, TriangleCache};
 pub use compact::{CompactError, CompactMesh, MeshIndex};
 pub use compound::{Compound, CompoundPart, PartIndex};
 pub use contact::Features;

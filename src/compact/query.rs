@@ -4,6 +4,7 @@
 
 use super::{CompactMesh, MeshIndex, TWO_SIDED};
 use crate::bvh::{self, Grid};
+use crate::cache::{Cacheable, Slots};
 use crate::compound::CompoundPart;
 use crate::contact::within_reach;
 use crate::cull::{Path, SOFT_F64, UnitBox, UnitHeights};
@@ -23,13 +24,21 @@ impl<S: Scalar, I: MeshIndex> CompactMesh<'_, S, I> {
     /// `f64` is software (a Cortex-M) the `f64` tests cost more than the preparations they
     /// save. Either way the answer is the same.
     pub(super) fn cast_culled(&self, sweep: &Sweep<S>, integer: bool) -> Option<SceneHit<S>> {
-        earliest_of(|acc, scan| self.offer(sweep, acc, scan, integer))
+        earliest_of(|acc, scan| self.offer(sweep, acc, scan, integer, None))
     }
 
     /// Offers the contacts of the triangles the tree reaches, culled as
-    /// [`cast_culled`](Self::cast_culled) says (all of them with `scan`); false where the tree
-    /// proved malformed (never from `compact`).
-    fn offer(&self, sweep: &Sweep<S>, acc: &mut Earliest<S>, scan: bool, integer: bool) -> bool {
+    /// [`cast_culled`](Self::cast_culled) says (all of them with `scan`), taking and keeping
+    /// prepared triangles in `cache` if there is one (by slot); false where the tree proved
+    /// malformed (never from `compact`).
+    pub(super) fn offer(
+        &self,
+        sweep: &Sweep<S>,
+        acc: &mut Earliest<S>,
+        scan: bool,
+        integer: bool,
+        cache: Option<Slots<'_, S>>,
+    ) -> bool {
         let corners = |s: usize| Some(self.triangles.get(s)?.map(I::get));
         if scan {
             let slot = |s: usize| -> Option<(usize, StandardTriangle<S>)> {
@@ -62,12 +71,15 @@ impl<S: Scalar, I: MeshIndex> CompactMesh<'_, S, I> {
         // heights often pass by: it tests no plane) the triangle's frame comes first, and the
         // rest of its preparation only where the heights leave a contact possible; behind the
         // `f64` plane test they seldom do, and the triangle is prepared at once.
+        // With a cache the whole triangle is prepared and kept, for the next query.
         let cast_slot = |s: usize, reach: S| -> Option<(usize, Hit<S>)> {
             let (t, byte) = (triangle(self.vertices, corners(s)?)?, *self.bytes.get(s)?);
-            let hit = if cull.is_err() {
+            let hit = if cull.is_err() && cache.is_none() {
                 cast_lazily(&t, byte, sweep, reach)
             } else {
-                prepare(&t, byte)?.cast_within(sweep, reach)
+                let st = prepare(&t, byte)?;
+                cache.inspect(|c| c.put(s, st));
+                st.cast_within(sweep, reach)
             };
             Some((self.order.get(s)?.get(), hit?))
         };
@@ -97,7 +109,14 @@ impl<S: Scalar, I: MeshIndex> CompactMesh<'_, S, I> {
         };
         bvh::leaves_along(self.nodes, &self.grid, sweep, acc, |acc, slots, _| {
             for s in slots {
-                if near(acc, s).is_some()
+                // A kept triangle is cast at once: its heights cull as the box and plane would.
+                if let Some(kept) = cache.and_then(|c| c.get(s)) {
+                    if let Some(hit) = kept.cast_within(sweep, acc.reach())
+                        && let Some(i) = self.order.get(s)
+                    {
+                        acc.offer(i.get(), hit);
+                    }
+                } else if near(acc, s).is_some()
                     && let Some((i, hit)) = cast_slot(s, acc.reach())
                 {
                     acc.offer(i, hit);
@@ -153,7 +172,13 @@ impl<S: Scalar, I: MeshIndex> CompoundPart<S> for CompactMesh<'_, S, I> {
     }
 
     fn offer_contacts(&self, sweep: &Sweep<S>, acc: &mut Earliest<S>, scan: bool) -> bool {
-        self.offer(sweep, acc, scan, SOFT_F64)
+        self.offer(sweep, acc, scan, SOFT_F64, None)
+    }
+}
+
+impl<S: Scalar, I: MeshIndex> Cacheable<S> for CompactMesh<'_, S, I> {
+    fn offer_cached(&self, sweep: &Sweep<S>, acc: &mut Earliest<S>, cache: Slots<'_, S>) -> bool {
+        self.offer(sweep, acc, false, SOFT_F64, Some(cache))
     }
 }
 

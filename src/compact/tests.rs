@@ -4,8 +4,9 @@
 use super::CompactMesh;
 use crate::bvh::nodes_for;
 use crate::cull::{Path, UnitBox};
+use crate::merge::earliest_of;
 use crate::xorshift::Rng;
-use crate::{Degenerates, Mesh, Node, Scalar, Sweep, Triangle, Vec3};
+use crate::{Degenerates, Mesh, Node, Scalar, Sweep, Triangle, TriangleCache, Vec3};
 use fixed::types::{I16F16, I32F32};
 
 /// Uniform in `[0, 1)`.
@@ -80,6 +81,7 @@ fn integer_culling_answers_alike<S: Scalar>() {
     let (mut t, mut o, mut b) = (vec![[0u16; 3]; m], vec![0u16; m], vec![0u8; m]);
     let compact = CompactMesh::compact(&mesh, &vertices, &indices, &mut t, &mut o, &mut b).unwrap();
     let (mut hits, mut passed) = (0, 0);
+    let cache: TriangleCache<S, 8> = TriangleCache::new();
     for k in 0..3000 {
         let p0 = [
             10.0 * unit(&mut rng) - 5.0,
@@ -104,13 +106,21 @@ fn integer_culling_answers_alike<S: Scalar>() {
         assert_eq!(format!("{x:?}"), format!("{y:?}"), "{p0:?} -> {p1:?}");
         assert_eq!(format!("{x:?}"), format!("{:?}", mesh.cast(&sweep)));
         hits += x.is_some() as usize;
+        // With a cache of a few slots (triangles evict each other), behind either cull, twice:
+        // once preparing and keeping, once from what was kept.
+        for integer in [true, false, true, false] {
+            let c = Some(cache.slots());
+            let z = earliest_of(|acc, scan| compact.offer(&sweep, acc, scan, integer, c));
+            assert_eq!(format!("{z:?}"), format!("{x:?}"), "cached");
+        }
         // The integer box does pass triangles by (the test would prove nothing otherwise).
         let units = UnitBox::new(&sweep, Path::pad(&sweep, 16.0, 0)).unwrap();
         passed += src.iter().filter(|t| units.misses(t.vertices())).count();
     }
     assert!(
-        hits > 600 && passed > 1000 * n,
-        "{hits} hits, {passed} passed by"
+        hits > 600 && passed > 1000 * n && cache.hits() > 5000,
+        "{hits} hits, {passed} passed by, {} from the cache",
+        cache.hits()
     );
     // Grazing: a short move beside each lone triangle's extreme vertex along an axis, at the
     // radius plus -3 to 3 steps of the scalar, where a box grown by a step too little would

@@ -10,6 +10,7 @@
 use super::{HOLE, Heightfield, half};
 use crate::adjacency::deactivate;
 use crate::bvh;
+use crate::cache::Slots;
 use crate::contact::within_reach;
 use crate::cull::{UnitHeights, unit_bits};
 use crate::merge::Earliest;
@@ -107,6 +108,7 @@ impl UnitGrid {
         field: &Heightfield<'_, S>,
         sweep: &Sweep<S>,
         acc: &mut Earliest<S>,
+        cache: Option<Slots<'_, S>>,
     ) -> bool {
         if self.clear() {
             return true;
@@ -141,12 +143,30 @@ impl UnitGrid {
                     continue;
                 };
                 for t in [2 * c, 2 * c + 1] {
-                    let tri = half(corners, t % 2);
                     let reach = acc.reach();
+                    // A kept triangle is cast at once: its heights cull as the bound would.
+                    if let Some(kept) = cache.and_then(|c| c.get(t)) {
+                        if let Some(hit) = kept.cast_within(sweep, reach) {
+                            acc.offer(t, hit);
+                        }
+                        continue;
+                    }
+                    let tri = half(corners, t % 2);
                     let out = bound
                         .as_ref()
                         .is_some_and(|b| b.rule_out(sweep, tri.vertices(), reach, true));
-                    if !out && let Some(hit) = cast_lazily(&tri, t, byte, sweep, reach) {
+                    if out {
+                        continue;
+                    }
+                    // With a cache the whole triangle is prepared and kept, for the next query.
+                    let hit = match cache {
+                        Some(c) => Heightfield::prepare_from(corners, t, byte).and_then(|st| {
+                            c.put(t, st);
+                            st.cast_within(sweep, reach)
+                        }),
+                        None => cast_lazily(&tri, t, byte, sweep, reach),
+                    };
+                    if let Some(hit) = hit {
                         acc.offer(t, hit);
                     }
                 }
@@ -225,6 +245,7 @@ mod tests {
         let point =
             |p: [f64; 3]| Vec3::new(S::from_f64(p[0]), S::from_f64(p[1]), S::from_f64(p[2]));
         let (mut clear, mut hits, mut compared) = (0, 0, 0);
+        let cache: crate::TriangleCache<S, 8> = crate::TriangleCache::new();
         for k in 0..30_000 {
             let r = 0.05 + 0.45 * (rng.signed() + 1.0) / 2.0;
             let (x, z) = (3.5 * rng.signed(), 2.5 * rng.signed());
@@ -270,7 +291,7 @@ mod tests {
             };
             clear += grid.clear() as usize;
             let mut taken = true;
-            let hit = earliest(|acc| taken &= grid.offer(&field, &sweep, acc));
+            let hit = earliest(|acc| taken &= grid.offer(&field, &sweep, acc, None));
             if taken {
                 compared += 1;
                 assert_eq!(
@@ -278,12 +299,20 @@ mod tests {
                     format!("{walk:?}"),
                     "{p0:?} -> {p1:?} r {r}"
                 );
+                // With a cache of a few slots (triangles evict each other), twice: once
+                // preparing and keeping, once from what was kept.
+                for _ in 0..2 {
+                    let c = Some(cache.slots());
+                    let cached = earliest(|acc| taken &= grid.offer(&field, &sweep, acc, c));
+                    assert_eq!(format!("{cached:?}"), format!("{walk:?}"), "cached");
+                }
             }
         }
         assert!(
             clear > 1_000 && hits > 5_000 && compared > 25_000,
             "{clear} clear, {hits} hits, {compared} compared"
         );
+        assert!(cache.hits() > 10_000, "{} hits", cache.hits());
     }
 
     #[test]

@@ -3,6 +3,7 @@
 
 use super::units::UnitGrid;
 use super::{HOLE, Heightfield};
+use crate::cache::{Cacheable, Slots};
 use crate::compound::CompoundPart;
 use crate::cull::{Path, SOFT_F64, is_less};
 use crate::merge::{Earliest, earliest};
@@ -34,21 +35,23 @@ impl<S: Scalar> Heightfield<'_, S> {
     /// order, bit for bit, simultaneous contacts merged as in [`Scene::cast`](crate::Scene::cast).
     /// Its cost grows with the cells the grown path crosses.
     pub fn cast(&self, sweep: &Sweep<S>) -> Option<SceneHit<S>> {
-        earliest(|acc| self.offer(sweep, acc))
+        earliest(|acc| self.offer(sweep, acc, None))
     }
 
-    /// Offers the contacts of the triangles under the path.
-    fn offer(&self, sweep: &Sweep<S>, acc: &mut Earliest<S>) {
+    /// Offers the contacts of the triangles under the path, taking and keeping prepared
+    /// triangles in `cache` if there is one.
+    fn offer(&self, sweep: &Sweep<S>, acc: &mut Earliest<S>, cache: Option<Slots<'_, S>>) {
         if self.cells_count().is_none() {
             return;
         }
         // Where `f64` is software, a fixed-point sweep's short query runs in integers.
-        if SOFT_F64 && UnitGrid::new(self, sweep).is_some_and(|g| g.offer(self, sweep, acc)) {
+        if SOFT_F64 && UnitGrid::new(self, sweep).is_some_and(|g| g.offer(self, sweep, acc, cache))
+        {
             return;
         }
         let path = Path::new(sweep, self.extent(), self.class);
         let o = self.origin.to_array().map(S::to_f64);
-        self.walk(sweep, &path, o, acc)
+        self.walk(sweep, &path, o, acc, cache)
     }
 
     /// The largest magnitude of any coordinate of the grid.
@@ -66,7 +69,14 @@ impl<S: Scalar> Heightfield<'_, S> {
     /// Visits the cells the grown path crosses within the terrain's box, row by row in the
     /// direction of travel, and casts the triangles whose boxes (and planes, and halves of the
     /// cell) the path comes near before the current reach.
-    fn walk(&self, sweep: &Sweep<S>, path: &Path, o: [f64; 3], acc: &mut Earliest<S>) {
+    fn walk(
+        &self,
+        sweep: &Sweep<S>,
+        path: &Path,
+        o: [f64; 3],
+        acc: &mut Earliest<S>,
+        cache: Option<Slots<'_, S>>,
+    ) {
         let (w, h) = (self.columns as i64, self.rows as i64);
         let (sp, unit) = (self.spacing.to_f64(), self.unit.to_f64());
         let limit = |acc: &Earliest<S>| acc.reach().to_f64() + 1.0 / (1u64 << 50) as f64;
@@ -181,15 +191,21 @@ impl<S: Scalar> Heightfield<'_, S> {
                 let mut corners = None;
                 for (half, v) in [(0, [p00, p01, p11]), (1, [p00, p11, p10])] {
                     let t = 2 * c + half;
-                    if !(beside_diagonal(path, [x[0], z[0]], half == 0, span)
-                        && path.near_plane(v, span, true))
+                    // A kept triangle is cast at once: its heights cull as the plane would.
+                    let kept = cache.and_then(|c| c.get(t));
+                    if kept.is_none()
+                        && !(beside_diagonal(path, [x[0], z[0]], half == 0, span)
+                            && path.near_plane(v, span, true))
                     {
                         continue;
                     }
-                    let q = *corners.get_or_insert_with(|| self.corners(i as u32, k as u32));
-                    if let Some(tri) = q.and_then(|q| Self::prepare_from(q, t, byte))
-                        && let Some(hit) = tri.cast_within(sweep, acc.reach())
-                    {
+                    let tri = kept.or_else(|| {
+                        let q = *corners.get_or_insert_with(|| self.corners(i as u32, k as u32));
+                        let tri = Self::prepare_from(q?, t, byte)?;
+                        cache.inspect(|c| c.put(t, tri));
+                        Some(tri)
+                    });
+                    if let Some(hit) = tri.and_then(|tri| tri.cast_within(sweep, acc.reach())) {
                         acc.offer(t, hit);
                     }
                 }
@@ -205,7 +221,14 @@ impl<S: Scalar> CompoundPart<S> for Heightfield<'_, S> {
     }
 
     fn offer_contacts(&self, sweep: &Sweep<S>, acc: &mut Earliest<S>, _: bool) -> bool {
-        self.offer(sweep, acc);
+        self.offer(sweep, acc, None);
+        true
+    }
+}
+
+impl<S: Scalar> Cacheable<S> for Heightfield<'_, S> {
+    fn offer_cached(&self, sweep: &Sweep<S>, acc: &mut Earliest<S>, cache: Slots<'_, S>) -> bool {
+        self.offer(sweep, acc, Some(cache));
         true
     }
 }

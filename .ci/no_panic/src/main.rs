@@ -1,6 +1,6 @@
 //! `#[no_mangle]` wrappers around `StandardTriangle::new`, `Sweep::new`, `face_collision`, `cast`,
 //! the scene-level casts and the box queries (`penetration`, `winding`) of a slice, a `Mesh`, a
-//! `CompactMesh` and a `Heightfield`, the cast of a `Compound` of the four, for every scalar, linked for a bare-metal target in release. Without the default `triangle`
+//! `CompactMesh` and a `Heightfield`, the cast of a `Compound` of the four and of the last two `Cached`, for every scalar, linked for a bare-metal target in release. Without the default `triangle`
 //! feature the triangle constructor is left out: the face wrappers then take their triangle from
 //! an opaque static, so the face test is checked on its own. The panic handler calls a function
 //! that does not exist, so the link fails if any panic path survives optimisation: every
@@ -13,8 +13,8 @@
 use ballcast::penetration::{Penetration, penetration};
 use ballcast::winding::{Winding, winding};
 use ballcast::{
-    CompactMesh, Compound, Error, Geometry, Grid, Heightfield, Hit, Mesh, SceneHit,
-    StandardTriangle, Sweep, Triangle, Vec3,
+    Cached, CompactMesh, Compound, Error, Geometry, Grid, Heightfield, Hit, Mesh, SceneHit,
+    StandardTriangle, Sweep, Triangle, TriangleCache, Vec3,
     slide::{Character, Slide},
 };
 use core::hint::black_box;
@@ -85,17 +85,22 @@ macro_rules! wrappers {
             c: &CompactMesh<'_, $t>,
             h: &Heightfield<'_, $t>,
             s: &Sweep<$t>,
-        ) -> [Option<SceneHit<$t>>; 5] {
+        ) -> [Option<SceneHit<$t>>; 7] {
             // And all four as one geometry, nested.
             let all = Compound::new(t, m)
                 .and_then(|a| Compound::new(a, Compound::new(c, h)?))
                 .ok();
+            // The two forms that prepare triangles on the spot, with a cache beside them.
+            let (mut kc, mut kh): (TriangleCache<$t, 8>, TriangleCache<$t, 8>) =
+                (TriangleCache::new(), TriangleCache::new());
             [
                 t.cast(s),
                 m.cast(s),
                 c.cast(s),
                 h.cast(s),
                 all.and_then(|a| a.cast(s)),
+                Cached::new(*c, &mut kc).cast(s),
+                Cached::new(*h, &mut kh).cast(s),
             ]
         }
 
