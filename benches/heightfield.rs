@@ -1,11 +1,16 @@
 //! `Heightfield` and `CompactMesh` against the prepared `Mesh` of the same triangles: the terrain of
 //! `benches/mesh.rs` with its heights in steps of 1/1024 (so both hold exactly the same
 //! triangles), at 512 / 8 192 / 100 352 triangles, `f32` and `I16F16`, short moves and long
-//! casts in the same groups; the bytes per triangle of each form on stderr.
+//! casts in the same groups, and a character's walk of 256 frames, where the heightfield and
+//! the compact mesh run with a `TriangleCache` of 32 slots beside them too; the bytes per
+//! triangle of each form on stderr.
 //!
 //! Run: `cargo bench --bench heightfield -- --warm-up-time 1 --measurement-time 3`
 
-use ballcast::{CompactMesh, Geometry, Mesh, MeshIndex, Scalar, StandardTriangle, Sweep};
+use ballcast::{
+    Cacheable, Cached, CompactMesh, Geometry, Mesh, MeshIndex, Scalar, StandardTriangle, Sweep,
+    TriangleCache,
+};
 use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
 use fixed::types::I16F16;
 use std::hint::black_box;
@@ -88,6 +93,36 @@ fn groups<S: Scalar, I: MeshIndex + Default>(
         });
         g.finish();
     }
+    // The character loop comes back to the same triangles: with a cache, each is prepared
+    // once while the ball stays near it. Each walk lends the cache anew (emptied).
+    let walked = terrain::walk(mesh);
+    assert_eq!(terrain::walk(&hf), walked);
+    assert_eq!(terrain::walk(&compact), walked);
+    let mut g = c.benchmark_group(format!("terrain_character_{n}"));
+    g.throughput(Throughput::Elements(terrain::FRAMES as u64));
+    g.bench_function(BenchmarkId::new("mesh", name), |b| {
+        b.iter(|| terrain::walk(mesh))
+    });
+    g.bench_function(BenchmarkId::new("heightfield", name), |b| {
+        b.iter(|| terrain::walk(&hf))
+    });
+    g.bench_function(BenchmarkId::new("heightfield_cached", name), |b| {
+        b.iter(|| cached_walk(hf, walked))
+    });
+    g.bench_function(BenchmarkId::new("compact", name), |b| {
+        b.iter(|| terrain::walk(&compact))
+    });
+    g.bench_function(BenchmarkId::new("compact_cached", name), |b| {
+        b.iter(|| cached_walk(compact, walked))
+    });
+    g.finish();
+}
+
+/// The walk on `geometry` with a cache of 32 slots beside it, checked against `walked`.
+fn cached_walk<S: Scalar, G: Cacheable<S>>(geometry: G, walked: (ballcast::Vec3<S>, usize)) {
+    let mut cache: TriangleCache<S, 32> = TriangleCache::new();
+    let level = Cached::new(geometry, &mut cache);
+    assert_eq!(terrain::walk(&level), walked);
 }
 
 fn benches(c: &mut Criterion) {

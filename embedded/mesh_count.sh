@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Instructions per query on the Cortex-M0 (thumbv6m-none-eabi) for baked I16F16 meshes, from
 # the bare-metal `mesh_counts` program: the 96-triangle ramp room as a linear scan and as a mesh,
-# the 2 168-triangle arena as a mesh and as a compact mesh, the 64 × 64 terrain heightfield (a
-# query is one `Geometry::cast` of `move_and_slide`).
+# the 2 168-triangle arena as a mesh and as a compact mesh, the 64 × 64 terrain heightfield, the
+# last two also with a `TriangleCache` beside them (a query is one `Geometry::cast` of
+# `move_and_slide`).
 #
 #   embedded/mesh_count.sh        # prints a markdown table; several minutes (singlestep log)
 #
@@ -45,3 +46,6 @@ row query_arena_mesh "arena, 2 168 triangles, mesh"
 row query_arena_compact "arena, 2 168 triangles, compact mesh"
 row query_terrain_air "terrain, 8 192 triangles, heightfield, falling (steps 1-100)"
 row query_terrain_ground "terrain, 8 192 triangles, heightfield, on the ground (steps 101-300)"
+row query_arena_compact_cached "arena, compact mesh, with a cache of 32 slots"
+row query_terrain_air_cached "terrain heightfield, falling, with a cache of 32 slots"
+row query_terrain_ground_cached "terrain heightfield, on the ground, with a cache of 32 slots"

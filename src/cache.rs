@@ -93,6 +93,35 @@ pub struct Slots<'a, S: Scalar> {
     misses: &'a Cell<u32>,
 }
 
+/// Where a form's query takes and keeps prepared triangles: a cache's [`Slots`], or `()` for
+/// none, so that the query without a cache compiles to what it was before caches existed.
+pub(crate) trait Keep<S: Scalar>: Copy {
+    /// Whether triangles are kept at all.
+    const ON: bool;
+    /// Triangle `index`, if kept.
+    fn get(&self, index: usize) -> Option<StandardTriangle<S>>;
+    /// Keeps `triangle`, just prepared, as triangle `index`.
+    fn put(&self, index: usize, triangle: StandardTriangle<S>);
+}
+
+impl<S: Scalar> Keep<S> for () {
+    const ON: bool = false;
+    fn get(&self, _: usize) -> Option<StandardTriangle<S>> {
+        None
+    }
+    fn put(&self, _: usize, _: StandardTriangle<S>) {}
+}
+
+impl<S: Scalar> Keep<S> for Slots<'_, S> {
+    const ON: bool = true;
+    fn get(&self, index: usize) -> Option<StandardTriangle<S>> {
+        Slots::get(self, index)
+    }
+    fn put(&self, index: usize, triangle: StandardTriangle<S>) {
+        Slots::put(self, index, triangle)
+    }
+}
+
 impl<S: Scalar> Slots<'_, S> {
     /// The slot of triangle `index`: Knuth's multiplicative hash, its top bits scaled to the
     /// slot count (in 32 bits where the count allows: a Cortex-M0 multiplies 64 bits in software).

@@ -33,6 +33,29 @@ pub fn heightfield(w: usize) -> Vec<[P; 3]> {
     out
 }
 
+/// Frames of the character loop per walk.
+pub const FRAMES: usize = 256;
+
+/// A character's walk: a ball of radius 0.4 dropped 1.5 above the terrain's centre, walking at
+/// 3 units a second on a slowly turning heading, `FRAMES` frames of 1/64 s (`Character`:
+/// slides, the press into the floor, the ground probe and the snap, about five casts a frame).
+/// Returns where it ends, and on how many frames it stood on the ground.
+pub fn walk<S: ballcast::Scalar, G: ballcast::Geometry<S>>(
+    level: &G,
+) -> (ballcast::Vec3<S>, usize) {
+    let v = |x: f64, y: f64, z: f64| super::inputs::v::<S>([x, y, z]);
+    let mut me = ballcast::slide::Character::new(v(0.0, 1.5, 0.0), S::from_f64(0.4)).unwrap();
+    let (gravity, dt) = (v(0.0, -9.81, 0.0), S::from_f64(1.0 / 64.0));
+    let mut grounded = 0;
+    for f in 0..FRAMES {
+        let a = f as f64 / 40.0;
+        me.update(level, v(3.0 * a.cos(), 0.0, 3.0 * a.sin()), gravity, dt)
+            .unwrap();
+        grounded += me.is_grounded() as usize;
+    }
+    (me.position, grounded)
+}
+
 /// Short moves: radius 0.2–0.5, starting 0.1–0.3 above the ground, 0.5 forward and 0.5 down.
 pub fn short_moves(w: usize, rng: &mut Rng) -> Vec<Path> {
     let half = w as f64 / 2.0 - 1.0;

@@ -4,7 +4,7 @@
 
 use super::{CompactMesh, MeshIndex, TWO_SIDED};
 use crate::bvh::{self, Grid};
-use crate::cache::{Cacheable, Slots};
+use crate::cache::{Cacheable, Keep, Slots};
 use crate::compound::CompoundPart;
 use crate::contact::within_reach;
 use crate::cull::{Path, SOFT_F64, UnitBox, UnitHeights};
@@ -24,20 +24,20 @@ impl<S: Scalar, I: MeshIndex> CompactMesh<'_, S, I> {
     /// `f64` is software (a Cortex-M) the `f64` tests cost more than the preparations they
     /// save. Either way the answer is the same.
     pub(super) fn cast_culled(&self, sweep: &Sweep<S>, integer: bool) -> Option<SceneHit<S>> {
-        earliest_of(|acc, scan| self.offer(sweep, acc, scan, integer, None))
+        earliest_of(|acc, scan| self.offer(sweep, acc, scan, integer, ()))
     }
 
     /// Offers the contacts of the triangles the tree reaches, culled as
     /// [`cast_culled`](Self::cast_culled) says (all of them with `scan`), taking and keeping
     /// prepared triangles in `cache` if there is one (by slot); false where the tree proved
     /// malformed (never from `compact`).
-    pub(super) fn offer(
+    pub(super) fn offer<K: Keep<S>>(
         &self,
         sweep: &Sweep<S>,
         acc: &mut Earliest<S>,
         scan: bool,
         integer: bool,
-        cache: Option<Slots<'_, S>>,
+        cache: K,
     ) -> bool {
         let corners = |s: usize| Some(self.triangles.get(s)?.map(I::get));
         if scan {
@@ -74,11 +74,11 @@ impl<S: Scalar, I: MeshIndex> CompactMesh<'_, S, I> {
         // With a cache the whole triangle is prepared and kept, for the next query.
         let cast_slot = |s: usize, reach: S| -> Option<(usize, Hit<S>)> {
             let (t, byte) = (triangle(self.vertices, corners(s)?)?, *self.bytes.get(s)?);
-            let hit = if cull.is_err() && cache.is_none() {
+            let hit = if cull.is_err() && !K::ON {
                 cast_lazily(&t, byte, sweep, reach)
             } else {
                 let st = prepare(&t, byte)?;
-                cache.inspect(|c| c.put(s, st));
+                cache.put(s, st);
                 st.cast_within(sweep, reach)
             };
             Some((self.order.get(s)?.get(), hit?))
@@ -110,7 +110,7 @@ impl<S: Scalar, I: MeshIndex> CompactMesh<'_, S, I> {
         bvh::leaves_along(self.nodes, &self.grid, sweep, acc, |acc, slots, _| {
             for s in slots {
                 // A kept triangle is cast at once: its heights cull as the box and plane would.
-                if let Some(kept) = cache.and_then(|c| c.get(s)) {
+                if let Some(kept) = cache.get(s) {
                     if let Some(hit) = kept.cast_within(sweep, acc.reach())
                         && let Some(i) = self.order.get(s)
                     {
@@ -172,13 +172,13 @@ impl<S: Scalar, I: MeshIndex> CompoundPart<S> for CompactMesh<'_, S, I> {
     }
 
     fn offer_contacts(&self, sweep: &Sweep<S>, acc: &mut Earliest<S>, scan: bool) -> bool {
-        self.offer(sweep, acc, scan, SOFT_F64, None)
+        self.offer(sweep, acc, scan, SOFT_F64, ())
     }
 }
 
 impl<S: Scalar, I: MeshIndex> Cacheable<S> for CompactMesh<'_, S, I> {
     fn offer_cached(&self, sweep: &Sweep<S>, acc: &mut Earliest<S>, cache: Slots<'_, S>) -> bool {
-        self.offer(sweep, acc, false, SOFT_F64, Some(cache))
+        self.offer(sweep, acc, false, SOFT_F64, cache)
     }
 }
 

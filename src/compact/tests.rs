@@ -109,7 +109,7 @@ fn integer_culling_answers_alike<S: Scalar>() {
         // With a cache of a few slots (triangles evict each other), behind either cull, twice:
         // once preparing and keeping, once from what was kept.
         for integer in [true, false, true, false] {
-            let c = Some(cache.slots());
+            let c = cache.slots();
             let z = earliest_of(|acc, scan| compact.offer(&sweep, acc, scan, integer, c));
             assert_eq!(format!("{z:?}"), format!("{x:?}"), "cached");
         }

@@ -10,7 +10,7 @@
 use super::{HOLE, Heightfield, half};
 use crate::adjacency::deactivate;
 use crate::bvh;
-use crate::cache::Slots;
+use crate::cache::Keep;
 use crate::contact::within_reach;
 use crate::cull::{UnitHeights, unit_bits};
 use crate::merge::Earliest;
@@ -103,12 +103,12 @@ impl UnitGrid {
 
     /// Offers the contacts the `f64` walk would offer; false, offering none (take that walk),
     /// where the box spans more than [`MAX_CELLS`] cells.
-    pub(super) fn offer<S: Scalar>(
+    pub(super) fn offer<S: Scalar, K: Keep<S>>(
         &self,
         field: &Heightfield<'_, S>,
         sweep: &Sweep<S>,
         acc: &mut Earliest<S>,
-        cache: Option<Slots<'_, S>>,
+        cache: K,
     ) -> bool {
         if self.clear() {
             return true;
@@ -124,6 +124,8 @@ impl UnitGrid {
             return false;
         }
         let bound = UnitHeights::new(sweep);
+        // The heights a cell must span to reach the box (`None`: not known, every cell may).
+        let span = height_span(o[1], self.unit, (lo[1], hi[1]));
         let d = sweep.p1() - sweep.p0();
         let w = field.columns as usize;
         // Rows, then columns, in the direction of travel: near cells first, so that early
@@ -136,7 +138,7 @@ impl UnitGrid {
                 let Some(&byte) = field.cells.get(c).filter(|&&b| b & HOLE == 0) else {
                     continue;
                 };
-                if !self.cell_in_reach(field, i as u32, k as u32) {
+                if !cell_in_reach(field, span, i as u32, k as u32) {
                     continue;
                 }
                 let Some(corners) = field.corners(i as u32, k as u32) else {
@@ -145,7 +147,7 @@ impl UnitGrid {
                 for t in [2 * c, 2 * c + 1] {
                     let reach = acc.reach();
                     // A kept triangle is cast at once: its heights cull as the bound would.
-                    if let Some(kept) = cache.and_then(|c| c.get(t)) {
+                    if let Some(kept) = cache.get(t) {
                         if let Some(hit) = kept.cast_within(sweep, reach) {
                             acc.offer(t, hit);
                         }
@@ -159,12 +161,13 @@ impl UnitGrid {
                         continue;
                     }
                     // With a cache the whole triangle is prepared and kept, for the next query.
-                    let hit = match cache {
-                        Some(c) => Heightfield::prepare_from(corners, t, byte).and_then(|st| {
-                            c.put(t, st);
+                    let hit = if K::ON {
+                        Heightfield::prepare_from(corners, t, byte).and_then(|st| {
+                            cache.put(t, st);
                             st.cast_within(sweep, reach)
-                        }),
-                        None => cast_lazily(&tri, t, byte, sweep, reach),
+                        })
+                    } else {
+                        cast_lazily(&tri, t, byte, sweep, reach)
                     };
                     if let Some(hit) = hit {
                         acc.offer(t, hit);
@@ -174,23 +177,49 @@ impl UnitGrid {
         }
         true
     }
+}
 
-    /// Whether the cell's heights come within the path's box (its x and z spans do).
-    fn cell_in_reach<S: Scalar>(&self, field: &Heightfield<'_, S>, i: u32, k: u32) -> bool {
-        let w = field.columns as usize + 1;
-        let at = |di: u32, dk: u32| {
-            let v = (k + dk) as usize * w + (i + di) as usize;
-            field.heights.get(v).copied().unwrap_or(0)
-        };
-        let hs = [at(0, 0), at(0, 1), at(1, 1), at(1, 0)];
-        let (l, u) = hs
-            .iter()
-            .fold((i16::MAX, i16::MIN), |(l, u), &h| (l.min(h), u.max(h)));
-        // Heights map to y monotonically: the two extremes bound the four.
-        let y = |h: i16| self.origin[1].saturating_add(self.unit.saturating_mul(h as i64));
-        let (a, b) = (y(l), y(u));
-        !(a.max(b) < self.lo[1] || a.min(b) > self.hi[1])
+/// Whether the heights of the cell at column `i`, row `k` span some of `span` (see
+/// [`height_span`]; `None`: any may).
+fn cell_in_reach<S: Scalar>(
+    field: &Heightfield<'_, S>,
+    span: Option<(i64, i64)>,
+    i: u32,
+    k: u32,
+) -> bool {
+    let w = field.columns as usize + 1;
+    let at = |di: u32, dk: u32| {
+        let v = (k + dk) as usize * w + (i + di) as usize;
+        field.heights.get(v).copied().unwrap_or(0)
+    };
+    let hs = [at(0, 0), at(0, 1), at(1, 1), at(1, 0)];
+    let (l, u) = hs
+        .iter()
+        .fold((i16::MAX, i16::MIN), |(l, u), &h| (l.min(h), u.max(h)));
+    // Heights map to y linearly: the cell's span of heights meets the box's, or not.
+    span.is_none_or(|(first, last)| u as i64 >= first && l as i64 <= last)
+}
+
+/// The real heights `h` whose vertices' y, `origin + unit h`, lies within `lo..=hi`, as the
+/// integers `[first, last]` a span of integer heights must meet to hold one of them (empty,
+/// `first > last`, if none does); `None` where a term leaves 64 bits. Two divisions per query,
+/// where comparing each cell's y would take two 64-bit products (library calls on a
+/// Cortex-M0).
+fn height_span(origin: i64, unit: i64, (lo, hi): (i64, i64)) -> Option<(i64, i64)> {
+    // unit h within [a, b]; with a negative unit, (-unit) h within [-b, -a].
+    let (a, b) = (lo.checked_sub(origin)?, hi.checked_sub(origin)?);
+    let (a, b, unit) = if unit < 0 {
+        (b.checked_neg()?, a.checked_neg()?, unit.checked_neg()?)
+    } else {
+        (a, b, unit)
+    };
+    if unit == 0 {
+        let all = a <= 0 && 0 <= b;
+        return Some(if all { (i64::MIN, i64::MAX) } else { (1, 0) });
     }
+    // h within [ceil(a / unit), floor(b / unit)]: floors of a positive divisor's quotients.
+    let first = a.checked_neg()?.div_euclid(unit).checked_neg()?;
+    Some((first, b.div_euclid(unit)))
 }
 
 /// The contact of triangle `t` of a heightfield (`byte` its cell's), prepared in two halves
@@ -218,7 +247,7 @@ fn cast_lazily<S: Scalar>(
 
 #[cfg(test)]
 mod tests {
-    use super::UnitGrid;
+    use super::{UnitGrid, height_span};
     use crate::merge::earliest;
     use crate::xorshift::Rng;
     use crate::{Heightfield, Scalar, Sweep, Vec3};
@@ -291,7 +320,7 @@ mod tests {
             };
             clear += grid.clear() as usize;
             let mut taken = true;
-            let hit = earliest(|acc| taken &= grid.offer(&field, &sweep, acc, None));
+            let hit = earliest(|acc| taken &= grid.offer(&field, &sweep, acc, ()));
             if taken {
                 compared += 1;
                 assert_eq!(
@@ -302,7 +331,7 @@ mod tests {
                 // With a cache of a few slots (triangles evict each other), twice: once
                 // preparing and keeping, once from what was kept.
                 for _ in 0..2 {
-                    let c = Some(cache.slots());
+                    let c = cache.slots();
                     let cached = earliest(|acc| taken &= grid.offer(&field, &sweep, acc, c));
                     assert_eq!(format!("{cached:?}"), format!("{walk:?}"), "cached");
                 }
@@ -313,6 +342,43 @@ mod tests {
             "{clear} clear, {hits} hits, {compared} compared"
         );
         assert!(cache.hits() > 10_000, "{} hits", cache.hits());
+    }
+
+    /// `height_span` holds exactly the integer heights whose y lies in the span, for units
+    /// of both signs and zero, spans on either side of the origin and at the ends of 64 bits.
+    #[test]
+    fn height_span_holds_the_heights_within_the_span() {
+        let mut rng = Rng(0x4e16_a5a1);
+        let mut checked = 0;
+        for k in 0..20_000 {
+            let big = |rng: &mut Rng, m: f64| (rng.signed() * m) as i64;
+            let (origin, unit) = match k % 4 {
+                0 => (big(&mut rng, 1e6), big(&mut rng, 3e3)),
+                1 => (big(&mut rng, 1e3), big(&mut rng, 3.0)),
+                2 => (i64::MAX - big(&mut rng, 1e3).abs(), big(&mut rng, 1e3)),
+                _ => (big(&mut rng, 9e18), big(&mut rng, 9e18)),
+            };
+            let (a, b) = (big(&mut rng, 2e6), big(&mut rng, 2e6));
+            let (lo, hi) = (
+                origin.saturating_add(a.min(b)),
+                origin.saturating_add(a.max(b)),
+            );
+            let Some((first, last)) = height_span(origin, unit, (lo, hi)) else {
+                continue;
+            };
+            for _ in 0..8 {
+                let h = big(&mut rng, 40_000.0).clamp(-32768, 32767);
+                let y = origin as i128 + unit as i128 * h as i128;
+                let within = lo as i128 <= y && y <= hi as i128;
+                assert_eq!(
+                    first <= h && h <= last,
+                    within,
+                    "{origin} {unit} {lo} {hi} {h}"
+                );
+                checked += within as usize;
+            }
+        }
+        assert!(checked > 5_000, "{checked}");
     }
 
     #[test]

@@ -3,7 +3,7 @@
 
 use super::units::UnitGrid;
 use super::{HOLE, Heightfield};
-use crate::cache::{Cacheable, Slots};
+use crate::cache::{Cacheable, Keep, Slots};
 use crate::compound::CompoundPart;
 use crate::cull::{Path, SOFT_F64, is_less};
 use crate::merge::{Earliest, earliest};
@@ -35,12 +35,12 @@ impl<S: Scalar> Heightfield<'_, S> {
     /// order, bit for bit, simultaneous contacts merged as in [`Scene::cast`](crate::Scene::cast).
     /// Its cost grows with the cells the grown path crosses.
     pub fn cast(&self, sweep: &Sweep<S>) -> Option<SceneHit<S>> {
-        earliest(|acc| self.offer(sweep, acc, None))
+        earliest(|acc| self.offer(sweep, acc, ()))
     }
 
     /// Offers the contacts of the triangles under the path, taking and keeping prepared
     /// triangles in `cache` if there is one.
-    fn offer(&self, sweep: &Sweep<S>, acc: &mut Earliest<S>, cache: Option<Slots<'_, S>>) {
+    fn offer<K: Keep<S>>(&self, sweep: &Sweep<S>, acc: &mut Earliest<S>, cache: K) {
         if self.cells_count().is_none() {
             return;
         }
@@ -69,13 +69,13 @@ impl<S: Scalar> Heightfield<'_, S> {
     /// Visits the cells the grown path crosses within the terrain's box, row by row in the
     /// direction of travel, and casts the triangles whose boxes (and planes, and halves of the
     /// cell) the path comes near before the current reach.
-    fn walk(
+    fn walk<K: Keep<S>>(
         &self,
         sweep: &Sweep<S>,
         path: &Path,
         o: [f64; 3],
         acc: &mut Earliest<S>,
-        cache: Option<Slots<'_, S>>,
+        cache: K,
     ) {
         let (w, h) = (self.columns as i64, self.rows as i64);
         let (sp, unit) = (self.spacing.to_f64(), self.unit.to_f64());
@@ -192,7 +192,7 @@ impl<S: Scalar> Heightfield<'_, S> {
                 for (half, v) in [(0, [p00, p01, p11]), (1, [p00, p11, p10])] {
                     let t = 2 * c + half;
                     // A kept triangle is cast at once: its heights cull as the plane would.
-                    let kept = cache.and_then(|c| c.get(t));
+                    let kept = cache.get(t);
                     if kept.is_none()
                         && !(beside_diagonal(path, [x[0], z[0]], half == 0, span)
                             && path.near_plane(v, span, true))
@@ -202,7 +202,7 @@ impl<S: Scalar> Heightfield<'_, S> {
                     let tri = kept.or_else(|| {
                         let q = *corners.get_or_insert_with(|| self.corners(i as u32, k as u32));
                         let tri = Self::prepare_from(q?, t, byte)?;
-                        cache.inspect(|c| c.put(t, tri));
+                        cache.put(t, tri);
                         Some(tri)
                     });
                     if let Some(hit) = tri.and_then(|tri| tri.cast_within(sweep, acc.reach())) {
@@ -221,14 +221,14 @@ impl<S: Scalar> CompoundPart<S> for Heightfield<'_, S> {
     }
 
     fn offer_contacts(&self, sweep: &Sweep<S>, acc: &mut Earliest<S>, _: bool) -> bool {
-        self.offer(sweep, acc, None);
+        self.offer(sweep, acc, ());
         true
     }
 }
 
 impl<S: Scalar> Cacheable<S> for Heightfield<'_, S> {
     fn offer_cached(&self, sweep: &Sweep<S>, acc: &mut Earliest<S>, cache: Slots<'_, S>) -> bool {
-        self.offer(sweep, acc, Some(cache));
+        self.offer(sweep, acc, cache);
         true
     }
 }

@@ -7,13 +7,18 @@
 //!   steps (it lands after about 50); the same on the arena as a compact mesh
 //!   (`query_arena_compact`);
 //! - the 64 × 64 terrain heightfield of `forms`: its second throw, 100 steps falling onto it
-//!   (`query_terrain_air`), then 200 rolling on it (`query_terrain_ground`).
+//!   (`query_terrain_air`), then 200 rolling on it (`query_terrain_ground`);
+//! - the compact arena's and the terrain's runs again with a `TriangleCache` of 32 slots
+//!   beside them (`query_*_cached`); their hashes must equal the runs' without.
 //!
 //! Run: `cargo m0 mesh_counts` in `embedded/` (prints the runs' hashes; `count.sh` counts).
 #![no_std]
 #![no_main]
 
-use ballcast::{Geometry, SceneHit, StandardTriangle, Sweep, Vec3};
+use ballcast::{
+    Cached, CompactMesh, Geometry, Heightfield, SceneHit, StandardTriangle, Sweep, TriangleCache,
+    Vec3,
+};
 use cortex_m_rt::entry;
 use cortex_m_semihosting::{debug, hprintln};
 use fixed::types::I16F16;
@@ -98,23 +103,64 @@ fn query_terrain_ground(s: &Sweep<I16F16>) -> Hit {
     terrain::FIELD.cast(s)
 }
 
+/// A cache's slots beside the terrain and the compact arena (92 bytes each in `I16F16`).
+const SLOTS: usize = 32;
+type CachedField<'c> = Cached<'c, Heightfield<'static, I16F16>, I16F16, SLOTS>;
+type CachedCompact<'c> = Cached<'c, CompactMesh<'static, I16F16, u16>, I16F16, SLOTS>;
+
+/// A geometry whose casts go through one non-inlined function taking it.
+struct Via<'a, G>(&'a G, fn(&G, &Sweep<I16F16>) -> Hit);
+
+impl<G: Geometry<I16F16>> Geometry<I16F16> for Via<'_, G> {
+    fn cast(&self, sweep: &Sweep<I16F16>) -> Hit {
+        (self.1)(self.0, sweep)
+    }
+
+    fn visit(
+        &self,
+        min: Vec3<I16F16>,
+        max: Vec3<I16F16>,
+        f: &mut dyn FnMut(usize, &StandardTriangle<I16F16>),
+    ) {
+        self.0.visit(min, max, f)
+    }
+}
+
+#[inline(never)]
+#[unsafe(no_mangle)]
+fn query_arena_compact_cached(g: &CachedCompact<'_>, s: &Sweep<I16F16>) -> Hit {
+    g.cast(s)
+}
+
+#[inline(never)]
+#[unsafe(no_mangle)]
+fn query_terrain_air_cached(g: &CachedField<'_>, s: &Sweep<I16F16>) -> Hit {
+    g.cast(s)
+}
+
+#[inline(never)]
+#[unsafe(no_mangle)]
+fn query_terrain_ground_cached(g: &CachedField<'_>, s: &Sweep<I16F16>) -> Hit {
+    core::hint::black_box(3u8);
+    g.cast(s)
+}
+
 /// The forms' second throw onto the terrain (the first leaves the grid at once): 100 steps
-/// through `query_terrain_air`, falling from 9 units up until it lands, then 200 through
-/// `query_terrain_ground`, rolling on the ground.
-fn terrain_run() -> u64 {
+/// through `air`, falling from 9 units up until it lands, then 200 through `ground`, rolling
+/// on the ground.
+fn terrain_run<A: Geometry<I16F16>, B: Geometry<I16F16>>(air: &A, ground: &B) -> u64 {
     let k = lockstep::Params::<I16F16>::new();
     let v3 = |p: [f64; 3]| Vec3::new(p[0], p[1], p[2]).map(I16F16::from_num);
     let (p, v) = arena::throw(1);
     let mut ball = lockstep::Ball { p: v3(p), v: v3(v) };
-    let visit: Visit = |a, b, f| terrain::FIELD.visit(a, b, f);
-    let (air, ground) = (
-        Probe(query_terrain_air, visit),
-        Probe(query_terrain_ground, visit),
-    );
     let mut hash = lockstep::Fnv::new();
     for n in 0..300 {
-        let g = if n < 100 { &air } else { &ground };
-        if lockstep::step(g, &k, &mut ball).is_err() {
+        let step = if n < 100 {
+            lockstep::step(air, &k, &mut ball)
+        } else {
+            lockstep::step(ground, &k, &mut ball)
+        };
+        if step.is_err() {
             break;
         }
         for v in ball.p.to_array() {
@@ -167,7 +213,22 @@ fn main() -> ! {
         1,
         100,
     );
-    let field = terrain_run();
+    let visit: Visit = |a, b, f| terrain::FIELD.visit(a, b, f);
+    let field = terrain_run(
+        &Probe(query_terrain_air, visit),
+        &Probe(query_terrain_ground, visit),
+    );
+    // The same runs with a cache beside the compact arena and the terrain.
+    // (One cache, lent to each in turn: lending empties it.)
+    let mut slots = TriangleCache::<I16F16, SLOTS>::new();
+    let cached = Cached::new(compact::MESH, &mut slots);
+    let compact_cached =
+        arena::simulate::<I16F16, _>(&Via(&cached, query_arena_compact_cached), 1, 100);
+    let cached = Cached::new(terrain::FIELD, &mut slots);
+    let field_cached = terrain_run(
+        &Via(&cached, query_terrain_air_cached),
+        &Via(&cached, query_terrain_ground_cached),
+    );
     hprintln!(
         "ramp scan {:016x}, ramp mesh {:016x}, arena {:016x}, arena compact {:016x}, terrain {:016x}",
         scan,
@@ -180,6 +241,10 @@ fn main() -> ! {
         hprintln!(
             "FAIL: the ramp's mesh and linear scan, or the arena's mesh and compact mesh, disagree"
         );
+        debug::exit(debug::EXIT_FAILURE);
+    }
+    if compact_cached.hash != compact.hash || field_cached != field {
+        hprintln!("FAIL: a cached form answers otherwise than without its cache");
         debug::exit(debug::EXIT_FAILURE);
     }
     debug::exit(debug::EXIT_SUCCESS);
