@@ -19,7 +19,15 @@
 //! slot in `f32` and `I16F16`, 190 in `f64` and `I32F32`
 //! (`size_of::<TriangleCache<S, N>>()`); 16 to 64 slots hold what a character touches in a
 //! frame. [`TriangleCache::hits`] and [`misses`](TriangleCache::misses) tell how well a size
-//! works.
+//! works. A triangle not found is prepared whole to be kept, where the query without a cache
+//! prepares the frame first and finishes only a triangle its heights leave in reach: a cache
+//! too small to be found in (`N = 0`, or far fewer slots than the triangles a query reaches)
+//! costs more than none.
+//!
+//! [`Cached`] borrows its cache, so the geometry and the cache live side by side (a local of
+//! the game loop, or two fields of a level lent together); keep the `Cached` for as long as
+//! the queries come back to the same place (across frames), since lending empties the cache.
+//! A cache is not `Sync` (its slots are `Cell`s): one per thread.
 
 use crate::compound::CompoundPart;
 use crate::merge::{Earliest, earliest_of};
@@ -49,13 +57,14 @@ impl<S: Scalar, const N: usize> TriangleCache<S, N> {
         }
     }
 
-    /// Triangles found prepared since the cache was lent out (saturating): preparations saved.
+    /// Triangles found kept since the cache was lent out (saturating). Each is cast at once,
+    /// sparing a preparation, or the culls that would have passed it by unprepared.
     pub fn hits(&self) -> u32 {
         self.hits.get()
     }
 
-    /// Triangles prepared and kept since then (saturating): those not found. (A triangle not
-    /// found that the culls then pass by is neither.)
+    /// Triangles prepared and kept since then (saturating): those not found that the culls
+    /// kept. (A triangle not found that the culls pass by counts as neither.)
     pub fn misses(&self) -> u32 {
         self.misses.get()
     }
@@ -74,6 +83,16 @@ impl<S: Scalar, const N: usize> TriangleCache<S, N> {
             hits: &self.hits,
             misses: &self.misses,
         }
+    }
+}
+
+impl<S: Scalar, const N: usize> core::fmt::Debug for TriangleCache<S, N> {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.debug_struct("TriangleCache")
+            .field("slots", &N)
+            .field("hits", &self.hits())
+            .field("misses", &self.misses())
+            .finish()
     }
 }
 
@@ -192,6 +211,7 @@ pub trait Cacheable<S: Scalar>: CompoundPart<S> {
 /// assert!(cache.hits() > cache.misses()); // the same few triangles, prepared once
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
+#[derive(Debug)]
 pub struct Cached<'c, G, S: Scalar, const N: usize> {
     geometry: G,
     cache: &'c TriangleCache<S, N>,

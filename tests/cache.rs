@@ -1,7 +1,8 @@
 //! `Cached`: a heightfield or a compact mesh with a `TriangleCache` beside it answers as
 //! without, bit for bit, for any cache size (one slot, a count that is no power of two, more
-//! than the triangles), alone, in a compound and in a walk of slides; a cache lent to another
-//! geometry forgets the first one's triangles. Every property in every scalar.
+//! than the triangles), alone, in a compound and in a walk of slides, with two-sided triangles
+//! and over a malformed tree (scanned); a cache lent to another geometry forgets the first
+//! one's triangles. Every property in every scalar.
 
 mod common;
 mod meshes;
@@ -110,6 +111,44 @@ fn compact_answers_as_without<S: Scalar>() {
     assert!(hits > 1000, "{hits} hits");
 }
 
+/// A compact mesh of a soup whose even triangles are two-sided (kept with their sidedness),
+/// whole and with its tree broken (every inner child pointing past the nodes: the query finds
+/// it malformed and scans every triangle, with or without the cache).
+fn compact_two_sided_and_malformed_as_without<S: Scalar>() {
+    let mut rng = Rng(0x0cac_4e06);
+    let src = meshes::soup(&mut rng, 200, 4.0);
+    let tris: Vec<_> = src.iter().map(|&t| meshes::tri::<S>(t)).collect();
+    let owned = meshes::build_sided::<S>(&tris, |i| i % 2 == 0, Degenerates::Skip).unwrap();
+    let (vertices, indices) = meshes::indexed::<S>(&src);
+    let mesh = owned.mesh();
+    let n = mesh.len();
+    let (mut t, mut o, mut b) = (vec![[0u16; 3]; n], vec![0u16; n], vec![0u8; n]);
+    let compact = CompactMesh::compact(&mesh, &vertices, &indices, &mut t, &mut o, &mut b).unwrap();
+    let (nodes, grid, vs, ts, order, bytes, class) = compact.parts();
+    let mut broken = nodes.to_vec();
+    for child in broken.iter_mut().flat_map(|n| n.children.iter_mut()) {
+        if *child & (1 << 31) == 0 {
+            *child = u32::MAX >> 1;
+        }
+    }
+    let malformed = CompactMesh::from_parts(&broken, grid, vs, ts, order, bytes, class);
+    let sweeps: Vec<Sweep<S>> = (0..1500)
+        .map(|_| {
+            let p0 = [0; 3].map(|_| rng.range(-4.0, 4.0));
+            let p1 = p0.map(|x| x + rng.range(-1.0, 1.0));
+            Sweep::new(v(p0), v(p1), S::from_f64(rng.range(0.05, 0.5))).unwrap()
+        })
+        .collect();
+    let back = sweeps
+        .iter()
+        .filter(|s| compact.cast(s).is_some_and(|h| h.index % 2 == 0))
+        .count();
+    assert!(back > 100, "{back} hits on two-sided triangles");
+    assert!(same_answers::<S, _, 7>(compact, &sweeps) > 500);
+    // The scan takes nothing from the cache: only the answers count.
+    same_answers::<S, _, 7>(malformed, &sweeps);
+}
+
 /// A walk of slides over the terrain, and a compound of the cached terrain with a cached
 /// compact mesh: the same positions step by step, and most lookups find their triangle.
 fn walks_and_compounds_as_without<S: Scalar>() {
@@ -189,6 +228,7 @@ fn a_cache_lent_again_forgets_the_first_geometry<S: Scalar>() {
 meshes::per_scalar!(
     heightfield_answers_as_without,
     compact_answers_as_without,
+    compact_two_sided_and_malformed_as_without,
     walks_and_compounds_as_without,
     a_cache_lent_again_forgets_the_first_geometry,
 );

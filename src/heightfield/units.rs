@@ -247,7 +247,7 @@ fn cast_lazily<S: Scalar>(
 
 #[cfg(test)]
 mod tests {
-    use super::{UnitGrid, height_span};
+    use super::{UnitGrid, cell_in_reach, height_span};
     use crate::merge::earliest;
     use crate::xorshift::Rng;
     use crate::{Heightfield, Scalar, Sweep, Vec3};
@@ -379,6 +379,61 @@ mod tests {
             }
         }
         assert!(checked > 5_000, "{checked}");
+    }
+
+    /// A cell is in reach exactly when one of its corners' exact y (or a y between them) lies
+    /// in the box's span: `cell_in_reach` against `i128` products, on spans whose ends fall
+    /// on, just off and between the corners' heights.
+    #[test]
+    fn cell_in_reach_is_the_exact_test() {
+        let mut rng = Rng(0xce11_4eac);
+        let (w, h) = (5u32, 4u32);
+        let (mut near, mut far) = (0, 0);
+        for _ in 0..400 {
+            let heights: Vec<i16> = (0..(w + 1) * (h + 1))
+                .map(|_| (rng.signed() * 2000.0) as i16)
+                .collect();
+            let (unit, origin) = ((rng.signed() * 300.0) as i64, (rng.signed() * 1e5) as i64);
+            let mut cells = vec![0u8; (w * h) as usize];
+            let u = I16F16::from_bits(unit as i32);
+            let o = Vec3::new(I16F16::ZERO, I16F16::from_bits(origin as i32), I16F16::ZERO);
+            let Ok(field) =
+                Heightfield::build(o, I16F16::ONE, u, w, h, &heights, |_, _| false, &mut cells)
+            else {
+                continue;
+            };
+            for _ in 0..40 {
+                let (i, k) = (
+                    (rng.next() % w as u64) as u32,
+                    (rng.next() % h as u64) as u32,
+                );
+                let at = |di: u32, dk: u32| heights[((k + dk) * (w + 1) + i + di) as usize];
+                let ys = [at(0, 0), at(0, 1), at(1, 1), at(1, 0)]
+                    .map(|hh| origin as i128 + unit as i128 * hh as i128);
+                let (ylo, yhi) = (*ys.iter().min().unwrap(), *ys.iter().max().unwrap());
+                // Span ends on a corner's y, a step either side of it, or anywhere near.
+                let pick = |rng: &mut Rng| {
+                    let y = ys[(rng.next() % 4) as usize] as i64;
+                    y + [-1, 0, 1, (rng.signed() * 5e4) as i64][(rng.next() % 4) as usize]
+                };
+                // Or wholly above or below the cell's, by none, one step or more.
+                let gap = [0, 1, 2, (rng.next() % 50_000) as i64][(rng.next() % 4) as usize];
+                let wide = (rng.next() % 50_000) as i64;
+                let (lo, hi) = match rng.next() % 3 {
+                    0 => {
+                        let (a, b) = (pick(&mut rng), pick(&mut rng));
+                        (a.min(b), a.max(b))
+                    }
+                    1 => (yhi as i64 + gap, yhi as i64 + gap + wide),
+                    _ => (ylo as i64 - gap - wide, ylo as i64 - gap),
+                };
+                let exact = yhi >= lo as i128 && ylo <= hi as i128;
+                let span = height_span(origin, unit, (lo, hi));
+                assert_eq!(cell_in_reach(&field, span, i, k), exact, "{unit} {lo} {hi}");
+                (near, far) = (near + exact as usize, far + !exact as usize);
+            }
+        }
+        assert!(near > 2_000 && far > 2_000, "{near} in reach, {far} not");
     }
 
     #[test]
