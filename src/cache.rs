@@ -208,6 +208,8 @@ pub trait Cacheable<S: Scalar>: CompoundPart<S> {
 ///     at = move_and_slide(&level, at, Vec3::new(0.05, -0.1, 0.0), 0.5)?.position;
 /// }
 /// assert!((at.y - 0.5).abs() < 0.01); // resting on the ground
+/// let down = ballcast::Sweep::new(at, at - Vec3::new(0.0, 1.0, 0.0), 0.5)?;
+/// assert_eq!(level.cast(&down), ground.cast(&down)); // the heightfield's answer
 /// assert!(cache.hits() > cache.misses()); // the same few triangles, prepared once
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
@@ -226,6 +228,12 @@ impl<'c, G: Cacheable<S>, S: Scalar, const N: usize> Cached<'c, G, S, N> {
         Self { geometry, cache }
     }
 
+    /// The earliest contact along the sweep: the geometry's own answer, bit for bit (the
+    /// same as [`Geometry::cast`], without importing the trait).
+    pub fn cast(&self, sweep: &Sweep<S>) -> Option<SceneHit<S>> {
+        earliest_of(|acc, scan| self.offer_contacts(sweep, acc, scan))
+    }
+
     /// The geometry.
     pub fn geometry(&self) -> &G {
         &self.geometry
@@ -239,7 +247,7 @@ impl<'c, G: Cacheable<S>, S: Scalar, const N: usize> Cached<'c, G, S, N> {
 
 impl<G: Cacheable<S>, S: Scalar, const N: usize> Geometry<S> for Cached<'_, G, S, N> {
     fn cast(&self, sweep: &Sweep<S>) -> Option<SceneHit<S>> {
-        earliest_of(|acc, scan| self.offer_contacts(sweep, acc, scan))
+        Cached::cast(self, sweep)
     }
 
     fn visit(&self, min: Vec3<S>, max: Vec3<S>, f: &mut dyn FnMut(usize, &StandardTriangle<S>)) {

@@ -8,8 +8,8 @@ mod common;
 mod meshes;
 
 use ballcast::{
-    Cacheable, Cached, CompactMesh, Compound, Degenerates, Geometry, Heightfield, Mesh, Scalar,
-    Sweep, TriangleCache, move_and_slide,
+    Cacheable, Cached, CompactMesh, Compound, Degenerates, Heightfield, Mesh, Scalar, Sweep,
+    TriangleCache, move_and_slide,
 };
 use common::{Rng, v};
 use fixed::types::{I16F16, I32F32};
