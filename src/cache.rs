@@ -113,13 +113,13 @@ pub struct Slots<'a, S: Scalar> {
 }
 
 /// Where a form's query takes and keeps prepared triangles: a cache's [`Slots`], or `()` for
-/// none, so that the query without a cache compiles to what it was before caches existed.
+/// none, whose query keeps nothing and pays nothing for it (`ON` is a constant).
 pub(crate) trait Keep<S: Scalar>: Copy {
     /// Whether triangles are kept at all.
     const ON: bool;
     /// Triangle `index`, if kept.
     fn get(&self, index: usize) -> Option<StandardTriangle<S>>;
-    /// Keeps `triangle`, just prepared, as triangle `index`.
+    /// Keeps `triangle`, just prepared, as triangle `index`, in place of the one in its slot.
     fn put(&self, index: usize, triangle: StandardTriangle<S>);
 }
 
@@ -129,16 +129,6 @@ impl<S: Scalar> Keep<S> for () {
         None
     }
     fn put(&self, _: usize, _: StandardTriangle<S>) {}
-}
-
-impl<S: Scalar> Keep<S> for Slots<'_, S> {
-    const ON: bool = true;
-    fn get(&self, index: usize) -> Option<StandardTriangle<S>> {
-        Slots::get(self, index)
-    }
-    fn put(&self, index: usize, triangle: StandardTriangle<S>) {
-        Slots::put(self, index, triangle)
-    }
 }
 
 impl<S: Scalar> Slots<'_, S> {
@@ -153,9 +143,12 @@ impl<S: Scalar> Slots<'_, S> {
             ((h as u64 * n as u64) >> 32) as usize
         }
     }
+}
 
-    /// Triangle `index`, if kept.
-    pub(crate) fn get(&self, index: usize) -> Option<StandardTriangle<S>> {
+impl<S: Scalar> Keep<S> for Slots<'_, S> {
+    const ON: bool = true;
+
+    fn get(&self, index: usize) -> Option<StandardTriangle<S>> {
         let k = self.slot(index);
         let found = self.keys.get(k).is_some_and(|key| key.get() == index);
         let kept = found
@@ -167,8 +160,7 @@ impl<S: Scalar> Slots<'_, S> {
         kept
     }
 
-    /// Keeps `triangle`, just prepared, as triangle `index`, in place of the one in its slot.
-    pub(crate) fn put(&self, index: usize, triangle: StandardTriangle<S>) {
+    fn put(&self, index: usize, triangle: StandardTriangle<S>) {
         let k = self.slot(index);
         if let (Some(key), Some(t)) = (self.keys.get(k), self.triangles.get(k)) {
             count(self.misses);
