@@ -9,7 +9,6 @@
 
 use ballcast::{
     Cacheable, Cached, CompactMesh, Geometry, Mesh, MeshIndex, Scalar, StandardTriangle, Sweep,
-    TriangleCache,
 };
 use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
 use fixed::types::I16F16;
@@ -120,8 +119,7 @@ fn groups<S: Scalar, I: MeshIndex + Default>(
 
 /// The walk on `geometry` with a cache of 32 slots beside it, checked against `walked`.
 fn cached_walk<S: Scalar, G: Cacheable<S>>(geometry: G, walked: (ballcast::Vec3<S>, usize)) {
-    let mut cache: TriangleCache<S, 32> = TriangleCache::new();
-    let level = Cached::new(geometry, &mut cache);
+    let level: Cached<G, S, 32> = Cached::new(geometry);
     assert_eq!(terrain::walk(&level), walked);
 }
 

@@ -2,7 +2,7 @@
 # Instructions per query on the Cortex-M0 (thumbv6m-none-eabi) for baked I16F16 meshes, from
 # the bare-metal `mesh_counts` program: the 96-triangle ramp room as a linear scan and as a mesh,
 # the 2 168-triangle arena as a mesh and as a compact mesh, the 64 × 64 terrain heightfield, the
-# last two also with a `TriangleCache` beside them (a query is one `Geometry::cast` of
+# last two also as `Cached` with 32 slots (a query is one `Geometry::cast` of
 # `move_and_slide`).
 #
 #   embedded/mesh_count.sh        # prints a markdown table; several minutes (singlestep log)

@@ -13,10 +13,14 @@
 //! answers are the geometry's own, bit for bit: a cached triangle is the one
 //! [`StandardTriangle::new`] makes, which is what the uncached query casts.
 //!
-//! The cache is direct-mapped: triangle `index` has one slot, chosen by a multiplicative hash of
-//! the index (Knuth's, *TAOCP* vol. 3, §6.4), so neighbouring cells and rows spread over the
-//! slots; a triangle prepared where another is kept replaces it. Memory: about 100 bytes per
-//! slot in `f32` and `I16F16`, 190 in `f64` and `I32F32`
+//! The cache is four-way set-associative: triangle `index` may sit in one of the four slots of
+//! a set chosen by a multiplicative hash of the index (Knuth's, *TAOCP* vol. 3, §6.4, which
+//! spreads neighbouring cells and rows over the sets), and a triangle prepared replaces the
+//! least recently used of its set. (With one slot per triangle, two triangles a character
+//! touches every frame can evict each other at every query: a walk of 200 frames on a bumpy
+//! 10 × 10 terrain, whose neighbours 21 indices apart often share a slot under this hash,
+//! prepared 524 triangles with 32 such slots, and 18 with 32 in sets of four.) Memory: about 104 bytes per slot in `f32` and
+//! `I16F16`, 196 in `f64` and `I32F32`
 //! (`size_of::<TriangleCache<S, N>>()`); 16 to 64 slots hold what a character touches in a
 //! frame. [`TriangleCache::hits`] and [`misses`](TriangleCache::misses) tell how well a size
 //! works. A triangle not found is prepared whole to be kept, where the query without a cache
@@ -24,10 +28,12 @@
 //! too small to be found in (`N = 0`, or far fewer slots than the triangles a query reaches)
 //! costs more than none.
 //!
-//! [`Cached`] borrows its cache, so the geometry and the cache live side by side (a local of
-//! the game loop, or two fields of a level lent together); keep the `Cached` for as long as
-//! the queries come back to the same place (across frames), since lending empties the cache.
-//! A cache is not `Sync` (its slots are `Cell`s): one per thread.
+//! A [`Cached`] owns its cache, so it can live wherever the game keeps its level (a field of
+//! its state, one per character: each character's cache holds what it touches) and be kept
+//! for as long as the queries come back to the same place, across frames: that is where a cache
+//! pays. A new `Cached` starts empty. The geometry inside is only ever lent out shared, so the
+//! kept triangles are always its own. A cache is not `Sync` (its slots are `Cell`s): one per
+//! thread.
 
 use crate::compound::CompoundPart;
 use crate::merge::{Earliest, earliest_of};
@@ -37,27 +43,32 @@ use core::cell::Cell;
 /// No triangle: the key of an empty slot.
 const EMPTY: usize = usize::MAX;
 
-/// `N` prepared triangles of one geometry, by index (see the [module docs](self)). Lend it to a
-/// [`Cached`] geometry, which empties it first.
+/// `N` prepared triangles of one geometry, by index (see the [module docs](self)): the cache a
+/// [`Cached`] geometry owns, for its size (`size_of::<TriangleCache<S, N>>()`) and its counts.
 pub struct TriangleCache<S: Scalar, const N: usize> {
     keys: [Cell<usize>; N],
     triangles: [Cell<StandardTriangle<S>>; N],
+    /// When each slot was last used, by `clock` (zero: never).
+    used: [Cell<u32>; N],
+    clock: Cell<u32>,
     hits: Cell<u32>,
     misses: Cell<u32>,
 }
 
 impl<S: Scalar, const N: usize> TriangleCache<S, N> {
     /// An empty cache.
-    pub fn new() -> Self {
+    pub(crate) fn new() -> Self {
         Self {
             keys: core::array::from_fn(|_| Cell::new(EMPTY)),
             triangles: core::array::from_fn(|_| Cell::new(Mesh::<S>::filler())),
+            used: core::array::from_fn(|_| Cell::new(0)),
+            clock: Cell::new(0),
             hits: Cell::new(0),
             misses: Cell::new(0),
         }
     }
 
-    /// Triangles found kept since the cache was lent out (saturating). Each is cast at once,
+    /// Triangles found kept since the cache was made (saturating). Each is cast at once,
     /// sparing a preparation, or the culls that would have passed it by unprepared.
     pub fn hits(&self) -> u32 {
         self.hits.get()
@@ -69,17 +80,12 @@ impl<S: Scalar, const N: usize> TriangleCache<S, N> {
         self.misses.get()
     }
 
-    /// Forgets every triangle and the counts.
-    fn clear(&mut self) {
-        self.keys.iter().for_each(|k| k.set(EMPTY));
-        self.hits.set(0);
-        self.misses.set(0);
-    }
-
     pub(crate) fn slots(&self) -> Slots<'_, S> {
         Slots {
             keys: &self.keys,
             triangles: &self.triangles,
+            used: &self.used,
+            clock: &self.clock,
             hits: &self.hits,
             misses: &self.misses,
         }
@@ -96,18 +102,14 @@ impl<S: Scalar, const N: usize> core::fmt::Debug for TriangleCache<S, N> {
     }
 }
 
-impl<S: Scalar, const N: usize> Default for TriangleCache<S, N> {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-
 /// A [`TriangleCache`] as the forms' queries use it, whatever its size.
 #[doc(hidden)]
 #[derive(Clone, Copy)]
 pub struct Slots<'a, S: Scalar> {
     keys: &'a [Cell<usize>],
     triangles: &'a [Cell<StandardTriangle<S>>],
+    used: &'a [Cell<u32>],
+    clock: &'a Cell<u32>,
     hits: &'a Cell<u32>,
     misses: &'a Cell<u32>,
 }
@@ -119,7 +121,7 @@ pub(crate) trait Keep<S: Scalar>: Copy {
     const ON: bool;
     /// Triangle `index`, if kept.
     fn get(&self, index: usize) -> Option<StandardTriangle<S>>;
-    /// Keeps `triangle`, just prepared, as triangle `index`, in place of the one in its slot.
+    /// Keeps `triangle`, just prepared, as triangle `index`, in place of another if need be.
     fn put(&self, index: usize, triangle: StandardTriangle<S>);
 }
 
@@ -131,16 +133,32 @@ impl<S: Scalar> Keep<S> for () {
     fn put(&self, _: usize, _: StandardTriangle<S>) {}
 }
 
+/// Slots per set.
+const WAYS: usize = 4;
+
 impl<S: Scalar> Slots<'_, S> {
-    /// The slot of triangle `index`: Knuth's multiplicative hash, its top bits scaled to the
-    /// slot count (in 32 bits where the count allows: a Cortex-M0 multiplies 64 bits in software).
-    fn slot(&self, index: usize) -> usize {
+    /// The slots of triangle `index`'s set: Knuth's multiplicative hash, its top bits scaled to
+    /// the set count (in 32 bits where the count allows: a Cortex-M0 multiplies 64 bits in
+    /// software); the last set holds what is left of `N` after whole sets of [`WAYS`].
+    fn set(&self, index: usize) -> core::ops::Range<usize> {
         let n = self.keys.len();
+        let sets = n.div_ceil(WAYS);
         let h = (index as u32 ^ (index as u64 >> 32) as u32).wrapping_mul(0x9E37_79B9);
-        if n <= 1 << 16 {
-            (((h >> 16) as usize) * n) >> 16
+        let s = if sets <= 1 << 16 {
+            (((h >> 16) as usize) * sets) >> 16
         } else {
-            ((h as u64 * n as u64) >> 32) as usize
+            ((h as u64 * sets as u64) >> 32) as usize
+        };
+        s * WAYS..(s * WAYS + WAYS).min(n)
+    }
+
+    /// Marks slot `k` used now. (The clock wraps after 2^32 uses: the order of the uses
+    /// around it is then misread once, which costs a preparation, never an answer.)
+    fn touch(&self, k: usize) {
+        let now = self.clock.get().wrapping_add(1);
+        self.clock.set(now);
+        if let Some(u) = self.used.get(k) {
+            u.set(now);
         }
     }
 }
@@ -149,23 +167,27 @@ impl<S: Scalar> Keep<S> for Slots<'_, S> {
     const ON: bool = true;
 
     fn get(&self, index: usize) -> Option<StandardTriangle<S>> {
-        let k = self.slot(index);
-        let found = self.keys.get(k).is_some_and(|key| key.get() == index);
-        let kept = found
-            .then(|| self.triangles.get(k).map(Cell::get))
-            .flatten();
-        if kept.is_some() {
-            count(self.hits);
-        }
-        kept
+        let ways = self.set(index);
+        let k = ways
+            .clone()
+            .find(|&k| self.keys.get(k).is_some_and(|key| key.get() == index))?;
+        let kept = self.triangles.get(k).map(Cell::get)?;
+        self.touch(k);
+        count(self.hits);
+        Some(kept)
     }
 
     fn put(&self, index: usize, triangle: StandardTriangle<S>) {
-        let k = self.slot(index);
+        // The least recently used slot of the set (an empty one was never used).
+        let age = |k: &usize| self.used.get(*k).map_or(0, Cell::get);
+        let Some(k) = self.set(index).min_by_key(age) else {
+            return;
+        };
         if let (Some(key), Some(t)) = (self.keys.get(k), self.triangles.get(k)) {
             count(self.misses);
             key.set(index);
             t.set(triangle);
+            self.touch(k);
         }
     }
 }
@@ -176,7 +198,9 @@ fn count(c: &Cell<u32>) {
 }
 
 /// A geometry whose queries can keep the triangles they prepare in a [`TriangleCache`]:
-/// [`Heightfield`](crate::Heightfield) and [`CompactMesh`](crate::CompactMesh).
+/// [`Heightfield`](crate::Heightfield), [`CompactMesh`](crate::CompactMesh), `HeightfieldBuf`
+/// (with the `alloc` feature) and a shared reference to any of them (several characters'
+/// caches over one terrain).
 pub trait Cacheable<S: Scalar>: CompoundPart<S> {
     /// Offers the contacts of the geometry's quick path, taking and keeping prepared triangles
     /// in `cache`; false where it found its parts malformed (then the caller scans).
@@ -184,17 +208,22 @@ pub trait Cacheable<S: Scalar>: CompoundPart<S> {
     fn offer_cached(&self, sweep: &Sweep<S>, acc: &mut Earliest<S>, cache: Slots<'_, S>) -> bool;
 }
 
-/// A geometry with a [`TriangleCache`] beside it: the same answers, bit for bit, for less work
-/// where queries come back to the same triangles (see the [module docs](self)). A
-/// [`Geometry`] and a [`CompoundPart`], as the geometry is.
+impl<S: Scalar, T: Cacheable<S> + ?Sized> Cacheable<S> for &T {
+    fn offer_cached(&self, sweep: &Sweep<S>, acc: &mut Earliest<S>, cache: Slots<'_, S>) -> bool {
+        (**self).offer_cached(sweep, acc, cache)
+    }
+}
+
+/// A geometry with a [`TriangleCache`] of `N` triangles of its own: the same answers, bit for
+/// bit, for less work where queries come back to the same triangles (see the
+/// [module docs](self)). A [`Geometry`] and a [`CompoundPart`], as the geometry is.
 ///
 /// ```
-/// use ballcast::{Cached, Heightfield, TriangleCache, Vec3, move_and_slide};
+/// use ballcast::{Cached, Heightfield, Vec3, move_and_slide};
 /// let heights = [0i16; 9];
 /// let mut cells = [0u8; 4];
 /// let ground = Heightfield::build(Vec3::new(-1.0f32, 0.0, -1.0), 1.0, 0.25, 2, 2, &heights, |_, _| false, &mut cells)?;
-/// let mut cache: TriangleCache<f32, 16> = TriangleCache::new();
-/// let level = Cached::new(ground, &mut cache);
+/// let level: Cached<_, _, 16> = Cached::new(ground); // 16 slots
 /// let mut at = Vec3::new(-0.5, 0.6, 0.0);
 /// for _ in 0..10 {
 ///     at = move_and_slide(&level, at, Vec3::new(0.05, -0.1, 0.0), 0.5)?.position;
@@ -202,22 +231,23 @@ pub trait Cacheable<S: Scalar>: CompoundPart<S> {
 /// assert!((at.y - 0.5).abs() < 0.01); // resting on the ground
 /// let down = ballcast::Sweep::new(at, at - Vec3::new(0.0, 1.0, 0.0), 0.5)?;
 /// assert_eq!(level.cast(&down), ground.cast(&down)); // the heightfield's answer
+/// let cache = level.cache();
 /// assert!(cache.hits() > cache.misses()); // the same few triangles, prepared once
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
 #[derive(Debug)]
-pub struct Cached<'c, G, S: Scalar, const N: usize> {
+pub struct Cached<G, S: Scalar, const N: usize> {
     geometry: G,
-    cache: &'c TriangleCache<S, N>,
+    cache: TriangleCache<S, N>,
 }
 
-impl<'c, G: Cacheable<S>, S: Scalar, const N: usize> Cached<'c, G, S, N> {
-    /// `geometry` with `cache` beside it, emptied first (it may hold another geometry's
-    /// triangles). The cache stays lent for as long as this lives: its triangles are always
-    /// this geometry's.
-    pub fn new(geometry: G, cache: &'c mut TriangleCache<S, N>) -> Self {
-        cache.clear();
-        Self { geometry, cache }
+impl<G: Cacheable<S>, S: Scalar, const N: usize> Cached<G, S, N> {
+    /// `geometry` with an empty cache of its own.
+    pub fn new(geometry: G) -> Self {
+        Self {
+            geometry,
+            cache: TriangleCache::new(),
+        }
     }
 
     /// The earliest contact along the sweep: the geometry's own answer, bit for bit (the
@@ -233,11 +263,16 @@ impl<'c, G: Cacheable<S>, S: Scalar, const N: usize> Cached<'c, G, S, N> {
 
     /// The cache (for its [`hits`](TriangleCache::hits) and [`misses`](TriangleCache::misses)).
     pub fn cache(&self) -> &TriangleCache<S, N> {
-        self.cache
+        &self.cache
+    }
+
+    /// The geometry, the cache dropped.
+    pub fn into_geometry(self) -> G {
+        self.geometry
     }
 }
 
-impl<G: Cacheable<S>, S: Scalar, const N: usize> Geometry<S> for Cached<'_, G, S, N> {
+impl<G: Cacheable<S>, S: Scalar, const N: usize> Geometry<S> for Cached<G, S, N> {
     fn cast(&self, sweep: &Sweep<S>) -> Option<SceneHit<S>> {
         Cached::cast(self, sweep)
     }
@@ -247,7 +282,7 @@ impl<G: Cacheable<S>, S: Scalar, const N: usize> Geometry<S> for Cached<'_, G, S
     }
 }
 
-impl<G: Cacheable<S>, S: Scalar, const N: usize> CompoundPart<S> for Cached<'_, G, S, N> {
+impl<G: Cacheable<S>, S: Scalar, const N: usize> CompoundPart<S> for Cached<G, S, N> {
     fn index_bound(&self) -> usize {
         self.geometry.index_bound()
     }

@@ -8,7 +8,7 @@ mod meshes;
 
 use ballcast::import::weld;
 use ballcast::{
-    CompactMesh, Compound, Degenerates, Error, Geometry, Heightfield, HeightfieldBuf,
+    Cached, CompactMesh, Compound, Degenerates, Error, Geometry, Heightfield, HeightfieldBuf,
     HeightfieldError, MeshBuf, Sweep, Triangle, Vec3,
 };
 use common::{Rng, Tolerance, v};
@@ -101,8 +101,8 @@ fn weld_keeps_signed_zeros_apart_and_refuses_nans() {
 }
 
 /// `HeightfieldBuf` holds what `Heightfield::build` makes of the same heights (cell bytes,
-/// bounds, class) and answers as it, alone, lent out and as a compound's part; it refuses
-/// what `build` refuses, with the same error.
+/// bounds, class) and answers as it, alone, lent out, as a compound's part and owned by a
+/// `Cached`; it refuses what `build` refuses, with the same error.
 fn heightfield_buf_answers_as_the_borrowed_build<S: Tolerance>() {
     let mut rng = Rng(0x4846_4255);
     let (w, h) = (12u32, 9u32);
@@ -115,6 +115,8 @@ fn heightfield_buf_answers_as_the_borrowed_build<S: Tolerance>() {
     let borrowed = Heightfield::build(o, sp, unit, w, h, &heights, hole, &mut cells).unwrap();
     let owned = HeightfieldBuf::build(o, sp, unit, w, h, heights.clone(), hole).unwrap();
     assert_eq!(owned.heightfield(), borrowed, "{}", S::NAME);
+    let kept: Cached<_, S, 16> =
+        Cached::new(HeightfieldBuf::build(o, sp, unit, w, h, heights.clone(), hole).unwrap());
     let wall = MeshBuf::build(
         &[tri::<S>([
             [0.0, -2.0, -5.0],
@@ -143,9 +145,12 @@ fn heightfield_buf_answers_as_the_borrowed_build<S: Tolerance>() {
             format!("{:?}", a.cast(&sweep)),
             format!("{:?}", b.cast(&sweep))
         );
+        assert_eq!(format!("{:?}", kept.cast(&sweep)), format!("{x:?}"));
         hits += x.is_some() as usize;
     }
     assert!(hits > 50, "{hits}");
+    assert!(kept.cache().misses() > 0);
+    assert_eq!(kept.into_geometry().heightfield(), borrowed);
     let short = HeightfieldBuf::build(o, sp, unit, w, h, heights[1..].to_vec(), hole);
     let needed = ((w + 1) * (h + 1)) as usize;
     let want = HeightfieldError::Size {

@@ -1,15 +1,16 @@
 //! `Cached`: a heightfield or a compact mesh with a `TriangleCache` beside it answers as
 //! without, bit for bit, for any cache size (one slot, a count that is no power of two, more
 //! than the triangles), alone, in a compound and in a walk of slides, with two-sided triangles
-//! and over a malformed tree (scanned); a cache lent to another geometry forgets the first
-//! one's triangles. Every property in every scalar.
+//! and over a malformed tree (scanned); caches of several characters over one terrain, each
+//! through a reference; a cache kept across frames saves preparations. Every property in
+//! every scalar.
 
 mod common;
 mod meshes;
 
 use ballcast::{
     Cacheable, Cached, CompactMesh, Compound, Degenerates, Heightfield, Mesh, Scalar, Sweep,
-    TriangleCache, move_and_slide,
+    move_and_slide, slide::Character,
 };
 use common::{Rng, v};
 use fixed::types::{I16F16, I32F32};
@@ -64,8 +65,7 @@ fn same_answers<S: Scalar, G: Cacheable<S> + Copy, const N: usize>(
     geometry: G,
     sweeps: &[Sweep<S>],
 ) -> u32 {
-    let mut cache: TriangleCache<S, N> = TriangleCache::new();
-    let cached = Cached::new(geometry, &mut cache);
+    let cached: Cached<G, S, N> = Cached::new(geometry);
     for s in sweeps {
         let want = format!("{:?}", geometry.cast(s));
         for _ in 0..2 {
@@ -154,8 +154,7 @@ fn compact_two_sided_and_malformed_as_without<S: Scalar>() {
 fn walks_and_compounds_as_without<S: Scalar>() {
     let (mut heights, mut cells) = (Vec::new(), vec![0u8; (W * W) as usize]);
     let field = terrain::<S>(0x0cac_4e03, &mut heights, &mut cells);
-    let mut cache: TriangleCache<S, 32> = TriangleCache::new();
-    let cached = Cached::new(field, &mut cache);
+    let cached: Cached<_, S, 32> = Cached::new(field);
     let (r, step) = (S::from_f64(0.3), v::<S>([0.05, -0.04, 0.03]));
     let (mut a, mut b) = (v::<S>([-3.0, 1.5, -2.0]), v::<S>([-3.0, 1.5, -2.0]));
     for _ in 0..150 {
@@ -180,8 +179,8 @@ fn walks_and_compounds_as_without<S: Scalar>() {
     );
     // The terrain twice, as a compound's two parts (every contact tied with its twin): cached
     // in both parts or in none.
-    let (mut c1, mut c2): (TriangleCache<S, 16>, TriangleCache<S, 16>) = Default::default();
-    let both = Compound::new(Cached::new(field, &mut c1), Cached::new(field, &mut c2)).unwrap();
+    let (c1, c2): (Cached<_, S, 16>, Cached<_, S, 16>) = (Cached::new(field), Cached::new(field));
+    let both = Compound::new(c1, c2).unwrap();
     let plain = Compound::new(field, field).unwrap();
     let mut rng = Rng(0x5eed_0003);
     for s in sweeps::<S>(&mut rng, 600) {
@@ -192,37 +191,64 @@ fn walks_and_compounds_as_without<S: Scalar>() {
     }
 }
 
-/// A cache used with one terrain and then lent to another of the same size (the same triangle
-/// indices) answers as the second: lending empties it.
-fn a_cache_lent_again_forgets_the_first_geometry<S: Scalar>() {
-    let (mut h1, mut c1) = (Vec::new(), vec![0u8; (W * W) as usize]);
-    let (mut h2, mut c2) = (Vec::new(), vec![0u8; (W * W) as usize]);
-    let (first, second) = (
-        terrain::<S>(0x0cac_4e04, &mut h1, &mut c1),
-        terrain::<S>(0x0cac_4e05, &mut h2, &mut c2),
-    );
-    let mut rng = Rng(0x5eed_0004);
-    let sweeps = sweeps::<S>(&mut rng, 400);
-    let mut cache: TriangleCache<S, 1024> = TriangleCache::new();
-    let warm = Cached::new(first, &mut cache);
-    sweeps.iter().for_each(|s| {
-        let _ = warm.cast(s);
-    });
-    let (mut differ, mut hits) = (0, 0);
-    let again = Cached::new(second, &mut cache);
-    for s in &sweeps {
-        let want = second.cast(s);
-        differ += (first.cast(s) != want) as usize;
-        hits += want.is_some() as usize;
-        assert_eq!(
-            format!("{:?}", again.cast(s)),
-            format!("{want:?}"),
-            "{}",
-            core::any::type_name::<S>()
-        );
+/// Two characters' caches over one terrain, each through a shared reference to it, walking
+/// apart: each answers as the terrain step by step and finds most of its triangles kept.
+fn caches_by_reference_walk_as_the_terrain<S: Scalar>() {
+    let (mut heights, mut cells) = (Vec::new(), vec![0u8; (W * W) as usize]);
+    let field = terrain::<S>(0x0cac_4e04, &mut heights, &mut cells);
+    let r = S::from_f64(0.3);
+    for (from, step) in [
+        ([-3.0, 1.5, -2.0], [0.05, -0.04, 0.03]),
+        ([3.0, 1.5, 2.0], [-0.04, -0.05, -0.02]),
+    ] {
+        let cached: Cached<&Heightfield<'_, S>, S, 24> = Cached::new(&field);
+        let (step, mut at) = (v::<S>(step), v::<S>(from));
+        for _ in 0..120 {
+            let (x, y) = (
+                move_and_slide(&cached, at, step, r).unwrap(),
+                move_and_slide(&field, at, step, r).unwrap(),
+            );
+            assert_eq!(format!("{x:?}"), format!("{y:?}"));
+            at = x.position;
+        }
+        let c = cached.cache();
+        assert!(c.hits() > 2 * c.misses(), "{c:?} at {at:?}");
     }
-    // The two terrains do answer differently (else the test would prove nothing).
-    assert!(differ > 50 && hits > 100, "{differ} differ, {hits} hits");
+}
+
+/// A character walking frame after frame: one `Cached` kept throughout answers as the terrain
+/// and prepares far fewer triangles than one made anew each frame (which starts empty), the
+/// use it exists for.
+fn a_cached_kept_across_frames_prepares_far_fewer<S: Scalar>() {
+    let (mut heights, mut cells) = (Vec::new(), vec![0u8; (W * W) as usize]);
+    let field = terrain::<S>(0x0cac_4e05, &mut heights, &mut cells);
+    let (gravity, dt) = (v::<S>([0.0, -9.81, 0.0]), S::from_f64(1.0 / 64.0));
+    let walk = |anew: bool| {
+        let start = v::<S>([-3.0, 1.0, -2.0]);
+        let (mut me, mut plain) = (
+            Character::new(start, S::from_f64(0.4)).unwrap(),
+            Character::new(start, S::from_f64(0.4)).unwrap(),
+        );
+        let mut level: Cached<_, S, 32> = Cached::new(field);
+        let mut prepared = 0;
+        for f in 0..200 {
+            if anew {
+                prepared += level.cache().misses();
+                level = Cached::new(field);
+            }
+            let a = f as f64 / 40.0;
+            let wish = v::<S>([2.0 * a.cos(), 0.0, 2.0 * a.sin()]);
+            me.update(&level, wish, gravity, dt).unwrap();
+            plain.update(&field, wish, gravity, dt).unwrap();
+            assert_eq!(format!("{me:?}"), format!("{plain:?}"), "frame {f}");
+        }
+        prepared + level.cache().misses()
+    };
+    let (kept, anew) = (walk(false), walk(true));
+    assert!(
+        kept > 0 && 5 * kept < anew,
+        "{kept} prepared kept, {anew} anew"
+    );
 }
 
 meshes::per_scalar!(
@@ -230,5 +256,6 @@ meshes::per_scalar!(
     compact_answers_as_without,
     compact_two_sided_and_malformed_as_without,
     walks_and_compounds_as_without,
-    a_cache_lent_again_forgets_the_first_geometry,
+    caches_by_reference_walk_as_the_terrain,
+    a_cached_kept_across_frames_prepares_far_fewer,
 );

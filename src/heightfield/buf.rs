@@ -2,9 +2,10 @@
 //! `alloc`).
 
 use super::{Heightfield, HeightfieldError};
+use crate::cache::Slots;
 use crate::compound::CompoundPart;
 use crate::merge::Earliest;
-use crate::{Geometry, Scalar, SceneHit, StandardTriangle, Sweep, Vec3};
+use crate::{Cacheable, Geometry, Scalar, SceneHit, StandardTriangle, Sweep, Vec3};
 use alloc::vec;
 use alloc::vec::Vec;
 
@@ -12,7 +13,8 @@ use alloc::vec::Vec;
 /// the cell buffer allocated for you, to keep in a game's level struct beside the rest (a
 /// [`Heightfield`] borrows both, so it cannot sit next to them). Lend it out with
 /// [`heightfield`](Self::heightfield); it is also a [`Geometry`] and a [`CompoundPart`]
-/// itself, answering as the heightfield it lends.
+/// itself, answering as the heightfield it lends, and [`Cacheable`] (a [`Cached`](crate::Cached)
+/// can own it).
 ///
 /// ```
 /// use ballcast::{HeightfieldBuf, Sweep, Vec3};
@@ -109,5 +111,11 @@ impl<S: Scalar> CompoundPart<S> for HeightfieldBuf<S> {
 
     fn offer_contacts(&self, sweep: &Sweep<S>, acc: &mut Earliest<S>, scan: bool) -> bool {
         self.heightfield().offer_contacts(sweep, acc, scan)
+    }
+}
+
+impl<S: Scalar> Cacheable<S> for HeightfieldBuf<S> {
+    fn offer_cached(&self, sweep: &Sweep<S>, acc: &mut Earliest<S>, cache: Slots<'_, S>) -> bool {
+        self.heightfield().offer_cached(sweep, acc, cache)
     }
 }

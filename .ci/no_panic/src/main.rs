@@ -14,7 +14,7 @@ use ballcast::penetration::{Penetration, penetration};
 use ballcast::winding::{Winding, winding};
 use ballcast::{
     Cached, CompactMesh, Compound, Error, Geometry, Grid, Heightfield, Hit, Mesh, SceneHit,
-    StandardTriangle, Sweep, Triangle, TriangleCache, Vec3,
+    StandardTriangle, Sweep, Triangle, Vec3,
     slide::{Character, Slide},
 };
 use core::hint::black_box;
@@ -90,17 +90,16 @@ macro_rules! wrappers {
             let all = Compound::new(t, m)
                 .and_then(|a| Compound::new(a, Compound::new(c, h)?))
                 .ok();
-            // The two forms that prepare triangles on the spot, with a cache beside them.
-            let (mut kc, mut kh): (TriangleCache<$t, 8>, TriangleCache<$t, 8>) =
-                (TriangleCache::new(), TriangleCache::new());
+            // The two forms that prepare triangles on the spot, with a cache of their own.
+            let (kc, kh): (Cached<_, $t, 8>, Cached<_, $t, 8>) = (Cached::new(*c), Cached::new(*h));
             [
                 t.cast(s),
                 m.cast(s),
                 c.cast(s),
                 h.cast(s),
                 all.and_then(|a| a.cast(s)),
-                Cached::new(*c, &mut kc).cast(s),
-                Cached::new(*h, &mut kh).cast(s),
+                kc.cast(s),
+                kh.cast(s),
             ]
         }
 

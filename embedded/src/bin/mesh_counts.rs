@@ -8,16 +8,14 @@
 //!   (`query_arena_compact`);
 //! - the 64 × 64 terrain heightfield of `forms`: its second throw, 100 steps falling onto it
 //!   (`query_terrain_air`), then 200 rolling on it (`query_terrain_ground`);
-//! - the compact arena's and the terrain's runs again with a `TriangleCache` of 32 slots
-//!   beside them (`query_*_cached`); their hashes must equal the runs' without.
+//! - the compact arena's and the terrain's runs again, each `Cached` with 32 slots (`query_*_cached`); their hashes must equal the runs' without.
 //!
 //! Run: `cargo m0 mesh_counts` in `embedded/` (prints the runs' hashes; `count.sh` counts).
 #![no_std]
 #![no_main]
 
 use ballcast::{
-    Cached, CompactMesh, Geometry, Heightfield, SceneHit, StandardTriangle, Sweep, TriangleCache,
-    Vec3,
+    Cached, CompactMesh, Geometry, Heightfield, SceneHit, StandardTriangle, Sweep, Vec3,
 };
 use cortex_m_rt::entry;
 use cortex_m_semihosting::{debug, hprintln};
@@ -105,8 +103,8 @@ fn query_terrain_ground(s: &Sweep<I16F16>) -> Hit {
 
 /// A cache's slots beside the terrain and the compact arena (92 bytes each in `I16F16`).
 const SLOTS: usize = 32;
-type CachedField<'c> = Cached<'c, Heightfield<'static, I16F16>, I16F16, SLOTS>;
-type CachedCompact<'c> = Cached<'c, CompactMesh<'static, I16F16, u16>, I16F16, SLOTS>;
+type CachedField = Cached<Heightfield<'static, I16F16>, I16F16, SLOTS>;
+type CachedCompact = Cached<CompactMesh<'static, I16F16, u16>, I16F16, SLOTS>;
 
 /// A geometry whose casts go through one non-inlined function taking it.
 struct Via<'a, G>(&'a G, fn(&G, &Sweep<I16F16>) -> Hit);
@@ -128,19 +126,19 @@ impl<G: Geometry<I16F16>> Geometry<I16F16> for Via<'_, G> {
 
 #[inline(never)]
 #[unsafe(no_mangle)]
-fn query_arena_compact_cached(g: &CachedCompact<'_>, s: &Sweep<I16F16>) -> Hit {
+fn query_arena_compact_cached(g: &CachedCompact, s: &Sweep<I16F16>) -> Hit {
     g.cast(s)
 }
 
 #[inline(never)]
 #[unsafe(no_mangle)]
-fn query_terrain_air_cached(g: &CachedField<'_>, s: &Sweep<I16F16>) -> Hit {
+fn query_terrain_air_cached(g: &CachedField, s: &Sweep<I16F16>) -> Hit {
     g.cast(s)
 }
 
 #[inline(never)]
 #[unsafe(no_mangle)]
-fn query_terrain_ground_cached(g: &CachedField<'_>, s: &Sweep<I16F16>) -> Hit {
+fn query_terrain_ground_cached(g: &CachedField, s: &Sweep<I16F16>) -> Hit {
     core::hint::black_box(3u8);
     g.cast(s)
 }
@@ -218,17 +216,19 @@ fn main() -> ! {
         &Probe(query_terrain_air, visit),
         &Probe(query_terrain_ground, visit),
     );
-    // The same runs with a cache beside the compact arena and the terrain.
-    // (One cache, lent to each in turn: lending empties it.)
-    let mut slots = TriangleCache::<I16F16, SLOTS>::new();
-    let cached = Cached::new(compact::MESH, &mut slots);
-    let compact_cached =
-        arena::simulate::<I16F16, _>(&Via(&cached, query_arena_compact_cached), 1, 100);
-    let cached = Cached::new(terrain::FIELD, &mut slots);
-    let field_cached = terrain_run(
-        &Via(&cached, query_terrain_air_cached),
-        &Via(&cached, query_terrain_ground_cached),
-    );
+    // The same runs with a cache beside the compact arena and the terrain (one at a time:
+    // 3 KB each).
+    let compact_cached = {
+        let cached = CachedCompact::new(compact::MESH);
+        arena::simulate::<I16F16, _>(&Via(&cached, query_arena_compact_cached), 1, 100)
+    };
+    let field_cached = {
+        let cached = CachedField::new(terrain::FIELD);
+        terrain_run(
+            &Via(&cached, query_terrain_air_cached),
+            &Via(&cached, query_terrain_ground_cached),
+        )
+    };
     hprintln!(
         "ramp scan {:016x}, ramp mesh {:016x}, arena {:016x}, arena compact {:016x}, terrain {:016x}",
         scan,
