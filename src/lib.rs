@@ -152,6 +152,11 @@ pub mod winding;
 #[cfg(test)]
 mod xorshift;
 
+/// The `fixed` crate whose [`I16F16`](fixed::types::I16F16) and
+/// [`I32F32`](fixed::types::I32F32) implement [`Scalar`]: name them through it
+/// (`ballcast::fixed::types::I16F16`) to be sure of the version this crate was built with.
+pub use fixed;
+
 pub use bvh::{Grid, LeafSize, Node};
 pub use cache::{Cacheable, Cached, TriangleCache};
 pub use compact::{CompactError, CompactMesh, MeshIndex};
