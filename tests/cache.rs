@@ -218,7 +218,9 @@ fn caches_by_reference_walk_as_the_terrain<S: Scalar>() {
 
 /// A character walking frame after frame: one `Cached` kept throughout answers as the terrain
 /// and prepares far fewer triangles than one made anew each frame (which starts empty), the
-/// use it exists for.
+/// use it exists for: 18 against 654 to 691 in the four scalars, with 32 slots. (One slot per
+/// triangle instead of sets of four prepared 524 kept, in `f32`: two triangles touched every
+/// frame shared a slot.)
 fn a_cached_kept_across_frames_prepares_far_fewer<S: Scalar>() {
     let (mut heights, mut cells) = (Vec::new(), vec![0u8; (W * W) as usize]);
     let field = terrain::<S>(0x0cac_4e05, &mut heights, &mut cells);
@@ -246,7 +248,7 @@ fn a_cached_kept_across_frames_prepares_far_fewer<S: Scalar>() {
     };
     let (kept, anew) = (walk(false), walk(true));
     assert!(
-        kept > 0 && 5 * kept < anew,
+        kept > 0 && 10 * kept < anew,
         "{kept} prepared kept, {anew} anew"
     );
 }

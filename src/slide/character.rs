@@ -7,7 +7,8 @@ use crate::{Error, Geometry, Input, Scalar, Vec3, check};
 /// A walking ball: the character loop of game engines, one [`update`](Self::update) a frame.
 ///
 /// On the floor, it presses into the floor along the floor's normal by `|gravity| dt²` (so it
-/// does not slide down a walkable slope), then walks by the wished velocity's part along the
+/// does not slide down a walkable slope; not when standing with a press shallower than the
+/// skin, which could only move it about its gap, and in fixed point down the slope), then walks by the wished velocity's part along the
 /// floor's plane times `dt`, stepping onto ledges up to its step height
 /// ([`Slider::step_slide`], Quake's `PM_StepSlideMove`); in the air, gravity adds to its
 /// velocity and it moves by that (the wish steers in the air only with
@@ -248,14 +249,28 @@ impl<S: Scalar> Character<S> {
         let walked = me.floor.is_some();
         let out = match me.floor.map(|f| f.normal) {
             Some(n) => {
-                let press = Vec3::ZERO - n * gravity.length().mul(dt).mul(dt);
-                let pressed = ball.slide(level, me.position, press)?;
+                // Standing, a press shallower than the skin cannot reach the floor the ball
+                // rests a skin above: it would only move the ball about its gap, where, rounded
+                // to a step straight down in fixed point, it walks the ball down the slope
+                // (`I16F16` at 960 Hz). The probe below finds the floor instead.
                 me.velocity = wish.reject_from_normalized(n);
+                let depth = gravity.length().mul(dt).mul(dt);
+                let standing = me.velocity == Vec3::ZERO;
+                let pressed = if standing && depth < ball.skin(magnitude(me.position)) {
+                    None
+                } else {
+                    Some(ball.slide(level, me.position, Vec3::ZERO - n * depth)?)
+                };
                 let walk = me.velocity * dt;
                 let on = (up, min_cos);
-                let out = ball.walk(level, pressed.position, walk, Some(n), on, me.step)?;
+                let from = pressed.as_ref().map_or(me.position, |p| p.position);
+                let out = ball.walk(level, from, walk, Some(n), on, me.step)?;
                 let floor = out.ground_floor(up, min_cos)?;
-                me.floor = floor.or(pressed.ground_floor(up, min_cos)?);
+                let held = match &pressed {
+                    Some(p) => p.ground_floor(up, min_cos)?,
+                    None => None,
+                };
+                me.floor = floor.or(held);
                 out
             }
             None => {

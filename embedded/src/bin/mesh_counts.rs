@@ -101,7 +101,7 @@ fn query_terrain_ground(s: &Sweep<I16F16>) -> Hit {
     terrain::FIELD.cast(s)
 }
 
-/// A cache's slots beside the terrain and the compact arena (92 bytes each in `I16F16`).
+/// A cache's slots beside the terrain and the compact arena (100 bytes each in `I16F16` here).
 const SLOTS: usize = 32;
 type CachedField = Cached<Heightfield<'static, I16F16>, I16F16, SLOTS>;
 type CachedCompact = Cached<CompactMesh<'static, I16F16, u16>, I16F16, SLOTS>;
