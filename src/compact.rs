@@ -267,6 +267,11 @@ impl<'a, S: Scalar, I: MeshIndex> CompactMesh<'a, S, I> {
     }
 }
 
+#[cfg(feature = "alloc")]
+mod buf;
 mod query;
 #[cfg(test)]
 mod tests;
+
+#[cfg(feature = "alloc")]
+pub use buf::CompactMeshBuf;

@@ -72,7 +72,9 @@
 //!   [`bvh`] holds its tree ([`Node`], [`Grid`]): layout, build and traversal. With the `alloc`
 //!   feature, `mesh_buf` holds `MeshBuf`, a mesh owning its parts in `Vec`s.
 //! - [`compact`] holds [`CompactMesh`], a mesh's tree over shared vertices and indexed
-//!   triangles (about 19 bytes per triangle), answering exactly as the prepared mesh.
+//!   triangles (about 19 bytes per triangle), answering exactly as the prepared mesh; with
+//!   the `alloc` feature also `CompactMeshBuf`, one made from a triangle soup and owning its
+//!   parts.
 //! - [`heightfield`] holds [`Heightfield`], a terrain as a grid of 16-bit heights (about 1.5
 //!   bytes per triangle), answering exactly as the same triangles in a mesh; with the `alloc`
 //!   feature also `HeightfieldBuf`, one owning its heights and cell bytes.
@@ -159,6 +161,8 @@ pub use fixed;
 
 pub use bvh::{Grid, LeafSize, Node};
 pub use cache::{Cacheable, Cached, TriangleCache};
+#[cfg(feature = "alloc")]
+pub use compact::CompactMeshBuf;
 pub use compact::{CompactError, CompactMesh, MeshIndex};
 pub use compound::{Compound, CompoundPart, PartIndex};
 pub use contact::Features;

@@ -8,8 +8,8 @@ mod meshes;
 
 use ballcast::import::weld;
 use ballcast::{
-    Cached, CompactMesh, Compound, Degenerates, Error, Geometry, Heightfield, HeightfieldBuf,
-    HeightfieldError, MeshBuf, Sweep, Triangle, Vec3,
+    Cached, CompactMesh, CompactMeshBuf, Compound, Degenerates, Error, Geometry, Heightfield,
+    HeightfieldBuf, HeightfieldError, MeshBuf, MeshError, Sweep, Triangle, Vec3,
 };
 use common::{Rng, Tolerance, v};
 use fixed::types::{I16F16, I32F32};
@@ -73,6 +73,45 @@ fn welded_soups_compact<S: Tolerance>() {
             assert_eq!(format!("{x:?}"), format!("{y:?}"), "{}", S::NAME);
         }
     }
+}
+
+/// `CompactMeshBuf` (weld, build with leaves of four, compact, in one call) answers as the
+/// prepared mesh of the same triangles, two-sided ones and a degenerate one skipped among them,
+/// alone and owned by a `Cached`; a NaN corner (out of range in fixed point) is refused naming its triangle.
+fn compact_mesh_buf_answers_as_the_mesh<S: Tolerance>() {
+    let mut rng = Rng(0x0a11_0c0e);
+    let shapes = [
+        heightfield(&mut rng, 10, 1.0, 0.65),
+        boxes(&mut rng, 8, 5.0),
+        soup(&mut rng, 150, 4.0),
+    ];
+    for src in shapes {
+        let mut input: Vec<Triangle<S>> = src.iter().map(|&t| tri::<S>(t)).collect();
+        let p = input[0].v0;
+        input.insert(7, Triangle::new(p, p, input[0].v1));
+        let sided = |i: usize| i.is_multiple_of(3);
+        let want = MeshBuf::build_sided(&input, sided, Degenerates::Skip).unwrap();
+        let owned = CompactMeshBuf::build_sided(&input, sided, Degenerates::Skip).unwrap();
+        assert_eq!(owned.skipped(), 1, "{}", S::NAME);
+        assert_eq!(owned.compact_mesh().len(), want.mesh().len());
+        let kept: Cached<&CompactMeshBuf<S>, S, 16> = Cached::new(&owned);
+        for _ in 0..300 {
+            let (p0, p1, r) = (rng.point(6.0), rng.point(6.0), rng.range(0.05, 1.0));
+            let sweep = Sweep::new(v::<S>(p0), v(p1), S::from_f64(r)).unwrap();
+            let y = format!("{:?}", want.cast(&sweep));
+            assert_eq!(format!("{:?}", owned.cast(&sweep)), y, "{}", S::NAME);
+            assert_eq!(format!("{:?}", kept.cast(&sweep)), y, "{}", S::NAME);
+        }
+    }
+    let bad = [tri::<S>([[0.0, 0.0, 0.0], [0.0, 0.0, 1.0], [1.0, 0.0, 0.0]]); 3];
+    let mut bad = bad.to_vec();
+    bad[2].v1.y = S::from_f64(f64::NAN);
+    let e = CompactMeshBuf::build(&bad, Degenerates::Refuse);
+    assert!(
+        matches!(e, Err(MeshError::Triangle { index: 2, .. })),
+        "{}: {e:?}",
+        S::NAME
+    );
 }
 
 /// Corners equal bit for bit are one vertex; `-0.0` and `0.0` are not, so the rebuilt
@@ -168,6 +207,10 @@ macro_rules! per_scalar {
         #[test]
         fn welded_soups_compact_as_the_mesh() {
             welded_soups_compact::<$t>();
+        }
+        #[test]
+        fn compact_mesh_buf_answers_as_the_mesh() {
+            super::compact_mesh_buf_answers_as_the_mesh::<$t>();
         }
         #[test]
         fn heightfield_buf_answers_as_the_borrowed_build() {
