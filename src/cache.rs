@@ -35,7 +35,7 @@
 //! kept triangles are always its own. A cache is not `Sync` (its slots are `Cell`s): one per
 //! thread.
 
-use crate::compound::CompoundPart;
+use crate::compound::{Compound, CompoundPart};
 use crate::merge::{Earliest, earliest_of};
 use crate::{Geometry, Mesh, Scalar, SceneHit, StandardTriangle, Sweep, Vec3};
 use core::cell::Cell;
@@ -90,6 +90,7 @@ impl<S: Scalar, const N: usize> TriangleCache<S, N> {
             clock: &self.clock,
             hits: &self.hits,
             misses: &self.misses,
+            base: 0,
         }
     }
 }
@@ -114,6 +115,9 @@ pub struct Slots<'a, S: Scalar> {
     clock: &'a Cell<u32>,
     hits: &'a Cell<u32>,
     misses: &'a Cell<u32>,
+    /// Added to a part's own indices: a compound's second part keeps its triangles under the
+    /// indices the compound gives them, apart from the first part's.
+    base: usize,
 }
 
 /// Where a form's query takes and keeps prepared triangles: a cache's [`Slots`], or `()` for
@@ -139,6 +143,12 @@ impl<S: Scalar> Keep<S> for () {
 const WAYS: usize = 4;
 
 impl<S: Scalar> Slots<'_, S> {
+    /// The same slots for a part whose indices start `by` further on.
+    fn shifted(self, by: usize) -> Self {
+        let base = self.base.saturating_add(by);
+        Self { base, ..self }
+    }
+
     /// The slots of triangle `index`'s set.
     fn set(&self, index: usize) -> Range<usize> {
         let n = self.keys.len();
@@ -184,6 +194,7 @@ impl<S: Scalar> Keep<S> for Slots<'_, S> {
     const ON: bool = true;
 
     fn get(&self, index: usize) -> Option<StandardTriangle<S>> {
+        let index = index.saturating_add(self.base);
         let ways = self.set(index);
         let k = ways
             .clone()
@@ -195,6 +206,7 @@ impl<S: Scalar> Keep<S> for Slots<'_, S> {
     }
 
     fn put(&self, index: usize, triangle: StandardTriangle<S>) {
+        let index = index.saturating_add(self.base);
         // An empty slot of the set, else the least recently used.
         let now = self.clock.get();
         let age = |k: &usize| match (self.keys.get(*k), self.used.get(*k)) {
@@ -219,10 +231,13 @@ fn count(c: &Cell<u32>) {
     c.set(c.get().saturating_add(1));
 }
 
-/// A geometry whose queries can keep the triangles they prepare in a [`TriangleCache`]:
-/// [`Heightfield`](crate::Heightfield), [`CompactMesh`](crate::CompactMesh), `HeightfieldBuf`
-/// (with the `alloc` feature) and a shared reference to any of them (several characters'
-/// caches over one terrain).
+/// A geometry a [`Cached`] can hold: [`Heightfield`](crate::Heightfield) and
+/// [`CompactMesh`](crate::CompactMesh) (and, with the `alloc` feature, `HeightfieldBuf` and
+/// `CompactMeshBuf`) keep the triangles they prepare; the prepared forms ([`Mesh`], `MeshBuf`,
+/// [`Scene`](crate::Scene), slices of prepared triangles) have nothing to keep; a
+/// [`Compound`] keeps each part's triangles under the indices it gives them, so a whole level
+/// can be cached as one; and a shared reference to any of them (several characters' caches
+/// over one level).
 pub trait Cacheable<S: Scalar>: CompoundPart<S> {
     /// Offers the contacts of the geometry's quick path, taking and keeping prepared triangles
     /// in `cache`; false where it found its parts malformed (then the caller scans).
@@ -236,9 +251,53 @@ impl<S: Scalar, T: Cacheable<S> + ?Sized> Cacheable<S> for &T {
     }
 }
 
+/// A compound keeps each part's triangles under the indices it gives them.
+impl<S: Scalar, A: Cacheable<S>, B: Cacheable<S>> Cacheable<S> for Compound<A, B> {
+    fn offer_cached(&self, sweep: &Sweep<S>, acc: &mut Earliest<S>, cache: Slots<'_, S>) -> bool {
+        let first = self.first().offer_cached(sweep, acc, cache);
+        let base = acc.rebase(0);
+        acc.rebase(base.saturating_add(self.offset()));
+        let second = self
+            .second()
+            .offer_cached(sweep, acc, cache.shifted(self.offset()));
+        acc.rebase(base);
+        first && second
+    }
+}
+
+/// The prepared forms keep nothing: their quick path as it is, so that a compound of them
+/// and the forms that prepare on the spot can be [`Cached`] whole.
+impl<S: Scalar> Cacheable<S> for Mesh<'_, S> {
+    fn offer_cached(&self, sweep: &Sweep<S>, acc: &mut Earliest<S>, _: Slots<'_, S>) -> bool {
+        self.offer_contacts(sweep, acc, false)
+    }
+}
+
+impl<S: Scalar> Cacheable<S> for [StandardTriangle<S>] {
+    fn offer_cached(&self, sweep: &Sweep<S>, acc: &mut Earliest<S>, _: Slots<'_, S>) -> bool {
+        self.offer_contacts(sweep, acc, false)
+    }
+}
+
+impl<S: Scalar, const N: usize> Cacheable<S> for crate::Scene<S, N> {
+    fn offer_cached(&self, sweep: &Sweep<S>, acc: &mut Earliest<S>, _: Slots<'_, S>) -> bool {
+        self.offer_contacts(sweep, acc, false)
+    }
+}
+
+#[cfg(feature = "alloc")]
+impl<S: Scalar> Cacheable<S> for crate::MeshBuf<S> {
+    fn offer_cached(&self, sweep: &Sweep<S>, acc: &mut Earliest<S>, _: Slots<'_, S>) -> bool {
+        self.offer_contacts(sweep, acc, false)
+    }
+}
+
 /// A geometry with a [`TriangleCache`] of `N` triangles of its own: the same answers, bit for
 /// bit, for less work where queries come back to the same triangles (see the
-/// [module docs](self)). A [`Geometry`] and a [`CompoundPart`], as the geometry is.
+/// [module docs](self)). A [`Geometry`] and a [`CompoundPart`], as the geometry is. Cache a
+/// whole level at once (`Cached::new(Compound::new(terrain, buildings)?)`: the terrain's
+/// triangles are kept, the prepared buildings need no keeping) or one part of it
+/// (`Compound::new(Cached::new(terrain), buildings)?`).
 ///
 /// ```
 /// use ballcast::{Cached, Heightfield, Vec3, move_and_slide};

@@ -166,6 +166,10 @@ impl fmt::Display for HeightfieldError {
             Self::Spacing { value } => {
                 write!(f, "heightfield spacing {value} is not positive and finite")
             }
+            Self::Unit { value: 0.0 } => f.write_str(
+                "heightfield height unit is zero (in fixed point, a step finer than the \
+                 scalar's resolution rounds to zero)",
+            ),
             Self::Unit { value } => write!(
                 f,
                 "heightfield height unit {value} is not a finite nonzero step"
@@ -175,7 +179,8 @@ impl fmt::Display for HeightfieldError {
             }
             Self::OutOfRange { value, limit } => write!(
                 f,
-                "heightfield reaches {value}, beyond the scalar's safe range [-{limit}, {limit}]"
+                "heightfield reaches {value} (origin plus cells times spacing, or heights times \
+                 the height unit), beyond the scalar's safe range [-{limit}, {limit}]"
             ),
             Self::Sides { count } => write!(
                 f,

@@ -253,6 +253,41 @@ fn a_cached_kept_across_frames_prepares_far_fewer<S: Scalar>() {
     );
 }
 
+/// One `Cached` over a whole level: a compound of two different terrains over the same ground
+/// (the same triangle indices in each part) and a prepared mesh of boxes. Each part's
+/// triangles are kept under the compound's indices, so neither terrain is answered with the
+/// other's triangles: the answers are the compound's without a cache, and both terrains' are
+/// found kept.
+fn a_cached_compound_keeps_its_parts_apart<S: Scalar>() {
+    let (mut h1, mut c1) = (Vec::new(), vec![0u8; (W * W) as usize]);
+    let (mut h2, mut c2) = (Vec::new(), vec![0u8; (W * W) as usize]);
+    let (a, b) = (
+        terrain::<S>(0x0cac_4e07, &mut h1, &mut c1),
+        terrain::<S>(0x0cac_4e08, &mut h2, &mut c2),
+    );
+    let mut rng = Rng(0x0cac_4e09);
+    let src = meshes::boxes(&mut rng, 6, 4.0);
+    let tris: Vec<_> = src.iter().map(|&t| meshes::tri::<S>(t)).collect();
+    let owned = meshes::build::<S>(&tris, Degenerates::Refuse).unwrap();
+    let plain = Compound::new(Compound::new(a, b).unwrap(), owned.mesh()).unwrap();
+    let cached: Cached<_, S, 64> = Cached::new(plain);
+    let sweeps = sweeps::<S>(&mut rng, 1500);
+    let mut parts = [0; 3];
+    for s in &sweeps {
+        let want = plain.cast(s);
+        for _ in 0..2 {
+            assert_eq!(format!("{:?}", cached.cast(s)), format!("{want:?}"));
+        }
+        if let Some(h) = want {
+            let inner = plain.first().offset();
+            let part = (h.index >= inner) as usize + (h.index >= plain.offset()) as usize;
+            parts[part] += 1;
+        }
+    }
+    assert!(parts.iter().all(|&n| n > 50), "hits per part {parts:?}");
+    assert!(cached.cache().hits() > 1000, "{:?}", cached.cache());
+}
+
 meshes::per_scalar!(
     heightfield_answers_as_without,
     compact_answers_as_without,
@@ -260,4 +295,5 @@ meshes::per_scalar!(
     walks_and_compounds_as_without,
     caches_by_reference_walk_as_the_terrain,
     a_cached_kept_across_frames_prepares_far_fewer,
+    a_cached_compound_keeps_its_parts_apart,
 );
