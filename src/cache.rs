@@ -194,7 +194,11 @@ impl<S: Scalar> Keep<S> for Slots<'_, S> {
     const ON: bool = true;
 
     fn get(&self, index: usize) -> Option<StandardTriangle<S>> {
+        // (A compound's indices stay below `EMPTY`; were one to reach it, it is never found.)
         let index = index.saturating_add(self.base);
+        if index == EMPTY {
+            return None;
+        }
         let ways = self.set(index);
         let k = ways
             .clone()

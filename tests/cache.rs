@@ -254,7 +254,7 @@ fn a_cached_kept_across_frames_prepares_far_fewer<S: Scalar>() {
 }
 
 /// One `Cached` over a whole level: a compound of two different terrains over the same ground
-/// (the same triangle indices in each part) and a prepared mesh of boxes. Each part's
+/// (the same triangle indices in each part) and a prepared mesh of boxes, nested either way. Each part's
 /// triangles are kept under the compound's indices, so neither terrain is answered with the
 /// other's triangles: the answers are the compound's without a cache, and both terrains' are
 /// found kept.
@@ -269,14 +269,22 @@ fn a_cached_compound_keeps_its_parts_apart<S: Scalar>() {
     let src = meshes::boxes(&mut rng, 6, 4.0);
     let tris: Vec<_> = src.iter().map(|&t| meshes::tri::<S>(t)).collect();
     let owned = meshes::build::<S>(&tris, Degenerates::Refuse).unwrap();
-    let plain = Compound::new(Compound::new(a, b).unwrap(), owned.mesh()).unwrap();
+    let mesh = owned.mesh();
+    let plain = Compound::new(Compound::new(a, b).unwrap(), mesh).unwrap();
+    // The same parts nested the other way: the terrains' indices shifted twice over.
+    let other = Compound::new(mesh, Compound::new(a, b).unwrap()).unwrap();
     let cached: Cached<_, S, 64> = Cached::new(plain);
+    let cached_other: Cached<_, S, 64> = Cached::new(other);
     let sweeps = sweeps::<S>(&mut rng, 1500);
     let mut parts = [0; 3];
     for s in &sweeps {
-        let want = plain.cast(s);
+        let (want, want_other) = (plain.cast(s), other.cast(s));
         for _ in 0..2 {
             assert_eq!(format!("{:?}", cached.cast(s)), format!("{want:?}"));
+            assert_eq!(
+                format!("{:?}", cached_other.cast(s)),
+                format!("{want_other:?}")
+            );
         }
         if let Some(h) = want {
             let inner = plain.first().offset();
@@ -285,7 +293,9 @@ fn a_cached_compound_keeps_its_parts_apart<S: Scalar>() {
         }
     }
     assert!(parts.iter().all(|&n| n > 50), "hits per part {parts:?}");
-    assert!(cached.cache().hits() > 1000, "{:?}", cached.cache());
+    for c in [cached.cache(), cached_other.cache()] {
+        assert!(c.hits() > 1000, "{c:?}");
+    }
 }
 
 meshes::per_scalar!(

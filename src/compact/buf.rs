@@ -62,15 +62,18 @@ impl<S: Scalar> CompactMeshBuf<S> {
         two_sided: impl Fn(usize) -> bool,
         degenerates: Degenerates,
     ) -> Result<Self, MeshError> {
-        let (vertices, indices) = weld(sources).map_err(|error| match error {
+        // The build first: its checks name the first bad triangle in input order, and refuse
+        // too many before the weld sorts them all.
+        let options = degenerates.with_leaf_size(LeafSize::Four);
+        let mesh = MeshBuf::build_sided(sources, two_sided, options)?;
+        let (mut vertices, indices) = weld(sources).map_err(|error| match error {
             Error::Full { .. } => MeshError::TooMany,
             error => MeshError::Triangle {
                 index: error.triangle().unwrap_or(0),
                 error,
             },
         })?;
-        let options = degenerates.with_leaf_size(LeafSize::Four);
-        let mesh = MeshBuf::build_sided(sources, two_sided, options)?;
+        vertices.shrink_to_fit();
         let n = mesh.mesh().len();
         let (mut triangles, mut order, mut bytes) = (vec![[0u32; 3]; n], vec![0; n], vec![0; n]);
         let (nodes, grid, class) = {

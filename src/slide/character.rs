@@ -7,9 +7,10 @@ use crate::{Error, Geometry, Input, Scalar, Vec3, check};
 /// A walking ball: the character loop of game engines, one [`update`](Self::update) a frame.
 ///
 /// On the floor, it presses into the floor along the floor's normal by `|gravity| dt²` (so it
-/// does not slide down a walkable slope; not when standing with a press shallower than the
-/// skin, which could only move it about its gap, and in fixed point down the slope), then walks by the wished velocity's part along the
-/// floor's plane times `dt`, stepping onto ledges up to its step height
+/// does not slide down a walkable slope; not when it stands, its walk rounding to nothing:
+/// the press could then only move it about its gap, and in fixed point down the slope), then
+/// walks by the wished velocity's part along the floor's plane times `dt`, stepping onto
+/// ledges up to its step height
 /// ([`Slider::step_slide`], Quake's `PM_StepSlideMove`); in the air, gravity adds to its
 /// velocity and it moves by that (the wish steers in the air only with
 /// [`with_air_control`](Self::with_air_control)). Its velocity then keeps what the contacts allow
@@ -249,19 +250,18 @@ impl<S: Scalar> Character<S> {
         let walked = me.floor.is_some();
         let out = match me.floor.map(|f| f.normal) {
             Some(n) => {
-                // Standing, a press shallower than the skin cannot reach the floor the ball
-                // rests a skin above: it would only move the ball about its gap, where, rounded
-                // to a step straight down in fixed point, it walks the ball down the slope
-                // (`I16F16` at 960 Hz). The probe below finds the floor instead.
+                // Standing (the walk rounds to nothing), the press could only move the ball
+                // about its gap above the floor, where, rounded to a step straight down in fixed
+                // point, it walks the ball down the slope (`I16F16` at 960 Hz, or in a steep
+                // valley from 240 Hz). The probe below finds the floor instead.
                 me.velocity = wish.reject_from_normalized(n);
-                let depth = gravity.length().mul(dt).mul(dt);
-                let standing = me.velocity == Vec3::ZERO;
-                let pressed = if standing && depth < ball.skin(magnitude(me.position)) {
+                let walk = me.velocity * dt;
+                let pressed = if walk == Vec3::ZERO {
                     None
                 } else {
+                    let depth = gravity.length().mul(dt).mul(dt);
                     Some(ball.slide(level, me.position, Vec3::ZERO - n * depth)?)
                 };
-                let walk = me.velocity * dt;
                 let on = (up, min_cos);
                 let from = pressed.as_ref().map_or(me.position, |p| p.position);
                 let out = ball.walk(level, from, walk, Some(n), on, me.step)?;
