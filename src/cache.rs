@@ -174,7 +174,7 @@ fn ways(n: usize, s: usize) -> Range<usize> {
     if s + 1 >= sets {
         start..n
     } else {
-        start..(start + WAYS).min(n)
+        start..start + WAYS
     }
 }
 
@@ -258,14 +258,11 @@ impl<S: Scalar, T: Cacheable<S> + ?Sized> Cacheable<S> for &T {
 /// A compound keeps each part's triangles under the indices it gives them.
 impl<S: Scalar, A: Cacheable<S>, B: Cacheable<S>> Cacheable<S> for Compound<A, B> {
     fn offer_cached(&self, sweep: &Sweep<S>, acc: &mut Earliest<S>, cache: Slots<'_, S>) -> bool {
-        let first = self.first().offer_cached(sweep, acc, cache);
-        let base = acc.rebase(0);
-        acc.rebase(base.saturating_add(self.offset()));
-        let second = self
-            .second()
-            .offer_cached(sweep, acc, cache.shifted(self.offset()));
-        acc.rebase(base);
-        first && second
+        self.offer_parts(
+            acc,
+            |a, acc| a.offer_cached(sweep, acc, cache),
+            |b, offset, acc| b.offer_cached(sweep, acc, cache.shifted(offset)),
+        )
     }
 }
 

@@ -177,11 +177,28 @@ impl<S: Scalar, A: CompoundPart<S>, B: CompoundPart<S>> CompoundPart<S> for Comp
     }
 
     fn offer_contacts(&self, sweep: &Sweep<S>, acc: &mut Earliest<S>, scan: bool) -> bool {
-        let first = self.first.offer_contacts(sweep, acc, scan);
-        // The second part's indices follow the first's, from wherever this compound's start.
+        self.offer_parts(
+            acc,
+            |a, acc| a.offer_contacts(sweep, acc, scan),
+            |b, _, acc| b.offer_contacts(sweep, acc, scan),
+        )
+    }
+}
+
+impl<A, B> Compound<A, B> {
+    /// Offers the first part's contacts with `first`, then the second's with `second` (given
+    /// the offset its indices start from) with `acc` numbering them after the first's, from
+    /// wherever this compound's own start; whether both parts were well formed.
+    pub(crate) fn offer_parts<S: Scalar>(
+        &self,
+        acc: &mut Earliest<S>,
+        first: impl FnOnce(&A, &mut Earliest<S>) -> bool,
+        second: impl FnOnce(&B, usize, &mut Earliest<S>) -> bool,
+    ) -> bool {
+        let first = first(&self.first, acc);
         let base = acc.rebase(0);
         acc.rebase(base.saturating_add(self.offset));
-        let second = self.second.offer_contacts(sweep, acc, scan);
+        let second = second(&self.second, self.offset, acc);
         acc.rebase(base);
         first && second
     }
