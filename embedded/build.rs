@@ -5,7 +5,7 @@
 //! (the arena as a `CompactMesh`) and `terrain.rs` (a 64 × 64 `Heightfield`). A bad level fails
 //! the build with the loader's message.
 use ballcast::bvh::{LeafSize, nodes_for};
-use ballcast::{CompactMesh, Degenerates, Heightfield, Mesh, Node, Vec3};
+use ballcast::{CompactMesh, Degenerates, Heightfield, HeightfieldShape, Mesh, Node, Vec3};
 use fixed::types::I16F16;
 use std::fmt::Write as _;
 use std::{env, fs, path::PathBuf};
@@ -106,17 +106,21 @@ fn terrain() -> String {
     );
     let n = forms::CELLS;
     let f = Heightfield::build(
-        Vec3::ZERO,
-        spacing,
-        unit,
-        n,
-        n,
+        HeightfieldShape {
+            origin: Vec3::ZERO,
+            spacing,
+            unit,
+            columns: n,
+            rows: n,
+        },
         &heights,
         |_, _| false,
         &mut cells,
     )
     .unwrap();
-    let mut s = String::from("use ballcast::{Heightfield, Vec3};\nuse fixed::types::I16F16;\n\n");
+    let mut s = String::from(
+        "use ballcast::{Heightfield, HeightfieldShape, Vec3};\nuse fixed::types::I16F16;\n\n",
+    );
     let _ = writeln!(
         s,
         "pub static HEIGHTS: [i16; {}] = {heights:?};",
@@ -130,7 +134,7 @@ fn terrain() -> String {
     );
     let _ = writeln!(
         s,
-        "pub static FIELD: Heightfield<'static, I16F16> = Heightfield::from_parts(Vec3::new(I16F16::ZERO, I16F16::ZERO, I16F16::ZERO), I16F16::from_bits({}), I16F16::from_bits({}), {n}, {n}, &HEIGHTS, &CELLS, {:?}, {});",
+        "pub static FIELD: Heightfield<'static, I16F16> = Heightfield::from_parts(HeightfieldShape {{ origin: Vec3::new(I16F16::ZERO, I16F16::ZERO, I16F16::ZERO), spacing: I16F16::from_bits({}), unit: I16F16::from_bits({}), columns: {n}, rows: {n} }}, &HEIGHTS, &CELLS, {:?}, {});",
         forms::SPACING_BITS,
         forms::UNIT_BITS,
         f.bounds(),

@@ -13,7 +13,7 @@
 use ballcast::bvh::nodes_for;
 use ballcast::fixed::types::I16F16;
 use ballcast::slide::Character;
-use ballcast::{Cached, Compound, Degenerates, Heightfield, Mesh, Node, Scalar};
+use ballcast::{Cached, Compound, Degenerates, Heightfield, HeightfieldShape, Mesh, Node, Scalar};
 use ballcast::{Triangle, Vec3};
 
 /// Frames a second, and seconds in all.
@@ -84,7 +84,16 @@ fn run<S: Scalar>() -> Result<Trace<S>, Box<dyn std::error::Error>> {
     let (cell, unit) = (S::ONE, S::from_f64(1.0 / 64.0));
     let no_holes = |_, _| false;
     let terrain = Heightfield::build(
-        origin, cell, unit, CELLS, CELLS, &heights, no_holes, &mut cells,
+        HeightfieldShape {
+            origin,
+            spacing: cell,
+            unit,
+            columns: CELLS,
+            rows: CELLS,
+        },
+        &heights,
+        no_holes,
+        &mut cells,
     )?;
     let boxes = crates::<S>();
     let n = boxes.len();

@@ -8,7 +8,9 @@
 //! Run: `cargo run --release --example forms`
 
 use ballcast::bvh::{LeafSize, nodes_for};
-use ballcast::{CompactMesh, Compound, Degenerates, Heightfield, Mesh, Node, Vec3};
+use ballcast::{
+    CompactMesh, Compound, Degenerates, Heightfield, HeightfieldShape, Mesh, Node, Vec3,
+};
 use fixed::types::I16F16;
 
 #[path = "../embedded/src/arena.rs"]
@@ -46,11 +48,13 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let unit = I16F16::from_bits(forms::UNIT_BITS);
     let size = forms::CELLS;
     let field = Heightfield::build(
-        Vec3::ZERO,
-        spacing,
-        unit,
-        size,
-        size,
+        HeightfieldShape {
+            origin: Vec3::ZERO,
+            spacing,
+            unit,
+            columns: size,
+            rows: size,
+        },
         &heights,
         |_, _| false,
         &mut cells,

@@ -301,10 +301,10 @@ impl<S: Scalar> Cacheable<S> for crate::MeshBuf<S> {
 /// (`Compound::new(Cached::new(terrain), buildings)?`).
 ///
 /// ```
-/// use ballcast::{Cached, Heightfield, Vec3, move_and_slide};
+/// use ballcast::{Cached, Heightfield, HeightfieldShape, Vec3, move_and_slide};
 /// let heights = [0i16; 9];
 /// let mut cells = [0u8; 4];
-/// let ground = Heightfield::build(Vec3::new(-1.0f32, 0.0, -1.0), 1.0, 0.25, 2, 2, &heights, |_, _| false, &mut cells)?;
+/// let ground = Heightfield::build(HeightfieldShape { origin: Vec3::new(-1.0f32, 0.0, -1.0), spacing: 1.0, unit: 0.25, columns: 2, rows: 2 }, &heights, |_, _| false, &mut cells)?;
 /// let level: Cached<_, _, 16> = Cached::new(ground); // 16 slots
 /// let mut at = Vec3::new(-0.5, 0.6, 0.0);
 /// for _ in 0..10 {

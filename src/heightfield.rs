@@ -54,17 +54,43 @@ pub const HOLE: u8 = 1 << 6;
 /// Most triangles a heightfield holds (triangle indices stay below 2^31).
 pub const MAX_TRIANGLES: usize = 1 << 31;
 
+/// Where a heightfield's grid lies and how its numbers become lengths: plain data, checked by
+/// [`Heightfield::build`]. Named fields, so a call cannot swap the columns for the rows or the
+/// cell side for the height step.
+///
+/// Vertex `(i, k)` (column `i` along x, row `k` along z) lies at
+/// `origin + (i spacing, unit × its height, k spacing)`.
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(bound = "S: crate::Scalar"))]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct HeightfieldShape<S> {
+    /// Vertex `(0, 0)` at height 0: the grid's corner of least x and z.
+    pub origin: Vec3<S>,
+    /// The cells' side along x and z, in world units (positive).
+    #[cfg_attr(feature = "serde", serde(with = "crate::interop::number"))]
+    pub spacing: S,
+    /// The height step: a height of `h` lies `h × unit` above `origin.y` (nonzero).
+    #[cfg_attr(feature = "serde", serde(with = "crate::interop::number"))]
+    pub unit: S,
+    /// Cells along x (at least one).
+    pub columns: u32,
+    /// Cells along z (at least one).
+    pub rows: u32,
+}
+
 /// A grid of heights forming a terrain, borrowing its heights and cell bytes.
 ///
 /// Made by [`Heightfield::build`] from heights and holes, or by [`Heightfield::from_parts`] (a
 /// `const fn`) from baked ones. See the [module docs](self) for the layout and the query.
 ///
 /// ```
-/// use ballcast::{Heightfield, Sweep, Vec3};
+/// use ballcast::{Heightfield, HeightfieldShape, Sweep, Vec3};
 /// // 2 × 2 cells of side 1 around the origin, heights in steps of 0.25: a bump in the middle.
 /// let heights = [0i16, 0, 0, 0, 4, 0, 0, 0, 0];
 /// let mut cells = [0u8; 4];
-/// let ground = Heightfield::build(Vec3::new(-1.0f32, 0.0, -1.0), 1.0, 0.25, 2, 2, &heights, |_, _| false, &mut cells)?;
+/// let shape = HeightfieldShape { origin: Vec3::new(-1.0f32, 0.0, -1.0), spacing: 1.0, unit: 0.25, columns: 2, rows: 2 };
+/// let ground = Heightfield::build(shape, &heights, |_, _| false, &mut cells)?;
 /// let hit = ground.cast(&Sweep::new(Vec3::new(0.0, 3.0, 0.0), Vec3::new(0.0, -1.0, 0.0), 0.5)?).unwrap();
 /// assert_eq!(hit.position.y, 1.5); // on the bump's top vertex, height 1
 /// # Ok::<(), Box<dyn std::error::Error>>(())
@@ -209,24 +235,19 @@ impl<'a, S: Scalar> Heightfield<'a, S> {
     /// against [`build`](Self::build) in a test. Parts from elsewhere can give wrong answers,
     /// never undefined behaviour, and no panic in a release build (with overflow checks on, as
     /// in a debug build, out-of-range parts can trip them, as any integer arithmetic would).
-    #[allow(clippy::too_many_arguments)]
     pub const fn from_parts(
-        origin: Vec3<S>,
-        spacing: S,
-        unit: S,
-        columns: u32,
-        rows: u32,
+        shape: HeightfieldShape<S>,
         heights: &'a [i16],
         cells: &'a [u8],
         bounds: [i16; 2],
         class: u8,
     ) -> Self {
         Self {
-            origin,
-            spacing,
-            unit,
-            columns,
-            rows,
+            origin: shape.origin,
+            spacing: shape.spacing,
+            unit: shape.unit,
+            columns: shape.columns,
+            rows: shape.rows,
             heights,
             cells,
             bounds,
@@ -351,8 +372,14 @@ impl<'a, S: Scalar> Heightfield<'a, S> {
         self.class
     }
 
-    /// The position of vertex `(0, 0)` at height 0, the cell side and the height step.
-    pub fn frame(&self) -> (Vec3<S>, S, S) {
-        (self.origin, self.spacing, self.unit)
+    /// The grid's place, cell side, height step and size.
+    pub const fn shape(&self) -> HeightfieldShape<S> {
+        HeightfieldShape {
+            origin: self.origin,
+            spacing: self.spacing,
+            unit: self.unit,
+            columns: self.columns,
+            rows: self.rows,
+        }
     }
 }

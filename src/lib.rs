@@ -170,7 +170,7 @@ pub use error::{Error, Input};
 pub use face::standard_face;
 #[cfg(feature = "alloc")]
 pub use heightfield::HeightfieldBuf;
-pub use heightfield::{Heightfield, HeightfieldError};
+pub use heightfield::{Heightfield, HeightfieldError, HeightfieldShape};
 pub use hit::{Contact, Hit};
 pub use merge::PLANES;
 pub use mesh::{Buffer, Degenerates, Mesh, MeshError, MeshOptions};

@@ -9,7 +9,7 @@ mod meshes;
 use ballcast::import::weld;
 use ballcast::{
     Cached, CompactMesh, CompactMeshBuf, Compound, Degenerates, Error, Geometry, Heightfield,
-    HeightfieldBuf, HeightfieldError, MeshBuf, MeshError, Sweep, Triangle, Vec3,
+    HeightfieldBuf, HeightfieldError, HeightfieldShape, MeshBuf, MeshError, Sweep, Triangle, Vec3,
 };
 use common::{Rng, Tolerance, v};
 use fixed::types::{I16F16, I32F32};
@@ -151,11 +151,46 @@ fn heightfield_buf_answers_as_the_borrowed_build<S: Tolerance>() {
     let hole = |i: u32, k: u32| (i + 2 * k).is_multiple_of(7);
     let (o, sp, unit) = (v::<S>([-6.0, 0.5, -4.5]), S::ONE, S::from_f64(1.0 / 64.0));
     let mut cells = vec![0u8; (w * h) as usize];
-    let borrowed = Heightfield::build(o, sp, unit, w, h, &heights, hole, &mut cells).unwrap();
-    let owned = HeightfieldBuf::build(o, sp, unit, w, h, heights.clone(), hole).unwrap();
+    let borrowed = Heightfield::build(
+        HeightfieldShape {
+            origin: o,
+            spacing: sp,
+            unit,
+            columns: w,
+            rows: h,
+        },
+        &heights,
+        hole,
+        &mut cells,
+    )
+    .unwrap();
+    let owned = HeightfieldBuf::build(
+        HeightfieldShape {
+            origin: o,
+            spacing: sp,
+            unit,
+            columns: w,
+            rows: h,
+        },
+        heights.clone(),
+        hole,
+    )
+    .unwrap();
     assert_eq!(owned.heightfield(), borrowed, "{}", S::NAME);
-    let kept: Cached<_, S, 16> =
-        Cached::new(HeightfieldBuf::build(o, sp, unit, w, h, heights.clone(), hole).unwrap());
+    let kept: Cached<_, S, 16> = Cached::new(
+        HeightfieldBuf::build(
+            HeightfieldShape {
+                origin: o,
+                spacing: sp,
+                unit,
+                columns: w,
+                rows: h,
+            },
+            heights.clone(),
+            hole,
+        )
+        .unwrap(),
+    );
     let wall = MeshBuf::build(
         &[tri::<S>([
             [0.0, -2.0, -5.0],
@@ -190,14 +225,34 @@ fn heightfield_buf_answers_as_the_borrowed_build<S: Tolerance>() {
     assert!(hits > 50, "{hits}");
     assert!(kept.cache().misses() > 0);
     assert_eq!(kept.into_geometry().heightfield(), borrowed);
-    let short = HeightfieldBuf::build(o, sp, unit, w, h, heights[1..].to_vec(), hole);
+    let short = HeightfieldBuf::build(
+        HeightfieldShape {
+            origin: o,
+            spacing: sp,
+            unit,
+            columns: w,
+            rows: h,
+        },
+        heights[1..].to_vec(),
+        hole,
+    );
     let needed = ((w + 1) * (h + 1)) as usize;
     let want = HeightfieldError::Size {
         needed,
         given: needed - 1,
     };
     assert_eq!(short.map(|_| ()), Err(want));
-    let huge = HeightfieldBuf::build(o, sp, unit, u32::MAX, u32::MAX, vec![], hole);
+    let huge = HeightfieldBuf::build(
+        HeightfieldShape {
+            origin: o,
+            spacing: sp,
+            unit,
+            columns: u32::MAX,
+            rows: u32::MAX,
+        },
+        vec![],
+        hole,
+    );
     assert_eq!(huge.map(|_| ()), Err(HeightfieldError::TooMany));
 }
 

@@ -9,8 +9,8 @@ mod common;
 mod meshes;
 
 use ballcast::{
-    Cacheable, Cached, CompactMesh, Compound, Degenerates, Heightfield, Mesh, Scalar, Sweep,
-    move_and_slide, slide::Character,
+    Cacheable, Cached, CompactMesh, Compound, Degenerates, Heightfield, HeightfieldShape, Mesh,
+    Scalar, Sweep, move_and_slide, slide::Character,
 };
 use common::{Rng, v};
 use fixed::types::{I16F16, I32F32};
@@ -30,11 +30,13 @@ fn terrain<'a, S: Scalar>(
     let hole = |i: u32, k: u32| (3 * i + k).is_multiple_of(11);
     let o = v([-(W as f64) / 2.0, -0.5, -(W as f64) / 2.0]);
     Heightfield::build(
-        o,
-        S::ONE,
-        S::from_f64(1.0 / 64.0),
-        W,
-        W,
+        HeightfieldShape {
+            origin: o,
+            spacing: S::ONE,
+            unit: S::from_f64(1.0 / 64.0),
+            columns: W,
+            rows: W,
+        },
         heights,
         hole,
         cells,

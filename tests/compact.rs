@@ -11,7 +11,8 @@ use ballcast::penetration::penetration;
 use ballcast::plan::Memory;
 use ballcast::winding::winding;
 use ballcast::{
-    CompactError, CompactMesh, Degenerates, Geometry, Heightfield, Scalar, Sweep, Vec3,
+    CompactError, CompactMesh, Degenerates, Geometry, Heightfield, HeightfieldShape, Scalar, Sweep,
+    Vec3,
 };
 use common::{P, Rng, v};
 use fixed::types::{I16F16, I32F32};
@@ -122,11 +123,13 @@ fn memory_is_what_the_builds_make<S: Scalar>() {
     let mut cells = vec![0u8; 144];
     let one = S::ONE;
     let field = Heightfield::build(
-        Vec3::ZERO,
-        one,
-        one,
-        12,
-        12,
+        HeightfieldShape {
+            origin: Vec3::ZERO,
+            spacing: one,
+            unit: one,
+            columns: 12,
+            rows: 12,
+        },
         &heights,
         |_, _| false,
         &mut cells,

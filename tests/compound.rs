@@ -8,8 +8,8 @@ mod common;
 mod meshes;
 
 use ballcast::{
-    CompactMesh, Compound, CompoundPart, Degenerates, Geometry, Heightfield, Mesh, PartIndex,
-    Scalar, Scene, StandardTriangle, Sweep, Triangle, Vec3, move_and_slide,
+    CompactMesh, Compound, CompoundPart, Degenerates, Geometry, Heightfield, HeightfieldShape,
+    Mesh, PartIndex, Scalar, Scene, StandardTriangle, Sweep, Triangle, Vec3, move_and_slide,
 };
 use common::{P, Rng, v};
 use fixed::types::{I16F16, I32F32};
@@ -47,7 +47,19 @@ impl Level {
         let holes = &self.holes;
         let hole = |i: u32, k: u32| holes[(k * COLUMNS + i) as usize];
         let (one, unit) = (S::ONE, S::from_f64(1.0 / 64.0));
-        Heightfield::build(v(o), one, unit, COLUMNS, ROWS, &self.heights, hole, cells).unwrap()
+        Heightfield::build(
+            HeightfieldShape {
+                origin: v(o),
+                spacing: one,
+                unit,
+                columns: COLUMNS,
+                rows: ROWS,
+            },
+            &self.heights,
+            hole,
+            cells,
+        )
+        .unwrap()
     }
 
     fn wall<S: Scalar>(&self) -> Scene<S, 2> {

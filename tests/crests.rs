@@ -7,7 +7,7 @@
 
 mod common;
 
-use ballcast::{Heightfield, Scalar, Scene, Sweep, Triangle, Vec3};
+use ballcast::{Heightfield, HeightfieldShape, Scalar, Scene, Sweep, Triangle, Vec3};
 use common::walker::{Gait, HALF, walk, walk_with, with_and_without_snap};
 use common::{P, Rng, Tolerance, back, quad, v};
 use fixed::types::{I16F16, I32F32};
@@ -88,11 +88,13 @@ fn walking_on_bumpy_ground_stays_grounded<S: Tolerance>() {
     let mut cells = vec![0u8; (columns * rows) as usize];
     let (origin, unit) = (v::<S>([-12.0, 0.0, -10.0]), S::from_f64(0.05));
     let built = Heightfield::build(
-        origin,
-        S::ONE,
-        unit,
-        columns,
-        rows,
+        HeightfieldShape {
+            origin,
+            spacing: S::ONE,
+            unit,
+            columns,
+            rows,
+        },
         &heights,
         |_, _| false,
         &mut cells,

@@ -7,8 +7,8 @@ mod common;
 mod meshes;
 
 use ballcast::{
-    Degenerates, Geometry, Heightfield, HeightfieldError, Scalar, SceneHit, Sweep, Triangle, Vec3,
-    heightfield::HOLE,
+    Degenerates, Geometry, Heightfield, HeightfieldError, HeightfieldShape, Scalar, SceneHit,
+    Sweep, Triangle, Vec3, heightfield::HOLE,
 };
 use common::{P, Rng, v};
 use fixed::types::{I16F16, I32F32};
@@ -70,11 +70,13 @@ impl Terrain {
     ) -> Result<Heightfield<'a, S>, HeightfieldError> {
         let (c, holes) = (self.columns, &self.holes);
         Heightfield::build(
-            v(self.origin),
-            S::from_f64(self.spacing),
-            S::from_f64(self.unit),
-            c,
-            self.rows,
+            HeightfieldShape {
+                origin: v(self.origin),
+                spacing: S::from_f64(self.spacing),
+                unit: S::from_f64(self.unit),
+                columns: c,
+                rows: self.rows,
+            },
             &self.heights,
             |i, k| holes[(k * c + i) as usize],
             cells,
@@ -265,7 +267,19 @@ fn errors_not_panics<S: Scalar>() {
     let o = Vec3::<S>::ZERO;
     let (one, unit) = (S::ONE, S::from_f64(0.01));
     let build = |sp: S, c: u32, r: u32, h: &[i16], cells: &mut [u8]| {
-        Heightfield::build(o, sp, unit, c, r, h, |_, _| false, cells).map(|_| ())
+        Heightfield::build(
+            HeightfieldShape {
+                origin: o,
+                spacing: sp,
+                unit,
+                columns: c,
+                rows: r,
+            },
+            h,
+            |_, _| false,
+            cells,
+        )
+        .map(|_| ())
     };
     let size = |needed, given| Err(HeightfieldError::Size { needed, given });
     assert_eq!(build(one, 2, 2, &heights[..8], &mut cells), size(9, 8));
@@ -306,11 +320,32 @@ fn errors_not_panics<S: Scalar>() {
     );
     if S::PRECISION.relative {
         let nan = S::from_f64(f64::NAN);
-        let bad_unit = Heightfield::build(o, one, nan, 2, 2, &heights, |_, _| false, &mut cells);
+        let bad_unit = Heightfield::build(
+            HeightfieldShape {
+                origin: o,
+                spacing: one,
+                unit: nan,
+                columns: 2,
+                rows: 2,
+            },
+            &heights,
+            |_, _| false,
+            &mut cells,
+        );
         assert!(matches!(bad_unit, Err(HeightfieldError::Unit { value }) if value.is_nan()));
         let origin = v::<S>([0.0, f64::INFINITY, 0.0]);
-        let bad_origin =
-            Heightfield::build(origin, one, unit, 2, 2, &heights, |_, _| false, &mut cells);
+        let bad_origin = Heightfield::build(
+            HeightfieldShape {
+                origin,
+                spacing: one,
+                unit,
+                columns: 2,
+                rows: 2,
+            },
+            &heights,
+            |_, _| false,
+            &mut cells,
+        );
         let want = HeightfieldError::Origin {
             value: f64::INFINITY,
         };
@@ -319,11 +354,13 @@ fn errors_not_panics<S: Scalar>() {
     // Far from the origin, a float cannot tell cells of one step apart: a degenerate triangle,
     // named. Fixed point's absolute steps keep every cell whole.
     let far = Heightfield::build(
-        v::<S>([S::LIMIT.to_f64() / 2.0, 0.0, 0.0]),
-        S::EPSILON,
-        unit,
-        2,
-        2,
+        HeightfieldShape {
+            origin: v::<S>([S::LIMIT.to_f64() / 2.0, 0.0, 0.0]),
+            spacing: S::EPSILON,
+            unit,
+            columns: 2,
+            rows: 2,
+        },
         &heights,
         |_, _| false,
         &mut cells,
@@ -350,11 +387,13 @@ fn range_edges<S: Scalar>() {
     let mut cells = [0u8; 64];
     let origin = v::<S>([-reach, 0.0, -reach]);
     let hf = Heightfield::build(
-        origin,
-        spacing,
-        unit,
-        8,
-        8,
+        HeightfieldShape {
+            origin,
+            spacing,
+            unit,
+            columns: 8,
+            rows: 8,
+        },
         &heights,
         |_, _| false,
         &mut cells,
@@ -388,14 +427,8 @@ fn from_parts_as_built<S: Scalar>() {
     let t = terrain(&mut rng, 6, 5);
     let mut cells = vec![0u8; 30];
     let built = t.build::<S>(&mut cells).unwrap();
-    let (o, sp, unit) = built.frame();
-    let (c, r) = built.size();
     let baked = Heightfield::from_parts(
-        o,
-        sp,
-        unit,
-        c,
-        r,
+        built.shape(),
         built.heights(),
         built.cells(),
         built.bounds(),
@@ -448,8 +481,19 @@ fn sweep_along_x_at_a_row_boundary() {
             .collect();
         let mut cells = vec![0u8; (w * h) as usize];
         let origin = Vec3::new(o[0], o[1], o[2]);
-        let hf =
-            Heightfield::build(origin, sp, unit, w, h, &heights, |_, _| false, &mut cells).unwrap();
+        let hf = Heightfield::build(
+            HeightfieldShape {
+                origin,
+                spacing: sp,
+                unit,
+                columns: w,
+                rows: h,
+            },
+            &heights,
+            |_, _| false,
+            &mut cells,
+        )
+        .unwrap();
         let scan = Scan::new(&hf);
         let r = 0.05;
         let (x0, x1) = (o[0] - 0.5, o[0] + sp * w as f64 + 0.5);
@@ -485,11 +529,13 @@ fn i16f16_beyond_32767_columns() {
     let sixteenth = I16F16::from_bits(1 << 12);
     let origin = v::<I16F16>([-2048.0, 0.0, 0.0]);
     let built = Heightfield::build(
-        origin,
-        sixteenth,
-        sixteenth,
-        w,
-        h,
+        HeightfieldShape {
+            origin,
+            spacing: sixteenth,
+            unit: sixteenth,
+            columns: w,
+            rows: h,
+        },
         &heights,
         |_, _| false,
         &mut cells,
@@ -510,7 +556,18 @@ fn height_products_beyond_the_range_are_refused() {
     let mut cells = vec![0u8; 4];
     let (one, two) = (I16F16::from_num(1), I16F16::from_num(2));
     let origin = v::<I16F16>([0.0, -32_000.0, 0.0]);
-    let built = Heightfield::build(origin, one, two, 2, 2, &heights, |_, _| false, &mut cells);
+    let built = Heightfield::build(
+        HeightfieldShape {
+            origin,
+            spacing: one,
+            unit: two,
+            columns: 2,
+            rows: 2,
+        },
+        &heights,
+        |_, _| false,
+        &mut cells,
+    );
     assert_eq!(
         built.map(|_| ()),
         Err(HeightfieldError::OutOfRange {
@@ -524,11 +581,13 @@ fn height_products_beyond_the_range_are_refused() {
 #[test]
 fn from_parts_huge_sides_do_not_panic() {
     let hf = Heightfield::<f32>::from_parts(
-        Vec3::ZERO,
-        1.0,
-        1.0,
-        u32::MAX,
-        u32::MAX,
+        HeightfieldShape {
+            origin: Vec3::ZERO,
+            spacing: 1.0,
+            unit: 1.0,
+            columns: u32::MAX,
+            rows: u32::MAX,
+        },
         &[],
         &[],
         [0, 0],
@@ -566,8 +625,19 @@ fn edge_cases_match_the_scan<S: Scalar>() {
         let mut cells = vec![0u8; (w * h) as usize];
         let f = S::from_f64;
         let hole = |i: u32, k: u32| holes[(k * w + i) as usize];
-        let hf =
-            Heightfield::build(v(o), f(sp), f(unit), w, h, &heights, hole, &mut cells).unwrap();
+        let hf = Heightfield::build(
+            HeightfieldShape {
+                origin: v(o),
+                spacing: f(sp),
+                unit: f(unit),
+                columns: w,
+                rows: h,
+            },
+            &heights,
+            hole,
+            &mut cells,
+        )
+        .unwrap();
         let scan = Scan::new(&hf);
         for n in 0..300 {
             let gx = o[0] + sp * (rng.next() * (w + 1) as f64).floor();
@@ -600,11 +670,13 @@ fn zero_height_unit_is_refused<S: Scalar>() {
     let tiny = S::from_f64(S::EPSILON.to_f64() / 4.0);
     for unit in [S::ZERO, tiny] {
         let built = Heightfield::build(
-            Vec3::ZERO,
-            S::ONE,
-            unit,
-            1,
-            1,
+            HeightfieldShape {
+                origin: Vec3::ZERO,
+                spacing: S::ONE,
+                unit,
+                columns: 1,
+                rows: 1,
+            },
             &heights,
             |_, _| false,
             &mut cells,
@@ -649,11 +721,13 @@ fn far_from_the_origin_as_the_mesh() {
         let mut cells = [0u8; 2];
         let o = v::<S>(origin);
         let hf = Heightfield::build(
-            o,
-            S::from_f64(spacing),
-            S::from_f64(0.25),
-            2,
-            1,
+            HeightfieldShape {
+                origin: o,
+                spacing: S::from_f64(spacing),
+                unit: S::from_f64(0.25),
+                columns: 2,
+                rows: 1,
+            },
             &heights,
             |_, _| false,
             &mut cells,
@@ -692,11 +766,13 @@ fn tie_near_the_range_edge_as_the_slice() {
     let mut cells = [0u8; 2];
     let o = Vec3::new(-16_777_199.0f32, 16_777_198.0, 16_777_195.0);
     let hf = Heightfield::build(
-        o,
-        1.0,
-        1.0 / 65536.0,
-        1,
-        2,
+        HeightfieldShape {
+            origin: o,
+            spacing: 1.0,
+            unit: 1.0 / 65536.0,
+            columns: 1,
+            rows: 2,
+        },
         &heights,
         |_, _| false,
         &mut cells,

@@ -4,7 +4,9 @@
 
 mod common;
 
-use ballcast::{Heightfield, Scalar, Scene, Triangle, Vec3, move_and_slide, penetration};
+use ballcast::{
+    Heightfield, HeightfieldShape, Scalar, Scene, Triangle, Vec3, move_and_slide, penetration,
+};
 use common::{Tolerance, v};
 use fixed::types::{I16F16, I32F32};
 
@@ -124,11 +126,13 @@ fn a_sliding_door_pushes_a_ball_across_bumpy_ground<S: Tolerance>() {
     let mut cells = vec![0u8; (columns * rows) as usize];
     let (one, unit) = (S::ONE, S::from_f64(1.0 / 64.0));
     let ground = Heightfield::build(
-        v([-8.0, 0.0, -8.0]),
-        one,
-        unit,
-        columns,
-        rows,
+        HeightfieldShape {
+            origin: v([-8.0, 0.0, -8.0]),
+            spacing: one,
+            unit,
+            columns,
+            rows,
+        },
         &heights,
         |_, _| false,
         &mut cells,

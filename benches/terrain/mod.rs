@@ -221,8 +221,19 @@ impl<S: ballcast::Scalar> Level<S> {
         let origin = super::inputs::v::<S>([-half, 0.0, -half]);
         let unit = S::from_f64(1.0 / 1024.0);
         let n = w as u32;
-        ballcast::Heightfield::build(origin, S::ONE, unit, n, n, heights, |_, _| false, cells)
-            .unwrap()
+        ballcast::Heightfield::build(
+            ballcast::HeightfieldShape {
+                origin,
+                spacing: S::ONE,
+                unit,
+                columns: n,
+                rows: n,
+            },
+            heights,
+            |_, _| false,
+            cells,
+        )
+        .unwrap()
     }
 
     pub fn heightfield(&self) -> ballcast::Heightfield<'_, S> {
@@ -230,11 +241,13 @@ impl<S: ballcast::Scalar> Level<S> {
         let origin = super::inputs::v::<S>([-half, 0.0, -half]);
         let (unit, n) = (S::from_f64(1.0 / 1024.0), self.w as u32);
         ballcast::Heightfield::from_parts(
-            origin,
-            S::ONE,
-            unit,
-            n,
-            n,
+            ballcast::HeightfieldShape {
+                origin,
+                spacing: S::ONE,
+                unit,
+                columns: n,
+                rows: n,
+            },
             &self.heights,
             &self.cells,
             self.bounds,

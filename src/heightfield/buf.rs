@@ -1,7 +1,7 @@
 //! [`HeightfieldBuf`]: a [`Heightfield`] that owns its heights and cell bytes, for PCs (feature
 //! `alloc`).
 
-use super::{Heightfield, HeightfieldError};
+use super::{Heightfield, HeightfieldError, HeightfieldShape};
 use crate::cache::Slots;
 use crate::compound::CompoundPart;
 use crate::merge::Earliest;
@@ -17,21 +17,18 @@ use alloc::vec::Vec;
 /// can own it).
 ///
 /// ```
-/// use ballcast::{HeightfieldBuf, Sweep, Vec3};
+/// use ballcast::{HeightfieldBuf, HeightfieldShape, Sweep, Vec3};
 /// // 2 × 2 cells of side 1 around the origin, heights in steps of 0.25: a bump in the middle.
 /// let heights = vec![0i16, 0, 0, 0, 4, 0, 0, 0, 0];
-/// let ground = HeightfieldBuf::build(Vec3::new(-1.0f32, 0.0, -1.0), 1.0, 0.25, 2, 2, heights, |_, _| false)?;
+/// let shape = HeightfieldShape { origin: Vec3::new(-1.0f32, 0.0, -1.0), spacing: 1.0, unit: 0.25, columns: 2, rows: 2 };
+/// let ground = HeightfieldBuf::build(shape, heights, |_, _| false)?;
 /// let sweep = Sweep::new(Vec3::new(0.0, 3.0, 0.0), Vec3::new(0.0, -1.0, 0.0), 0.5)?;
 /// assert_eq!(ground.heightfield().cast(&sweep).unwrap().position.y, 1.5);
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
 #[derive(Clone, Debug, PartialEq)]
 pub struct HeightfieldBuf<S: Scalar> {
-    origin: Vec3<S>,
-    spacing: S,
-    unit: S,
-    columns: u32,
-    rows: u32,
+    shape: HeightfieldShape<S>,
     heights: Vec<i16>,
     cells: Vec<u8>,
     bounds: [i16; 2],
@@ -43,34 +40,23 @@ impl<S: Scalar> HeightfieldBuf<S> {
     /// the heights taken over), its cell bytes in a buffer it allocates.
     ///
     /// Errors: those of [`Heightfield::build`] (never [`HeightfieldError::Capacity`]).
-    #[allow(clippy::too_many_arguments)]
     pub fn build(
-        origin: Vec3<S>,
-        spacing: S,
-        unit: S,
-        columns: u32,
-        rows: u32,
+        shape: HeightfieldShape<S>,
         heights: Vec<i16>,
         hole: impl Fn(u32, u32) -> bool,
     ) -> Result<Self, HeightfieldError> {
         // The cells `build` needs; none where it refuses the sizes before it looks at them
         // (too many cells, or heights of another count), so nothing large is allocated then.
-        let (w, h) = (columns as usize, rows as usize);
+        let (w, h) = (shape.columns as usize, shape.rows as usize);
         let vertices = (w + 1).checked_mul(h + 1);
         let n = w
             .checked_mul(h)
             .filter(|&n| n <= super::MAX_TRIANGLES / 2 && vertices == Some(heights.len()));
         let mut cells = vec![0u8; n.unwrap_or(0)];
-        let built = Heightfield::build(
-            origin, spacing, unit, columns, rows, &heights, hole, &mut cells,
-        )?;
+        let built = Heightfield::build(shape, &heights, hole, &mut cells)?;
         let (bounds, class) = (built.bounds(), built.class());
         Ok(Self {
-            origin,
-            spacing,
-            unit,
-            columns,
-            rows,
+            shape,
             heights,
             cells,
             bounds,
@@ -81,11 +67,7 @@ impl<S: Scalar> HeightfieldBuf<S> {
     /// The heightfield, borrowing these heights and cell bytes.
     pub fn heightfield(&self) -> Heightfield<'_, S> {
         Heightfield::from_parts(
-            self.origin,
-            self.spacing,
-            self.unit,
-            self.columns,
-            self.rows,
+            self.shape,
             &self.heights,
             &self.cells,
             self.bounds,

@@ -1,9 +1,9 @@
 //! [`Heightfield::build`]: the grid validated, every triangle prepared and the cells' bytes
 //! (active edges and holes) written, in `O(N)` (see the [module docs](super)).
 
-use super::{HOLE, Heightfield, HeightfieldError, MAX_TRIANGLES};
+use super::{HOLE, Heightfield, HeightfieldError, HeightfieldShape, MAX_TRIANGLES};
 use crate::adjacency::hides;
-use crate::{Scalar, StandardTriangle, Vec3};
+use crate::{Scalar, StandardTriangle};
 
 impl<'a, S: Scalar> Heightfield<'a, S> {
     /// Validates the grid, prepares every triangle (refusing any that [`StandardTriangle::new`]
@@ -22,17 +22,19 @@ impl<'a, S: Scalar> Heightfield<'a, S> {
     /// positive and finite, a height step that is zero (as a fixed-point conversion makes of a
     /// step below half the scalar's resolution) or not finite, a grid beyond the scalar's
     /// range, a degenerate triangle.
-    #[allow(clippy::too_many_arguments)]
     pub fn build(
-        origin: Vec3<S>,
-        spacing: S,
-        unit: S,
-        columns: u32,
-        rows: u32,
+        shape: HeightfieldShape<S>,
         heights: &'a [i16],
         hole: impl Fn(u32, u32) -> bool,
         cells: &'a mut [u8],
     ) -> Result<Self, HeightfieldError> {
+        let HeightfieldShape {
+            origin,
+            spacing,
+            unit,
+            columns,
+            rows,
+        } = shape;
         let (w, h) = (columns as usize, rows as usize);
         let n = w.checked_mul(h).filter(|&n| n <= MAX_TRIANGLES / 2);
         let Some(n) = n else {
@@ -90,17 +92,7 @@ impl<'a, S: Scalar> Heightfield<'a, S> {
             let count = columns.max(rows);
             return Err(HeightfieldError::Sides { count });
         }
-        let mut field = Self::from_parts(
-            origin,
-            spacing,
-            unit,
-            columns,
-            rows,
-            heights,
-            &[],
-            [lo, hi],
-            0,
-        );
+        let mut field = Self::from_parts(shape, heights, &[], [lo, hi], 0);
         for (c, byte) in cells[..n].iter_mut().enumerate() {
             *byte = if hole(c as u32 % columns, c as u32 / columns) {
                 HOLE

@@ -250,7 +250,7 @@ mod tests {
     use super::{UnitGrid, cell_in_reach, height_span};
     use crate::merge::earliest;
     use crate::xorshift::Rng;
-    use crate::{Heightfield, Scalar, Sweep, Vec3};
+    use crate::{Heightfield, HeightfieldShape, Scalar, Sweep, Vec3};
     use fixed::types::{I16F16, I32F32};
 
     /// The integer query answers as the `f64` walk, bit for bit: short moves over and into a
@@ -267,8 +267,19 @@ mod tests {
         let origin = Vec3::new(S::from_f64(-3.0), S::from_f64(0.5), S::from_f64(-2.0));
         let (spacing, unit) = (S::from_f64(1.0), S::from_f64(1.0 / 1024.0));
         let hole = |i: u32, k: u32| (i + 2 * k) % 7 == 3;
-        let field =
-            Heightfield::build(origin, spacing, unit, w, h, &heights, hole, &mut cells).unwrap();
+        let field = Heightfield::build(
+            HeightfieldShape {
+                origin,
+                spacing,
+                unit,
+                columns: w,
+                rows: h,
+            },
+            &heights,
+            hole,
+            &mut cells,
+        )
+        .unwrap();
         let top = 0.5 + *heights.iter().max().unwrap() as f64 / 1024.0;
         let step = S::EPSILON.to_f64();
         let point =
@@ -397,9 +408,18 @@ mod tests {
             let mut cells = vec![0u8; (w * h) as usize];
             let u = I16F16::from_bits(unit as i32);
             let o = Vec3::new(I16F16::ZERO, I16F16::from_bits(origin as i32), I16F16::ZERO);
-            let Ok(field) =
-                Heightfield::build(o, I16F16::ONE, u, w, h, &heights, |_, _| false, &mut cells)
-            else {
+            let Ok(field) = Heightfield::build(
+                HeightfieldShape {
+                    origin: o,
+                    spacing: I16F16::ONE,
+                    unit: u,
+                    columns: w,
+                    rows: h,
+                },
+                &heights,
+                |_, _| false,
+                &mut cells,
+            ) else {
                 continue;
             };
             for _ in 0..40 {

@@ -13,7 +13,7 @@
 use ballcast::penetration::{Penetration, penetration};
 use ballcast::winding::{Winding, winding};
 use ballcast::{
-    Cached, CompactMesh, Compound, Error, Geometry, Grid, Heightfield, Hit, Mesh, SceneHit,
+    Cached, CompactMesh, Compound, Error, Geometry, Grid, Heightfield, HeightfieldShape, Hit, Mesh, SceneHit,
     StandardTriangle, Sweep, Triangle, Vec3,
     slide::{Character, Slide},
 };
@@ -166,7 +166,7 @@ macro_rules! wrappers {
                     0,
                 ));
                 let z = black_box(<$t>::default());
-                let h = black_box(Heightfield::from_parts(v, z, z, 1, 1, &[], &[], [0, 0], 0));
+                let h = black_box(Heightfield::from_parts(HeightfieldShape { origin: v, spacing: z, unit: z, columns: 1, rows: 1 }, &[], &[], [0, 0], 0));
                 black_box($geometry(black_box(&many[..]), &m, &c, &h, &s));
                 black_box($around(black_box(&many[..]), &m, &c, &h, v, tri.v0.x));
                 if let Ok(mut me) = Character::new(v, tri.v0.x) {
