@@ -8,9 +8,11 @@
 //!
 //! The test runs in the edge's triangle's standard frame: a neighbour's edge counts when both
 //! its ends lie on the edge's line (within the rounding of a height there) and it runs the other
-//! way, its triangle lying on the edge's other side (its third vertex beyond the line); the
-//! edge is covered when those intervals, joined, span it from end to end (one at least, however
-//! short the edge).
+//! way, its triangle lying on the edge's other side (its third vertex beyond the line by more
+//! than a coordinate's rounding); the edge is covered when those intervals, joined, span it
+//! from end to end (one at least, however short the edge). Lines closer together than twice
+//! the tolerance cannot be told apart: a [`Heightfield`](crate::Heightfield) refuses cells that
+//! small ([`least_cell`]), so the mesh of its triangles keeps the edges it keeps.
 
 use crate::merge::same_plane;
 use crate::{Scalar, StandardTriangle, Triangle, Vec3};
@@ -185,8 +187,12 @@ pub(crate) fn interval<S: Scalar>(
     let on_line = |p: Vec3<S>| p.y.abs() <= tol && out(p).abs() <= tol;
     let along = |p: Vec3<S>| S::dot_unit(p - corner, edge.along());
     let (ua, ub) = (along(a), along(b));
-    // A neighbour on the edge's own side (a strip of slivers along it) hides nothing.
-    (on_line(a) && on_line(b) && ub < ua && out(apex) > S::ZERO).then_some((ub, ua))
+    // A neighbour on the edge's own side (a strip of slivers along it) hides nothing; nor does
+    // one whose apex lies on the line, as rounded (the other half of a grid's border cell,
+    // where the cells are few steps of the scalar across): it must lie beyond by more than
+    // a coordinate's rounding there. A sliver thinner than the tolerance still covers.
+    let beyond = S::div_pow2(S::height_error(extent(t, i)), 2);
+    (on_line(a) && on_line(b) && ub < ua && out(apex) > beyond).then_some((ub, ua))
 }
 
 /// Whether `o` is `t` or an identical copy, whatever edges either has switched off so far: a
@@ -197,12 +203,26 @@ fn same_triangle<S: Scalar>(o: &StandardTriangle<S>, t: &StandardTriangle<S>) ->
     all(o) == all(t)
 }
 
-/// Four times the rounding of a height at the edge's coordinates: how far off the line a
-/// neighbour's vertex may lie and still count as on it.
+/// The rounding of a height at the edge's coordinates (four steps of the scalar at the larger
+/// of its triangle's origin and its length for floats, eight steps for fixed point): how far
+/// off the line a neighbour's vertex may lie and still count as on it. A vertex placed on the
+/// line strays from it by the rounding of its coordinates (about a step) and of the frame's
+/// (a few steps at the edge's length); a wider tolerance would reach across the cells of a
+/// grid only a few dozen steps across, and let a neighbour beyond a hole cover its edge.
 fn tolerance<S: Scalar>(t: &StandardTriangle<S>, i: usize) -> S {
-    let o = t.origin();
-    let extent = o.abs().max_element();
-    let len = t.edge(i).len;
-    let e = S::height_error(if extent > len { extent } else { len });
-    e + e + e + e
+    S::height_error(extent(t, i))
+}
+
+/// The side a grid's cells must exceed at coordinates (and edge lengths) up to `extent` for
+/// the test to tell their lines apart: twice the tolerance there. Closer lines, a cell's
+/// neighbour across a hole, say, or the two ends of a cell's diagonal, would count as one.
+pub(crate) fn least_cell<S: Scalar>(extent: S) -> S {
+    let e = S::height_error(extent);
+    e + e
+}
+
+/// The larger of the magnitude of the triangle's origin and edge `i`'s length.
+fn extent<S: Scalar>(t: &StandardTriangle<S>, i: usize) -> S {
+    let (o, len) = (t.origin().abs().max_element(), t.edge(i).len);
+    if o > len { o } else { len }
 }

@@ -163,6 +163,15 @@ pub enum HeightfieldError {
         /// The larger of the two.
         count: u32,
     },
+    /// The cells are too small for the scalar at the grid's coordinates: their sides lie
+    /// within a few steps of the scalar's rounding there, closer than the test for edges
+    /// inside a mesh's surface can tell apart (nearer the origin, or a wider scalar, fits).
+    Fine {
+        /// The cell side given.
+        spacing: f64,
+        /// The side cells need there (they must be larger).
+        least: f64,
+    },
     /// A triangle was refused by [`StandardTriangle::new`] (out of the scalar's range, or
     /// degenerate at its precision).
     Triangle {
@@ -211,6 +220,12 @@ impl fmt::Display for HeightfieldError {
             Self::Sides { count } => write!(
                 f,
                 "heightfield of {count} cells along a side: more than the scalar counts exactly"
+            ),
+            Self::Fine { spacing, least } => write!(
+                f,
+                "heightfield cells of side {spacing} are within the scalar's rounding at the \
+                 grid's coordinates: they need a side above {least} there (move the grid \
+                 nearer the origin, or use a wider scalar)"
             ),
             Self::Triangle { error, .. } => write!(f, "heightfield {error}"),
         }

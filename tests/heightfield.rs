@@ -351,30 +351,25 @@ fn errors_not_panics<S: Scalar>() {
         };
         assert_eq!(bad_origin.map(|_| ()), Err(want));
     }
-    // Far from the origin, a float cannot tell cells of one step apart: a degenerate triangle,
-    // named. Fixed point's absolute steps keep every cell whole.
-    let far = Heightfield::build(
-        HeightfieldShape {
+    // Cells one step of the scalar wide, far from the origin: closer than a mesh's T-junction
+    // test can tell apart there (a float would not even keep them whole), refused as such.
+    // Twice the least side the error names builds.
+    let far = |spacing: S, cells: &mut [u8]| {
+        let shape = HeightfieldShape {
             origin: v::<S>([S::LIMIT.to_f64() / 2.0, 0.0, 0.0]),
-            spacing: S::EPSILON,
+            spacing,
             unit,
             columns: 2,
             rows: 2,
-        },
-        &heights,
-        |_, _| false,
-        &mut cells,
-    );
-    if S::PRECISION.relative {
-        let degenerate = ballcast::Error::Degenerate { triangle: Some(0) };
-        let want = HeightfieldError::Triangle {
-            index: 0,
-            error: degenerate,
         };
-        assert_eq!(far.map(|_| ()), Err(want));
-    } else {
-        assert!(far.is_ok(), "{far:?}");
-    }
+        Heightfield::build(shape, &heights, |_, _| false, cells).map(|_| ())
+    };
+    let Err(HeightfieldError::Fine { spacing, least }) = far(S::EPSILON, &mut cells) else {
+        panic!("one step: {:?}", far(S::EPSILON, &mut cells));
+    };
+    assert_eq!(spacing, S::EPSILON.to_f64());
+    assert!(least > spacing, "{least}");
+    assert_eq!(far(S::from_f64(2.0 * least), &mut cells), Ok(()), "{least}");
 }
 
 /// A terrain across the scalar's whole safe range: built and queried, edge to edge.
@@ -710,10 +705,10 @@ meshes::per_scalar!(
 );
 
 /// Cells only a few dozen steps of the scalar wide at their coordinates (`f32` 0.5-unit cells at
-/// 400 000; `f64` 1-unit cells at `2^53 - 20`): the T-junction test cannot tell the border
-/// edges' lines from their neighbours' there, so the mesh keeps them, as the heightfield does.
-/// They once went off in the mesh (and a `Scene`), which let a ball pass through the border
-/// vertex the heightfield stops it at.
+/// 400 000; `f64` 32-unit cells at `2^53 - 20`): the mesh keeps the border edges on, as the
+/// heightfield does. They once went off in the mesh (and a `Scene`), whose T-junction test
+/// could not tell the border edges' lines from their neighbours' there, which let a ball pass
+/// through the border vertex the heightfield stops it at.
 #[test]
 fn far_from_the_origin_as_the_mesh() {
     fn case<S: Scalar>(origin: [f64; 3], spacing: f64, sweep: (P, P)) {
@@ -752,23 +747,24 @@ fn far_from_the_origin_as_the_mesh() {
         -9_007_199_254_740_974.0,
         9_007_199_254_740_975.0,
     );
-    case::<f64>([x, y, z - 1.0], 1.0, ([x - 1.0, y, z], [x + 2.0, y, z]));
+    case::<f64>([x, y, z - 32.0], 32.0, ([x - 1.0, y, z], [x + 2.0, y, z]));
 }
 
-/// `f32` cells one step of the scalar wide at `2^24 - 20`, their heights rounded by half a
-/// unit: a ball moving along a grid line 1 010 units touches the vertex two triangles share at
-/// the same alpha, and the heightfield reports the smaller index, as the slice of its prepared
+/// `f32` cells 32 steps of the scalar wide near `2^24`, their heights rounded by half a unit: a
+/// ball moving along a grid line 1 010 units touches the vertex two triangles share at the
+/// same alpha, and the heightfield reports the smaller index, as the slice of its prepared
 /// triangles does. Its plane cull once took the heights unrounded, tilting a plane by half a
-/// unit per unit over the long path, and never offered the smaller.
+/// unit per unit over the long path, and never offered the smaller (seen with cells of one
+/// step, which are now refused).
 #[test]
 fn tie_near_the_range_edge_as_the_slice() {
     let heights: [i16; 6] = [0, 32767, 0, 1, 32767, 1];
     let mut cells = [0u8; 2];
-    let o = Vec3::new(-16_777_199.0f32, 16_777_198.0, 16_777_195.0);
+    let o = Vec3::new(-16_777_199.0f32, 16_777_198.0, 16_777_132.0);
     let hf = Heightfield::build(
         HeightfieldShape {
             origin: o,
-            spacing: 1.0,
+            spacing: 32.0,
             unit: 1.0 / 65536.0,
             columns: 1,
             rows: 2,
@@ -779,7 +775,7 @@ fn tie_near_the_range_edge_as_the_slice() {
     )
     .unwrap();
     let slice: Vec<_> = (0..hf.len()).map(|t| hf.prepared(t).unwrap()).collect();
-    let (y, z) = (16_777_198.0, 16_777_196.0);
+    let (y, z) = (16_777_198.0, 16_777_164.0);
     let sweep = Sweep::new(
         Vec3::new(-16_776_189.0, y, z),
         Vec3::new(-16_777_199.0, y, z),

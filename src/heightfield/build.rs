@@ -92,6 +92,15 @@ impl<'a, S: Scalar> Heightfield<'a, S> {
             let count = columns.max(rows);
             return Err(HeightfieldError::Sides { count });
         }
+        // Cells the mesh's T-junction test cannot tell apart at these coordinates would let a
+        // mesh of the same triangles switch off edges the grid keeps: refused, not answered
+        // differently. (Within the range, and twice the spacing is at most twice that.)
+        let extent = S::from_f64(far.max(2.0 * spacing.to_f64()).min(limit));
+        let least = crate::cover::least_cell(extent);
+        if spacing <= least {
+            let (spacing, least) = (spacing.to_f64(), least.to_f64());
+            return Err(HeightfieldError::Fine { spacing, least });
+        }
         let mut field = Self::from_parts(shape, heights, &[], [lo, hi], 0);
         for (c, byte) in cells[..n].iter_mut().enumerate() {
             *byte = if hole(c as u32 % columns, c as u32 / columns) {
