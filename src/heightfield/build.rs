@@ -94,8 +94,10 @@ impl<'a, S: Scalar> Heightfield<'a, S> {
         }
         // Cells the mesh's T-junction test cannot tell apart at these coordinates would let a
         // mesh of the same triangles switch off edges the grid keeps: refused, not answered
-        // differently. (Within the range, and twice the spacing is at most twice that.)
-        let extent = S::from_f64(far.max(2.0 * spacing.to_f64()).min(limit));
+        // differently. The test's tolerance grows with a triangle's origin (within `far`) and
+        // its edges' lengths (a diagonal's, plus at most the heights' whole rise).
+        let rise = (hi as f64 - lo as f64) * u.abs();
+        let extent = S::from_f64(far.max(2.0 * sp + rise).min(4.0 * limit));
         let least = crate::cover::least_cell(extent);
         if spacing <= least {
             let (spacing, least) = (spacing.to_f64(), least.to_f64());
