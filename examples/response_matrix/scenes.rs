@@ -187,6 +187,7 @@ pub fn cases() -> Vec<Case> {
         (50.0, 5.0, 0.4),
         (50.0, -5.0, 0.4),
         (60.0, 0.0, 0.4),
+        (70.0, 20.0, 0.3),
     ] {
         let mut t = Vec::new();
         ground(&mut t, &|x, z| tan(slope) * z.abs() + tan(rise) * x, 1.0);
@@ -272,5 +273,28 @@ pub fn cases() -> Vec<Case> {
             heading: down,
         });
     }
+    // The ditches again 1 400 units out and turned 23° about y: there `f32` rounds a
+    // coordinate to 6e-5, a step of a 960 Hz walk is a skin or two, and no line of the scene
+    // runs along an axis.
+    let far: Vec<Case> = out
+        .iter()
+        .filter(|c| c.name.starts_with("ditch"))
+        .map(|c| placed(c, 23.0, [1000.3, 7.1, -1000.7]))
+        .collect();
+    out.extend(far);
     out
+}
+
+/// `case` turned by `degrees` about y, then moved by `offset`.
+fn placed(case: &Case, degrees: f64, offset: P) -> Case {
+    let (s, c) = degrees.to_radians().sin_cos();
+    let turn = |p: P| [c * p[0] - s * p[2], p[1], s * p[0] + c * p[2]];
+    let at = |p: P| add(turn(p), offset);
+    Case {
+        name: format!("{}, far and turned", case.name),
+        tris: case.tris.iter().map(|t| t.map(at)).collect(),
+        start: at(case.start),
+        wish: turn(case.wish),
+        heading: turn(case.heading),
+    }
 }
