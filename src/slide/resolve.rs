@@ -2,7 +2,7 @@
 
 use super::MAX_SLIDES;
 use super::push::{around, push_out};
-use super::rules::stand_off;
+use super::rules::{magnitude, stand_off};
 use crate::penetration::deepest;
 use crate::{Geometry, Scalar, SceneHit, Sweep, Vec3};
 
@@ -124,7 +124,8 @@ pub(super) fn settle<S: Scalar, G: Geometry<S> + ?Sized>(
 /// like a motion: in a corner narrower than 90° it points partly into the other wall. Stopped
 /// by another plane, it stands a skin short of it along the lift, or, where that is less than
 /// half the way (a slot or corner too narrow for a skin on both sides), half way; met by one
-/// at once (a ball resting in the corner), the lift slides along it, once.
+/// at once (a ball resting in the corner), or within a position's rounding where the lift can
+/// slide along it, the lift slides along it, once.
 fn lift_from<S: Scalar, G: Geometry<S> + ?Sized>(
     scene: &G,
     at: Vec3<S>,
@@ -142,7 +143,15 @@ fn lift_from<S: Scalar, G: Geometry<S> + ?Sized>(
         let Some(next) = scene.cast(&sweep) else {
             return at + lift;
         };
-        if next.alpha > S::ZERO {
+        let into = S::dot(lift, next.normal);
+        let slid = lift - next.normal.scale(into);
+        // Met within a position's rounding by a plane the lift can slide along (keeping over
+        // half of it: not a slot's other wall, square to it), it is met at once: half that
+        // travel left the ball touching (`f32` a thousand units out, lifted off one side of a
+        // narrow valley into the other), and the same side met it at once on every sweep.
+        let length = magnitude(lift);
+        let soon = length.mul(next.alpha) <= rounding && magnitude(slid) > S::div_pow2(length, 1);
+        if next.alpha > S::ZERO && !soon {
             let half = at + (next.position - at).map(|c| S::div_pow2(c, 1));
             return match stand_off(&next, lift, skin, rounding) {
                 (a, _) if a < next.alpha && a > S::div_pow2(next.alpha, 1) => {
@@ -151,11 +160,10 @@ fn lift_from<S: Scalar, G: Geometry<S> + ?Sized>(
                 _ => half,
             };
         }
-        let into = S::dot(lift, next.normal);
         if into >= S::ZERO {
             return at;
         }
-        lift -= next.normal.scale(into);
+        lift = slid;
     }
     at
 }
