@@ -149,48 +149,19 @@ fn heightfield_buf_answers_as_the_borrowed_build<S: Tolerance>() {
         .map(|_| rng.range(-40.0, 40.0) as i16)
         .collect();
     let hole = |i: u32, k: u32| (i + 2 * k).is_multiple_of(7);
-    let (o, sp, unit) = (v::<S>([-6.0, 0.5, -4.5]), S::ONE, S::from_f64(1.0 / 64.0));
+    let shape = HeightfieldShape {
+        origin: v::<S>([-6.0, 0.5, -4.5]),
+        spacing: S::ONE,
+        unit: S::from_f64(1.0 / 64.0),
+        columns: w,
+        rows: h,
+    };
     let mut cells = vec![0u8; (w * h) as usize];
-    let borrowed = Heightfield::build(
-        HeightfieldShape {
-            origin: o,
-            spacing: sp,
-            unit,
-            columns: w,
-            rows: h,
-        },
-        &heights,
-        hole,
-        &mut cells,
-    )
-    .unwrap();
-    let owned = HeightfieldBuf::build(
-        HeightfieldShape {
-            origin: o,
-            spacing: sp,
-            unit,
-            columns: w,
-            rows: h,
-        },
-        heights.clone(),
-        hole,
-    )
-    .unwrap();
+    let borrowed = Heightfield::build(shape, &heights, hole, &mut cells).unwrap();
+    let owned = HeightfieldBuf::build(shape, heights.clone(), hole).unwrap();
     assert_eq!(owned.heightfield(), borrowed, "{}", S::NAME);
-    let kept: Cached<_, S, 16> = Cached::new(
-        HeightfieldBuf::build(
-            HeightfieldShape {
-                origin: o,
-                spacing: sp,
-                unit,
-                columns: w,
-                rows: h,
-            },
-            heights.clone(),
-            hole,
-        )
-        .unwrap(),
-    );
+    let kept: Cached<_, S, 16> =
+        Cached::new(HeightfieldBuf::build(shape, heights.clone(), hole).unwrap());
     let wall = MeshBuf::build(
         &[tri::<S>([
             [0.0, -2.0, -5.0],
@@ -225,17 +196,7 @@ fn heightfield_buf_answers_as_the_borrowed_build<S: Tolerance>() {
     assert!(hits > 50, "{hits}");
     assert!(kept.cache().misses() > 0);
     assert_eq!(kept.into_geometry().heightfield(), borrowed);
-    let short = HeightfieldBuf::build(
-        HeightfieldShape {
-            origin: o,
-            spacing: sp,
-            unit,
-            columns: w,
-            rows: h,
-        },
-        heights[1..].to_vec(),
-        hole,
-    );
+    let short = HeightfieldBuf::build(shape, heights[1..].to_vec(), hole);
     let needed = ((w + 1) * (h + 1)) as usize;
     let want = HeightfieldError::Size {
         needed,
@@ -244,11 +205,9 @@ fn heightfield_buf_answers_as_the_borrowed_build<S: Tolerance>() {
     assert_eq!(short.map(|_| ()), Err(want));
     let huge = HeightfieldBuf::build(
         HeightfieldShape {
-            origin: o,
-            spacing: sp,
-            unit,
             columns: u32::MAX,
             rows: u32::MAX,
+            ..shape
         },
         vec![],
         hole,

@@ -98,8 +98,20 @@ pub fn queries(w: usize) -> (Vec<Path>, Vec<Path>) {
     (short, long)
 }
 
-/// The terrain as one level in every form's inputs: `w × w` cells of side 1 centred on the
-/// origin, heights in steps of 1/1024 (so every form holds exactly the same triangles).
+/// The terrain's grid: `w × w` cells of side 1 centred on the origin, heights in steps of
+/// 1/1024 (so every form holds exactly the same triangles).
+fn shape<S: ballcast::Scalar>(w: usize) -> ballcast::HeightfieldShape<S> {
+    let half = w as f64 / 2.0;
+    ballcast::HeightfieldShape {
+        origin: super::inputs::v::<S>([-half, 0.0, -half]),
+        spacing: S::ONE,
+        unit: S::from_f64(1.0 / 1024.0),
+        columns: w as u32,
+        rows: w as u32,
+    }
+}
+
+/// The terrain as one level in every form's inputs (see [`shape`]).
 pub struct Level<S: ballcast::Scalar> {
     pub w: usize,
     pub heights: Vec<i16>,
@@ -217,37 +229,12 @@ impl<S: ballcast::Scalar> Level<S> {
         heights: &'a [i16],
         cells: &'a mut [u8],
     ) -> ballcast::Heightfield<'a, S> {
-        let half = w as f64 / 2.0;
-        let origin = super::inputs::v::<S>([-half, 0.0, -half]);
-        let unit = S::from_f64(1.0 / 1024.0);
-        let n = w as u32;
-        ballcast::Heightfield::build(
-            ballcast::HeightfieldShape {
-                origin,
-                spacing: S::ONE,
-                unit,
-                columns: n,
-                rows: n,
-            },
-            heights,
-            |_, _| false,
-            cells,
-        )
-        .unwrap()
+        ballcast::Heightfield::build(shape(w), heights, |_, _| false, cells).unwrap()
     }
 
     pub fn heightfield(&self) -> ballcast::Heightfield<'_, S> {
-        let half = self.w as f64 / 2.0;
-        let origin = super::inputs::v::<S>([-half, 0.0, -half]);
-        let (unit, n) = (S::from_f64(1.0 / 1024.0), self.w as u32);
         ballcast::Heightfield::from_parts(
-            ballcast::HeightfieldShape {
-                origin,
-                spacing: S::ONE,
-                unit,
-                columns: n,
-                rows: n,
-            },
+            shape(self.w),
             &self.heights,
             &self.cells,
             self.bounds,
