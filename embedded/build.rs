@@ -66,7 +66,7 @@ fn compact() -> String {
     let c = CompactMesh::compact(&mesh, &vertices, &indices, &mut t, &mut o, &mut b).unwrap();
     let (nodes, grid, vertices, triangles, order, bytes, class) = c.parts();
     let mut s = String::from(
-        "use ballcast::{CompactMesh, Grid, Node, Vec3};\nuse fixed::types::I16F16;\n\n",
+        "use ballcast::fixed::types::I16F16;\nuse ballcast::{CompactMesh, Grid, Node, Vec3};\n\n",
     );
     s += "const fn v(x: i32, y: i32, z: i32) -> Vec3<I16F16> {\n    Vec3::new(I16F16::from_bits(x), I16F16::from_bits(y), I16F16::from_bits(z))\n}\n\n";
     let _ = writeln!(
@@ -119,7 +119,7 @@ fn terrain() -> String {
     )
     .unwrap();
     let mut s = String::from(
-        "use ballcast::{Heightfield, HeightfieldShape, Vec3};\nuse fixed::types::I16F16;\n\n",
+        "use ballcast::fixed::types::I16F16;\nuse ballcast::{Heightfield, HeightfieldShape, Vec3};\n\n",
     );
     let _ = writeln!(
         s,

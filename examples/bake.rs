@@ -14,7 +14,8 @@
 //! Writes the source to stdout (`include!` it in a module; `MESH` is the mesh) and one line of
 //! statistics to stderr: triangles, degenerate ones skipped (by index), nodes, bytes in flash
 //! for every scalar, and the precision planner's verdict at the level's extent for a ball of
-//! radius R (default 0.5). A bad file or a level outside the scalar's range gets a message
+//! radius R (default 0.5); before it, a warning where more one-sided triangles face down than
+//! up (a level exported with the other winding). A bad file or a level outside the scalar's range gets a message
 //! naming the file and the problem, a non-zero exit status and no output on stdout.
 
 use ballcast::bvh::LeafSize;
@@ -118,6 +119,15 @@ fn run(
         })
         .collect();
     print!("{}", baked.source);
+    let (up, down) = level.facing();
+    if down > up {
+        eprintln!(
+            "{}: warning: {down} one-sided triangles face down and {up} up; floors face up, so \
+             this level was likely exported with the other winding (a ball falls through a \
+             floor it meets from behind): flip the faces, or bake with --two-sided",
+            level.path.display()
+        );
+    }
     eprintln!(
         "{}: {}; bytes in flash: {}; as a compact mesh ({} vertices): {}; {}",
         level.path.display(),

@@ -1,46 +1,70 @@
 //! The precision planner's error model holds case by case: every contact's distance error along
 //! the normal stays within `Precision::distance_error` for that case's extent and path length,
-//! at scene scales 1 to 1000, in every scalar.
+//! at scene scales 1 to 1000, in every scalar: random sweeps, sweeps through the triangle's plane
+//! and sweeps aimed at its edges and vertices.
 
 mod common;
 
 use common::{Rng, Tolerance};
 use fixed::types::{I16F16, I32F32};
 
+/// The case's distance error along the normal as a share of the prediction for its extent and
+/// path length; fails past the prediction.
+fn share<S: Tolerance>(c: &common::Case) -> f64 {
+    let c = c.rounded::<S>();
+    let extent = c
+        .tri
+        .iter()
+        .chain([&c.p0, &c.p1])
+        .flatten()
+        .fold(0.0f64, |m, x| m.max(x.abs()));
+    let path = common::norm(common::sub(c.p1, c.p0));
+    let p = S::PRECISION;
+    assert!(p.fits(extent, c.r), "{}: {c:?} should fit", S::NAME);
+    let (Ok(Some((a, _))), Ok(Some((b, m)))) = (c.cast::<S>(c.r), c.cast::<f64>(c.r)) else {
+        return 0.0;
+    };
+    let err = (a - b).abs() * common::dot(common::sub(c.p1, c.p0), m).abs();
+    let predicted = p.distance_error(extent, path);
+    assert!(
+        err <= predicted,
+        "{}: error {err:e} > predicted {predicted:e} on {c:?}",
+        S::NAME
+    );
+    err / predicted
+}
+
 fn model_holds<S: Tolerance>() {
     let mut rng = Rng(0x91A7);
-    let mut worst = 0.0f64; // largest error as a share of the prediction
+    let mut worst = 0.0f64;
     for scale in [1.0, 10.0, 100.0, 1000.0] {
-        for i in 0..10_000 {
-            let c = if i % 2 == 0 {
-                rng.case(scale)
-            } else {
-                rng.falling_case(scale)
+        for i in 0..40_000 {
+            let c = match i % 4 {
+                0 => rng.case(scale),
+                1 => rng.falling_case(scale),
+                _ => {
+                    let size = rng.range(0.05 * scale, scale);
+                    rng.feature_case(scale, size, 2.0 * scale)
+                }
             };
-            let c = c.rounded::<S>();
-            let extent = c
-                .tri
-                .iter()
-                .chain([&c.p0, &c.p1])
-                .flatten()
-                .fold(0.0f64, |m, x| m.max(x.abs()));
-            let path = common::norm(common::sub(c.p1, c.p0));
-            let p = S::PRECISION;
-            assert!(p.fits(extent, c.r), "{}: scale {scale} should fit", S::NAME);
-            let (Ok(Some((a, _))), Ok(Some((b, m)))) = (c.cast::<S>(c.r), c.cast::<f64>(c.r))
-            else {
-                continue;
-            };
-            let err = (a - b).abs() * common::dot(common::sub(c.p1, c.p0), m).abs();
-            let predicted = p.distance_error(extent, path);
-            assert!(
-                err <= predicted,
-                "{}: error {err:e} > predicted {predicted:e} on {c:?}",
-                S::NAME
-            );
-            worst = worst.max(err / predicted);
+            worst = worst.max(share::<S>(&c));
         }
     }
+    println!(
+        "{}: largest error was {:.0}% of the prediction",
+        S::NAME,
+        100.0 * worst
+    );
+}
+
+/// Paths up to 1 000 long aimed at the edges and vertices of triangles 1.5 across within ±1 000:
+/// two vertices a path meets within a few steps of alpha of each other (in `I16F16`, the later
+/// one was once reported, 0.06 inside the ball).
+fn long_paths_past_small_triangles<S: Tolerance>() {
+    let mut rng = Rng(0x5EED);
+    let worst = (0..100_000)
+        .map(|_| share::<S>(&rng.feature_case(1000.0, 1.5, 1000.0)))
+        .fold(0.0f64, f64::max);
     println!(
         "{}: largest error was {:.0}% of the prediction",
         S::NAME,
@@ -61,6 +85,40 @@ fn planner_error_model_holds_for_i32f32() {
 #[test]
 fn planner_error_model_holds_for_i16f16() {
     model_holds::<I16F16>();
+}
+
+#[test]
+fn long_paths_past_small_triangles_f32() {
+    long_paths_past_small_triangles::<f32>();
+}
+
+#[test]
+fn long_paths_past_small_triangles_i32f32() {
+    long_paths_past_small_triangles::<I32F32>();
+}
+
+#[test]
+fn long_paths_past_small_triangles_i16f16() {
+    long_paths_past_small_triangles::<I16F16>();
+}
+
+/// A review's case: an `f32` edge contact of a sweep from a corner of the extent, 33.5 long,
+/// whose offset from the edge's corner is three times the extent: its error (6 steps of the
+/// spacing at the extent beyond alpha's rounding) once exceeded the four steps the model gave
+/// floats.
+#[test]
+fn an_edge_contact_from_a_corner_of_the_extent_f32() {
+    let c = common::Case {
+        tri: [
+            [7.686553955078125, -5.366150379180908, -3.4976301193237305],
+            [6.272609233856201, -3.65510630607605, -7.314385890960693],
+            [6.951900482177734, -8.159939765930176, -0.7202837467193604],
+        ],
+        p0: [-10.0, 10.0, 10.0],
+        p1: [10.0, -8.000432, -10.0],
+        r: 1.9738997,
+    };
+    assert!(share::<f32>(&c) > 0.5, "the case still measures its edge");
 }
 
 #[test]

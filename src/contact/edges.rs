@@ -41,7 +41,9 @@ impl<S: Scalar> StandardTriangle<S> {
         // The path's length and direction, computed once and only if a vertex needs them.
         let mut motion = None;
         // Where an edge's contact lies next to its vertex, the two arrive together; the edge's
-        // normal is the right one, so a vertex must be earlier by more than rounding.
+        // normal is the right one, so a vertex must be earlier than an edge through it by more
+        // than rounding. Against any other contact (another vertex, the opposite edge) the
+        // exact order decides: there a margin would keep a contact later than the vertex's.
         let tie = tie::<S>();
         for i in 0..3 {
             if !self.features.vertex(i)
@@ -59,9 +61,13 @@ impl<S: Scalar> StandardTriangle<S> {
                     resting(q, r).then_some((at, (S::ZERO, S::ONE)))
                 }
             };
-            if v.is_some_and(|v| after(&v) && best.is_none_or(|b| v.0.0 < b.0.0 - tie)) {
-                best = v;
-            }
+            let v = v.filter(after);
+            best = match (best, v) {
+                (Some(b), Some(v)) if through(b.0.2, i) => {
+                    Some(if v.0.0 < b.0.0 - tie { v } else { b })
+                }
+                (b, v) => earlier(b, v),
+            };
         }
         best.map(|((alpha, offset, contact), key)| (alpha, offset, contact, key))
     }
@@ -187,6 +193,12 @@ pub(crate) fn off_line<S: Scalar>(q0: Vec3<S>, dir: Vec3<S::Unit>) -> Vec3<S> {
 #[inline(never)]
 fn resting<S: Scalar>(q: Vec3<S>, r: S) -> bool {
     q.y >= S::ZERO && S::chord(r, q).is_some_and(|k| k > S::ZERO)
+}
+
+/// Whether `contact` is with an edge through vertex `i` (edge `e` runs from vertex `e` to the
+/// next).
+fn through(contact: Contact, i: usize) -> bool {
+    matches!(contact, Contact::Edge(e) if e as usize == i || (e as usize + 1) % 3 == i)
 }
 
 /// The earlier of two contacts, by their exact fractions `t / len` (the first on a tie).

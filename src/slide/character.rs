@@ -8,7 +8,10 @@ use crate::{Error, Geometry, Input, Scalar, Vec3, check};
 ///
 /// On the floor, it presses into the floor along the floor's normal by `|gravity| dt²` (so it
 /// does not slide down a walkable slope; not when it stands, its walk rounding to nothing:
-/// the press could then only move it about its gap, and in fixed point down the slope), then
+/// the press could then only move it about its gap, and in fixed point down the slope; nor
+/// where the press is no longer than the rounding of a height at its position, `I16F16` from
+/// about 290 Hz, where rounded it would not point along the normal: there it looks for the
+/// floor within the press and a skin without moving), then
 /// walks by the wished velocity's part along the floor's plane times `dt`, stepping onto
 /// ledges up to its step height
 /// ([`Slider::step_slide`], Quake's `PM_StepSlideMove`); in the air, gravity adds to its
@@ -180,20 +183,26 @@ impl<S: Scalar> Character<S> {
         self.floor = None;
     }
 
-    /// A jump: where it stands on a floor, adds `speed` along `up` to its velocity, leaves the
-    /// floor and returns true; in the air, does nothing and returns false.
+    /// A jump: where it stands on a floor, sets its velocity's part along `up` to `speed`
+    /// (keeping the rest), leaves the floor and returns true; in the air, does nothing and
+    /// returns false. Set, not added, as Quake III's `PM_CheckJump` does: walking along a
+    /// tilted floor gives the velocity a part along `up` (up a ramp, over a stair's edge), and
+    /// added to it the jump rose from a stair's edge nearly twice as high as from level ground.
     ///
     /// Errors: [`Error::NaN`] or [`Error::OutOfRange`] for a `speed` outside
-    /// `[0, `[`Scalar::LIMIT`]`]` ([`Input::JumpSpeed`]) or a velocity it would take beyond
-    /// `±LIMIT` ([`Input::Velocity`]); the character is left as it was.
+    /// `[0, `[`Scalar::LIMIT`]`]` ([`Input::JumpSpeed`]) or a velocity beyond `±LIMIT`, before
+    /// the jump or after ([`Input::Velocity`]); the character is left as it was.
     pub fn jump(&mut self, speed: S) -> Result<bool, Error> {
         let speed = check::within(speed, S::ZERO, S::LIMIT, Input::JumpSpeed)?;
         if self.floor.is_none() {
             return Ok(false);
         }
-        // Both within the range, so the sum cannot overflow before it is checked.
-        let velocity =
-            check::point(self.velocity, S::LIMIT, Input::Velocity)? + self.unit_up() * speed;
+        // Velocity and speed within `±LIMIT`: the terms below stay within three times that,
+        // inside every scalar's range, until the result is checked.
+        let up = self.unit_up();
+        let level =
+            check::point(self.velocity, S::LIMIT, Input::Velocity)?.reject_from_normalized(up);
+        let velocity = level + up * speed;
         self.velocity = check::point(velocity, S::LIMIT, Input::Velocity)?;
         self.floor = None;
         Ok(true)
@@ -207,9 +216,11 @@ impl<S: Scalar> Character<S> {
     /// `velocity` component beyond `±`[`Scalar::LIMIT`] (naming which: [`Input::Wish`],
     /// [`Input::Gravity`], [`Input::Position`], [`Input::Velocity`]), or a `dt`
     /// ([`Input::TimeStep`]) below zero or so long that a move this frame might not fit in the
-    /// range: `(|velocity| + |wish| + |gravity| dt) dt` beyond `LIMIT` (the error's `max` is
-    /// the longest `dt` that fits, in `f64`; in `I16F16`, whose `LIMIT` is 4 096, about 20 s
-    /// for a ball at rest under Earth's gravity). Give `dt` in seconds: a time step in
+    /// range: `(|velocity| + |wish| + |gravity| dt) dt` beyond `LIMIT`, or for floats beyond
+    /// the distance from the ball to where its radius falls below [`min_radius`] if that is
+    /// nearer (the error's `max` is the longest `dt` that fits, in `f64`; in `I16F16`, whose
+    /// `LIMIT` is 4 096, about 20 s for a ball at rest under Earth's gravity; in `f32`, for a
+    /// ball of radius 0.4 near the origin, about 73 s). Give `dt` in seconds: a time step in
     /// milliseconds is refused only beyond that bound, and below it is obeyed. Then those of the
     /// slides it makes ([`Slider::slide`], [`Slider::step_slide`], [`Slider::snap_to_floor`]):
     /// a move whose target leaves the range ([`Input::Target`]), a ball too small for the
@@ -234,7 +245,9 @@ impl<S: Scalar> Character<S> {
         if dt.partial_cmp(&dt).is_none() {
             return Err(Error::NaN { input, triangle });
         }
-        let (t, longest) = (dt.to_f64(), longest_step(wish, gravity, self.velocity));
+        let moves = (wish, gravity, self.velocity);
+        let longest = longest_step(moves, self.position, self.ball.radius());
+        let t = dt.to_f64();
         if !(0.0..=longest).contains(&t) {
             return Err(Error::OutOfRange {
                 input,
@@ -253,13 +266,27 @@ impl<S: Scalar> Character<S> {
                 // Standing (the walk rounds to nothing), the press could only move the ball
                 // about its gap above the floor, where, rounded to a step straight down in fixed
                 // point, it walks the ball down the slope (`I16F16` at 960 Hz, or in a steep
-                // valley from 240 Hz). The probe below finds the floor instead.
+                // valley from 240 Hz). The probe below finds the floor instead. A press no
+                // longer than a height's rounding at the ball rounds to a few steps along the
+                // axes, not along the normal: it lowered the ball a step a frame until it
+                // touched and was lifted a skin off along the normal, a sawtooth of one skin
+                // that carried a ball walking into a wall down a tilted floor (`I16F16` from
+                // 480 Hz). There the floor is looked for within the press and a skin, and the
+                // ball stays where it is.
                 me.velocity = wish.reject_from_normalized(n);
                 let walk = me.velocity * dt;
+                let depth = gravity.length().mul(dt).mul(dt);
+                let extent = magnitude(me.position);
                 let pressed = if walk == Vec3::ZERO {
                     None
+                } else if depth <= S::height_error(extent) {
+                    let reach = depth + ball.skin(extent);
+                    let probe = ball.slide(level, me.position, Vec3::ZERO - n * reach)?;
+                    Some(Slide {
+                        position: me.position + probe.pushed_out,
+                        ..probe
+                    })
                 } else {
-                    let depth = gravity.length().mul(dt).mul(dt);
                     Some(ball.slide(level, me.position, Vec3::ZERO - n * depth)?)
                 };
                 let on = (up, min_cos);
@@ -306,17 +333,34 @@ impl<S: Scalar> Character<S> {
 
 /// The longest time step whose moves fit in the range: `(|velocity| + |wish| + |gravity| dt) dt
 /// <= LIMIT` (lengths bound every coordinate: a walk is at most `|wish| dt`, a fall with air
-/// control at most that), and `LIMIT` itself. Worked out in `f64` (correctly rounded
-/// operations: the same bits on every target).
-fn longest_step<S: Scalar>(wish: Vec3<S>, gravity: Vec3<S>, velocity: Vec3<S>) -> f64 {
+/// control at most that), and `LIMIT` itself; for floats also no farther than the ball at
+/// `position` can go before its `radius` falls below [`min_radius`](super::min_radius) there
+/// (beyond, the slide would refuse the radius, where the time step is what was too long).
+/// Worked out in `f64` (correctly rounded operations: the same bits on every target).
+fn longest_step<S: Scalar>(
+    (wish, gravity, velocity): (Vec3<S>, Vec3<S>, Vec3<S>),
+    position: Vec3<S>,
+    radius: S,
+) -> f64 {
     let length = |v: Vec3<S>| {
         let [x, y, z] = v.to_array().map(S::to_f64);
         libm::sqrt(x * x + y * y + z * z)
     };
-    let (l, g) = (S::LIMIT.to_f64(), length(gravity));
+    let p = S::PRECISION;
+    // Where the radius is still resolved, less a margin for the scalar's own rounding of the
+    // extent; a position already beyond (or NaN) is left to the slide to name.
+    let room =
+        radius.to_f64() / p.min_radius(1.0) * (1.0 - 1.0 / 1024.0) - magnitude(position).to_f64();
+    let limit = S::LIMIT.to_f64();
+    let l = if p.relative && room > 0.0 && room < limit {
+        room
+    } else {
+        limit
+    };
+    let g = length(gravity);
     let v = length(velocity) + length(wish);
     // The positive root of g t² + v t = l (v >= 0): 2 l / (v + sqrt(v² + 4 g l)), no
     // cancellation; infinite where nothing moves.
     let fall = 2.0 * l / (v + libm::sqrt(v * v + 4.0 * g * l));
-    fall.min(l)
+    fall.min(limit)
 }

@@ -293,6 +293,31 @@ impl Rng {
             r: self.range(0.01 * s, 0.2 * s),
         }
     }
+    /// A case at scene scale `s` aimed at a vertex or an edge of a triangle `size` across
+    /// within ±s: the path, up to `path` long and tilted up to about 40° from the normal, passes
+    /// within 1.2 r of the feature (`r` 0.01s–0.2s, at most 2), so most hits are edge and
+    /// vertex contacts.
+    pub fn feature_case(&mut self, s: f64, size: f64, path: f64) -> Case {
+        let c = self.point(s - size);
+        let tri = [0; 3].map(|_| add(c, self.point(size)));
+        let n = cross(sub(tri[1], tri[0]), sub(tri[2], tri[0]));
+        let n = scale(n, 1.0 / norm(n).max(1e-300));
+        let r = self.range(0.01 * s, 0.2 * s).min(2.0);
+        let k = (self.next() * 3.0) as usize % 3;
+        let a = if self.next() < 0.5 { 0.0 } else { self.next() };
+        let on = add(scale(tri[k], 1.0 - a), scale(tri[(k + 1) % 3], a));
+        let target = add(on, scale(self.point(1.0), 1.2 * r));
+        let dir = add(n, self.point(0.8));
+        let dir = scale(dir, 1.0 / norm(dir).max(1e-300));
+        let len = self.range(0.0, path);
+        let ahead = self.range(0.0, len);
+        Case {
+            tri,
+            p0: add(target, scale(dir, ahead)),
+            p1: add(target, scale(dir, ahead - len)),
+            r,
+        }
+    }
 }
 
 /// The point of triangle `t` closest to `p` (Ericson, Real-Time Collision Detection, 5.1.5),

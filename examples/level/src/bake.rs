@@ -50,14 +50,14 @@ emit!(
     I2F30,
     i32,
     i32,
-    "use fixed::types::{I2F30, I16F16};"
+    "use ballcast::fixed::types::{I2F30, I16F16};"
 );
 emit!(
     I32F32,
     I2F62,
     i64,
     i64,
-    "use fixed::types::{I2F62, I32F32};"
+    "use ballcast::fixed::types::{I2F62, I32F32};"
 );
 
 /// What a bake made of a level.

@@ -43,6 +43,31 @@ impl Level {
     pub fn is_two_sided(&self, index: usize) -> bool {
         self.two_sided.get(index).copied().unwrap_or(false)
     }
+
+    /// How many one-sided triangles face up (their front normal within 60° of +y) and how many
+    /// face down (within 60° of -y): a level's floors face up, so a level where more face down
+    /// was most likely exported with the other winding, and balls fall through its floors.
+    pub fn facing(&self) -> (usize, usize) {
+        let (mut up, mut down) = (0, 0);
+        for (i, [a, b, c]) in self.triangles.iter().enumerate() {
+            let (e, f) = (
+                [0, 1, 2].map(|k| b[k] - a[k]),
+                [0, 1, 2].map(|k| c[k] - a[k]),
+            );
+            let n = [
+                e[1] * f[2] - e[2] * f[1],
+                e[2] * f[0] - e[0] * f[2],
+                e[0] * f[1] - e[1] * f[0],
+            ];
+            let length = (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]).sqrt();
+            if self.is_two_sided(i) || length == 0.0 {
+                continue;
+            }
+            up += (n[1] > 0.5 * length) as usize;
+            down += (n[1] < -0.5 * length) as usize;
+        }
+        (up, down)
+    }
 }
 
 /// Why a level could not be loaded or baked: the file and the problem.

@@ -15,13 +15,19 @@ mod ramp_f32_four {
 mod ramp_f64 {
     include!(concat!(env!("OUT_DIR"), "/ramp_f64.rs"));
 }
+// Each fixed-point module has a `fixed` of its own that is not the crate: the baked source
+// must name its types through `ballcast::fixed`, so that a firmware without a `fixed`
+// dependency of its own compiles it.
 mod ramp_i16f16 {
+    mod fixed {}
     include!(concat!(env!("OUT_DIR"), "/ramp_i16f16.rs"));
 }
 mod ramp_i32f32 {
+    mod fixed {}
     include!(concat!(env!("OUT_DIR"), "/ramp_i32f32.rs"));
 }
 mod arena_i16f16 {
+    mod fixed {}
     include!(concat!(env!("OUT_DIR"), "/arena_i16f16.rs"));
 }
 

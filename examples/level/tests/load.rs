@@ -282,3 +282,21 @@ fn binary_junk_named_obj_is_not_text() {
         "{text}"
     );
 }
+
+#[test]
+fn a_level_with_its_floors_turned_down_is_told_apart() {
+    let level = load(data("quads.obj")).unwrap();
+    // quads.obj: a floor quad facing up, a wall quad (neither).
+    assert_eq!(level.facing(), (2, 0));
+    let flipped = Level {
+        triangles: level.triangles.iter().map(|&[a, b, c]| [a, c, b]).collect(),
+        ..level.clone()
+    };
+    assert_eq!(flipped.facing(), (0, 2));
+    // Two-sided triangles stop balls either way: not counted.
+    let both = Level {
+        two_sided: vec![true; flipped.triangles.len()],
+        ..flipped
+    };
+    assert_eq!(both.facing(), (0, 0));
+}

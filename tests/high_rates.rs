@@ -1,0 +1,89 @@
+//! `slide::Character` walking at 480 and 960 Hz, where the press into the floor, `|g| dt²`, is
+//! shorter than the rounding of a height in `I16F16`: walking across a floor keeps one height,
+//! and walking into a wall on a tilted floor stays put. (Rounded to a step straight down, the
+//! press once lowered the ball a step a frame until it touched the floor and was lifted a skin
+//! off it: a sawtooth of one skin, which along a tilted floor's normal carried the ball down
+//! the floor, 0.2 along the wall in 10^5 frames.) Every property in every scalar.
+
+mod common;
+
+use ballcast::{Scene, Triangle, slide::Character};
+use common::{Tolerance, back, plane, quad, v};
+use fixed::types::{I16F16, I32F32};
+
+/// The ball's centre over `frames` frames at `hz` after one second walking with `wish`: the
+/// lowest and highest of each coordinate.
+fn span<S: Tolerance, const N: usize>(
+    level: &Scene<S, N>,
+    start: [f64; 3],
+    wish: [f64; 3],
+    hz: f64,
+    frames: usize,
+) -> ([f64; 3], [f64; 3]) {
+    let (dt, gravity) = (S::from_f64(1.0 / hz), v::<S>([0.0, -9.81, 0.0]));
+    let mut me = Character::new(v(start), S::from_f64(0.5)).unwrap();
+    let (mut lo, mut hi) = ([f64::MAX; 3], [f64::MIN; 3]);
+    for frame in 0..hz as usize + frames {
+        me.update(level, v(wish), gravity, dt).unwrap();
+        if frame >= hz as usize {
+            assert!(me.is_grounded(), "{}: in the air at frame {frame}", S::NAME);
+            let p = back(me.position);
+            for k in 0..3 {
+                (lo[k], hi[k]) = (lo[k].min(p[k]), hi[k].max(p[k]));
+            }
+        }
+    }
+    (lo, hi)
+}
+
+/// Walking at 2 units/s along a level floor for a second: its height never changes by more
+/// than a height's rounding (a sawtooth of one skin was 7.3e-4 in `I16F16`).
+fn walking_across_a_floor_keeps_its_height<S: Tolerance>() {
+    let mut level: Scene<S, 2> = Scene::new();
+    for t in quad([-40.0, 0.0, -40.0], [0.0, 0.0, 80.0], [80.0, 0.0, 0.0]) {
+        level
+            .push(Triangle::new(v(t[0]), v(t[1]), v(t[2])))
+            .unwrap();
+    }
+    for hz in [480.0, 960.0] {
+        let (lo, hi) = span(&level, [0.0, 0.6, 0.0], [2.0, 0.0, 0.0], hz, hz as usize);
+        let bob = hi[1] - lo[1];
+        let allowed = S::PRECISION.height_error(40.0);
+        assert!(bob <= allowed, "{} at {hz} Hz: bobbed {bob:e}", S::NAME);
+    }
+}
+
+/// Walking into an upright wall on a floor tilted 15° towards it and 8° along it, for 10^4
+/// frames at 960 Hz: it moves along neither the wall nor the floor (it crept 0.02 down the
+/// floor along the wall in `I16F16`).
+fn walking_into_a_wall_on_a_tilted_floor_stays_put<S: Tolerance>() {
+    let (a, b) = (15f64.to_radians(), 8f64.to_radians());
+    let n = [-a.sin() * b.cos(), a.cos() * b.cos(), b.sin()];
+    let mut level: Scene<S, 4> = Scene::new();
+    let wall = quad([2.0, -8.0, -8.0], [0.0, 0.0, 16.0], [0.0, 16.0, 0.0]);
+    for t in plane(n).into_iter().chain(wall) {
+        level
+            .push(Triangle::new(v(t[0]), v(t[1]), v(t[2])))
+            .unwrap();
+    }
+    let (lo, hi) = span(&level, [1.3, 1.0, 0.0], [2.0, 0.0, 0.0], 960.0, 10_000);
+    let moved = (0..3).fold(0.0f64, |m, k| m.max(hi[k] - lo[k]));
+    let allowed = S::PRECISION.height_error(8.0);
+    assert!(moved <= allowed, "{}: moved {moved:e}", S::NAME);
+}
+
+macro_rules! per_scalar {
+    ($($m:ident: $t:ty),*) => {$(mod $m {
+        use super::*;
+        #[test]
+        fn walking_across_a_floor() {
+            walking_across_a_floor_keeps_its_height::<$t>();
+        }
+        #[test]
+        fn walking_into_a_wall_on_a_tilted_floor() {
+            walking_into_a_wall_on_a_tilted_floor_stays_put::<$t>();
+        }
+    })*};
+}
+
+per_scalar!(f64_: f64, f32_: f32, i32f32: I32F32, i16f16: I16F16);
