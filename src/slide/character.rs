@@ -8,8 +8,8 @@ use crate::{Error, Geometry, Input, Scalar, Vec3, check};
 ///
 /// On the floor, it presses into the floor along the floor's normal by `|gravity| dt²` (so it
 /// does not slide down a walkable slope; not when it stands, its walk rounding to nothing:
-/// the press could then only move it about its gap, and in fixed point down the slope; nor
-/// where the press is no longer than the rounding of a height at its position, `I16F16` from
+/// the press could then only move it about its gap, and in fixed point down the slope; nor,
+/// in fixed point, where the press is no longer than the rounding of a height, `I16F16` from
 /// about 290 Hz, where rounded it would not point along the normal: there it looks for the
 /// floor within the press and a skin without moving), then
 /// walks by the wished velocity's part along the floor's plane times `dt`, stepping onto
@@ -266,20 +266,23 @@ impl<S: Scalar> Character<S> {
                 // Standing (the walk rounds to nothing), the press could only move the ball
                 // about its gap above the floor, where, rounded to a step straight down in fixed
                 // point, it walks the ball down the slope (`I16F16` at 960 Hz, or in a steep
-                // valley from 240 Hz). The probe below finds the floor instead. A press no
-                // longer than a height's rounding at the ball rounds to a few steps along the
-                // axes, not along the normal: it lowered the ball a step a frame until it
-                // touched and was lifted a skin off along the normal, a sawtooth of one skin
-                // that carried a ball walking into a wall down a tilted floor (`I16F16` from
-                // 480 Hz). There the floor is looked for within the press and a skin, and the
-                // ball stays where it is.
+                // valley from 240 Hz). The probe below finds the floor instead. In fixed
+                // point a press no longer than a height's rounding rounds to a few steps along
+                // the axes, not along the normal, and as the ball and a level's vertices lie on
+                // one grid, it lowered the ball a few steps a frame until it exactly touched
+                // and was lifted a skin off along the normal: a sawtooth of one skin that
+                // carried a ball walking into a wall down a tilted floor (`I16F16` from 480
+                // Hz). There the floor is looked for within the press and a skin, and the ball
+                // stays where it is. (Floats far out round a press as coarsely, but on no grid
+                // shared with the level: there the press still holds a walking ball down
+                // against the rounding of its walk, which would lift it off the floor.)
                 me.velocity = wish.reject_from_normalized(n);
                 let walk = me.velocity * dt;
                 let depth = gravity.length().mul(dt).mul(dt);
                 let extent = magnitude(me.position);
                 let pressed = if walk == Vec3::ZERO {
                     None
-                } else if depth <= S::height_error(extent) {
+                } else if !S::PRECISION.relative && depth <= S::height_error(extent) {
                     let reach = depth + ball.skin(extent);
                     let probe = ball.slide(level, me.position, Vec3::ZERO - n * reach)?;
                     Some(Slide {
