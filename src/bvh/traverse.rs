@@ -121,12 +121,20 @@ impl Segment {
 
     /// Where the segment's line enters each of the four child boxes of `node` (whose own
     /// minimum is `lo`), each grown by the pad and `2^class` seam margins of its child (before
-    /// the start: negative, where the start lies in the box), and where the segment, over
-    /// `[0, limit]`, leaves it; an entry of infinity where the segment misses the box. The four
-    /// are computed side by side, lane by lane and without branches, so the compiler can use
-    /// vector registers; slots beyond `count` are computed and ignored.
-    #[inline]
-    fn enter4(&self, node: &Node, lo: [i32; 3], limit: f32) -> ([f32; 4], [f32; 4]) {
+    /// the start: negative, where the start lies in the box), where the segment, over
+    /// `[0, limit]`, leaves it, and a mask of the children it meets there (bit `k` for child
+    /// `k < count`; a child met is entered no later than `limit`). The four are computed side
+    /// by side, lane by lane and without branches, so the compiler can use vector registers;
+    /// slots beyond `count` are computed and left out of the mask.
+    /// `shift` is the node's, each at most 31 ([`shifts`]).
+    #[inline(always)]
+    fn enter4(
+        &self,
+        node: &Node,
+        lo: [i32; 3],
+        shift: [u32; 3],
+        limit: f32,
+    ) -> ([f32; 4], [f32; 4], u32) {
         let pad: [f32; 4] = core::array::from_fn(|k| {
             let class = super::class_bits(node.children[k]);
             self.pad + self.seam * pow2f(class)
@@ -141,7 +149,7 @@ impl Segment {
             };
             // In the node's steps: t = byte * per_step + at_zero (module docs); `2^shift`
             // times the `f32` reciprocal is exact, as `2^shift` times the `f64` one rounded.
-            let per_step = self.inv32[a] * pow2f(node.shift[a].min(31) as u32);
+            let per_step = self.inv32[a] * pow2f(shift[a]);
             let at_zero = ((base as f64 - self.q0[a]) * self.inv[a]) as f32;
             let slope = self.slope[a];
             for k in 0..4 {
@@ -153,14 +161,15 @@ impl Segment {
                 t1[k] = if tb < t1[k] { tb } else { t1[k] };
             }
         }
-        let enter = core::array::from_fn(|k| {
-            if t0[k] <= t1[k] && t1[k] >= 0.0 {
-                t0[k]
-            } else {
-                f32::INFINITY
-            }
+        // Met: entered no later than left, and left no earlier than the start (`t0` and `t1`
+        // are never NaN), one comparison per lane, so one mask of the four (`movmskps` on x86).
+        let met: [bool; 4] = core::array::from_fn(|k| {
+            let from = if t0[k] > 0.0 { t0[k] } else { 0.0 };
+            from <= t1[k]
         });
-        (enter, t1)
+        let met = (0..4).fold(0, |m, k| m | (met[k] as u32) << k);
+        let count = (1u32 << node.count.min(4)) - 1;
+        (t0, t1, met & count)
     }
 }
 
@@ -198,13 +207,16 @@ pub(super) fn child_cells(node: &Node, k: usize, lo: [i32; 3]) -> Cells {
     ([at(0), at(1), at(2)], [at(3), at(4), at(5)])
 }
 
-/// The minimum of child `k`'s box (`child_cells`' first half).
+/// A node's steps per axis as shifts, at most 31.
 #[inline]
-fn child_lo(node: &Node, k: usize, lo: [i32; 3]) -> [i32; 3] {
-    core::array::from_fn(|a| {
-        let v = node.boxes[a][k & 3] as i32;
-        lo[a].wrapping_add(v.wrapping_shl(node.shift[a].min(31) as u32))
-    })
+fn shifts(node: &Node) -> [u32; 3] {
+    node.shift.map(|s| s.min(31) as u32)
+}
+
+/// The minimum of child `k`'s box (`child_cells`' first half), given the node's [`shifts`].
+#[inline]
+fn child_lo(node: &Node, shift: [u32; 3], k: usize, lo: [i32; 3]) -> [i32; 3] {
+    core::array::from_fn(|a| lo[a].wrapping_add((node.boxes[a][k & 3] as i32) << shift[a]))
 }
 
 /// `exit` if before `lim`, else infinity.
@@ -283,84 +295,111 @@ pub(crate) fn traverse_leaves<S: Scalar>(
     if nodes.is_empty() {
         return true;
     }
-    // The reach as an `f32` bound on the node tests' parameter; it only changes at a leaf.
-    let limit = |acc: &Earliest<S>| reach_limit(acc.reach());
-    let mut lim = limit(acc);
+    // The reach as an `f32` bound on the node tests' parameter; it only changes at a leaf
+    // that finds a contact, and is converted anew only then.
+    let mut reach = acc.reach();
+    let mut lim = reach_limit(reach);
     let mut stack: heapless::Vec<Entry, STACK> = heapless::Vec::new();
+    // Node visits: a tree visits each node once at most, so running out means a cycle.
     let mut budget = 5 * nodes.len() + 5;
-    // The node in hand, if any: (reference, box minimum).
-    let mut next = Some((0u32, grid.lo));
+    // The node in hand: its reference and its box's minimum.
+    let (mut child, mut lo) = (0u32, grid.lo);
     loop {
         budget = match budget.checked_sub(1) {
             Some(b) => b,
             None => return false,
         };
-        let (child, lo) = match next.take() {
+        let Some(node) = nodes.get((child & PAYLOAD) as usize) else {
+            return false;
+        };
+        let shift = shifts(node);
+        let (enter, exit, mut met) = seg.enter4(node, lo, shift, lim);
+        // The child met first is visited next (a leaf at once), the others wait on the stack.
+        let mut next = None;
+        if met != 0 {
+            // The children met by entry, nearest first; equal entries keep child order.
+            let mut near = [met.trailing_zeros() as usize; 4];
+            let mut n = 1;
+            met &= met - 1;
+            if met != 0 && met & (met - 1) == 0 {
+                // Two (the most common case after one): a single comparison.
+                let k = met.trailing_zeros() as usize;
+                if enter[k & 3] < enter[near[0] & 3] {
+                    near[0] = k;
+                } else {
+                    near[1] = k;
+                }
+                n = 2;
+            } else {
+                // One, or an insertion sort of three or four.
+                while met != 0 && n < 4 {
+                    let k = met.trailing_zeros() as usize;
+                    met &= met - 1;
+                    let mut at = n;
+                    while at > 0 && enter[near[at - 1] & 3] > enter[k & 3] {
+                        near[at] = near[at - 1];
+                        at -= 1;
+                    }
+                    near[at] = k;
+                    n += 1;
+                }
+            }
+            // Farthest first, so that the stack gives them back nearest first.
+            for &k in near[1..n].iter().rev() {
+                let child = node.children[k & 3];
+                // A leaf needs no box.
+                let lo = if child & LEAF_FLAG == 0 {
+                    child_lo(node, shift, k, lo)
+                } else {
+                    lo
+                };
+                let (enter, exit) = (enter[k & 3], exit[k & 3]);
+                if stack
+                    .push(Entry {
+                        enter,
+                        exit,
+                        child,
+                        lo,
+                    })
+                    .is_err()
+                {
+                    return false;
+                }
+            }
+            let first = near[0];
+            let child = node.children[first & 3];
+            match leaf_slots(child) {
+                Some(slots) => {
+                    leaf(acc, slots, before(exit[first & 3], lim));
+                    if acc.reach() != reach {
+                        reach = acc.reach();
+                        lim = reach_limit(reach);
+                    }
+                }
+                None => next = Some((child, child_lo(node, shift, first, lo))),
+            }
+        }
+        // Else the nearest waiting child still within reach, visiting the leaves on the way.
+        (child, lo) = match next {
             Some(c) => c,
-            None => {
+            None => loop {
                 let Some(e) = stack.pop() else {
                     return true;
                 };
                 if e.enter > lim {
                     continue;
                 }
-                if let Some(slots) = leaf_slots(e.child) {
-                    leaf(acc, slots, before(e.exit, lim));
-                    lim = limit(acc);
-                    continue;
+                match leaf_slots(e.child) {
+                    Some(slots) => {
+                        leaf(acc, slots, before(e.exit, lim));
+                        if acc.reach() != reach {
+                            reach = acc.reach();
+                            lim = reach_limit(reach);
+                        }
+                    }
+                    None => break (e.child, e.lo),
                 }
-                (e.child, e.lo)
-            }
+            },
         };
-        let Some(node) = nodes.get((child & PAYLOAD) as usize) else {
-            return false;
-        };
-        let (enter, exit) = seg.enter4(node, lo, lim);
-        let mut near = [(0.0f32, 0usize); 4];
-        let mut n = 0;
-        for (k, &t) in enter.iter().enumerate().take((node.count as usize).min(4)) {
-            if t <= lim {
-                // Insertion by entry, nearest first; equal entries keep child order.
-                let mut at = n;
-                while at > 0 && near[at - 1].0 > t {
-                    near[at] = near[at - 1];
-                    at -= 1;
-                }
-                near[at] = (t, k);
-                n += 1;
-            }
-        }
-        let Some((&(_, first), rest)) = near[..n].split_first() else {
-            continue;
-        };
-        for &(enter, k) in rest.iter().rev() {
-            let exit = exit[k & 3];
-            let child = node.children[k & 3];
-            // A leaf needs no box.
-            let lo = if child & LEAF_FLAG == 0 {
-                child_lo(node, k, lo)
-            } else {
-                lo
-            };
-            if stack
-                .push(Entry {
-                    enter,
-                    exit,
-                    child,
-                    lo,
-                })
-                .is_err()
-            {
-                return false;
-            }
-        }
-        let child = node.children[first & 3];
-        match leaf_slots(child) {
-            Some(slots) => {
-                leaf(acc, slots, before(exit[first & 3], lim));
-                lim = limit(acc);
-            }
-            None => next = Some((child, child_lo(node, first, lo))),
-        }
     }
 }
