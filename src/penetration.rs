@@ -35,9 +35,11 @@ pub struct Penetration<S> {
 ///
 /// Sidedness is the cast's: a one-sided triangle ignores a centre behind its plane (its back is
 /// open, and a ball that has passed through is not pulled back); a two-sided one pushes the
-/// ball out on the side its centre is. Where the nearest feature is an inactive edge or vertex (a seam with a
-/// flat or valley neighbour, see [`Features`](crate::Features)), the face's normal is used, as
-/// for a cast. On an exact tie of depths, the smallest index wins, whatever the visiting order.
+/// ball out on the side its centre is. Where the nearest feature is an inactive edge or vertex
+/// (a seam with a flat or valley neighbour, see [`Features`](crate::Features)), the face's
+/// normal is used, as for a cast, with the depth along it that leaves the ball touching the
+/// triangle (more than the radius less the distance: the way out along the face's normal is not
+/// the shortest). On an exact tie of depths, the smallest index wins, whatever the visiting order.
 ///
 /// Errors: [`Error::NaN`], [`Error::OutOfRange`] for a centre or radius outside
 /// `±`[`Scalar::LIMIT`], [`Error::NegativeRadius`].
@@ -143,8 +145,8 @@ pub(crate) fn nearest<S: Scalar>(
     let flat = Vec3::new(q.x, S::ZERO, q.z);
     let inside = (t.edges().iter().enumerate())
         .all(|(i, e)| S::dot_unit(flat - t.corner(i), e.out()) <= S::ZERO);
-    // The face region: out along the normal on the centre's side.
-    let face = |over: bool| {
+    if inside {
+        // The face region: out along the normal on the centre's side.
         let n = if behind { -t.normal() } else { t.normal() };
         let p = Penetration {
             normal: n,
@@ -153,10 +155,7 @@ pub(crate) fn nearest<S: Scalar>(
             index,
             contact: Contact::Face,
         };
-        Some((p, over))
-    };
-    if inside {
-        return face(true);
+        return Some((p, true));
     }
     // The nearest point of the nearest edge segment (its ends are the vertices).
     let mut near: Option<(S, Vec3<S>, Contact)> = None;
@@ -188,7 +187,22 @@ pub(crate) fn nearest<S: Scalar>(
         Contact::Face => true,
     };
     if !active {
-        return face(false);
+        // Beside a seam the face's normal stands in (as for a cast), but the depth is what
+        // clears the triangle along it: to where the nearest point `p` is `r` away, not the
+        // plane's depth, which beyond the seam would overstate it (0.108 for a true 0.003).
+        let n = if behind { -t.normal() } else { t.normal() };
+        let clear = S::chord(r, flat - p)?;
+        let depth = clear - q.y.abs();
+        return (depth > S::ZERO).then(|| {
+            let p = Penetration {
+                normal: n,
+                depth,
+                point: c - t.world_direction(q - p),
+                index,
+                contact: Contact::Face,
+            };
+            (p, false)
+        });
     }
     let normal = unit(t.world_direction(q - p)).unwrap_or(t.normal());
     let p = Penetration {
