@@ -72,35 +72,21 @@ fn long_paths_past_small_triangles<S: Tolerance>() {
     );
 }
 
-#[test]
-fn planner_error_model_holds_for_f32() {
-    model_holds::<f32>();
+macro_rules! per_scalar {
+    ($($m:ident: $t:ty),*) => {$(mod $m {
+        use super::*;
+        #[test]
+        fn planner_error_model_holds() {
+            model_holds::<$t>();
+        }
+        #[test]
+        fn long_paths_past_small_triangles() {
+            super::long_paths_past_small_triangles::<$t>();
+        }
+    })*};
 }
 
-#[test]
-fn planner_error_model_holds_for_i32f32() {
-    model_holds::<I32F32>();
-}
-
-#[test]
-fn planner_error_model_holds_for_i16f16() {
-    model_holds::<I16F16>();
-}
-
-#[test]
-fn long_paths_past_small_triangles_f32() {
-    long_paths_past_small_triangles::<f32>();
-}
-
-#[test]
-fn long_paths_past_small_triangles_i32f32() {
-    long_paths_past_small_triangles::<I32F32>();
-}
-
-#[test]
-fn long_paths_past_small_triangles_i16f16() {
-    long_paths_past_small_triangles::<I16F16>();
-}
+per_scalar!(f32_: f32, i32f32: I32F32, i16f16: I16F16);
 
 /// A review's case: an `f32` edge contact of a sweep from a corner of the extent, 33.5 long,
 /// whose offset from the edge's corner is three times the extent: its error (6 steps of the
