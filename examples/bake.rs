@@ -15,8 +15,9 @@
 //! statistics to stderr: triangles, degenerate ones skipped (by index), nodes, bytes in flash
 //! for every scalar, and the precision planner's verdict at the level's extent for a ball of
 //! radius R (default 0.5); before it, a warning where more one-sided triangles face down than
-//! up (a level exported with the other winding). A bad file or a level outside the scalar's range gets a message
-//! naming the file and the problem, a non-zero exit status and no output on stdout.
+//! up (a level exported with the other winding). A bad file or a level outside the scalar's
+//! range gets a message naming the file and the problem, a non-zero exit status and no output
+//! on stdout.
 
 use ballcast::bvh::LeafSize;
 use ballcast::plan::{Memory, ScalarType};

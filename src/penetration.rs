@@ -4,7 +4,8 @@
 //! query: for a ball at `centre`, the closest point of each triangle (Ericson, *Real-Time
 //! Collision Detection*, §5.1.5, closest point on a triangle, here in the triangle's standard
 //! frame: the face region when the centre projects inside every edge, else the nearest point of
-//! the nearest edge segment); the triangle with the largest overlap `radius - distance` wins.
+//! the nearest edge segment); the triangle with the largest overlap `radius - distance` wins
+//! (beside a seam, the depth along the face's normal that clears the triangle stands in).
 
 use crate::contact::unit;
 use crate::{Contact, Error, Geometry, Input, Scalar, StandardTriangle, Vec3, check};

@@ -158,21 +158,9 @@ fn mistaken_frames_and_jumps_name_their_argument<S: Tolerance>() {
     }
     assert!(me.is_grounded(), "{}", S::NAME);
     let before = me;
-    // At rest the bound is the fall's, sqrt(l / g); walking at a tenth of l per second, the
-    // time t with (w + g t) t = l. Twice either is refused with it as the range's end. `l` is
-    // LIMIT, or for floats where the ball would come too far out for its radius, if nearer
-    // (so a step of 74 s for a ball of 0.4 in `f32` is refused as a time step, not as a radius
-    // too small at the 53 719 units it would reach).
-    let p = S::PRECISION;
-    let out = common::back(me.position)
-        .iter()
-        .fold(0.0f64, |m, x| m.max(x.abs()));
-    let room = 0.5 / p.min_radius(1.0) * (1.0 - 1.0 / 1024.0) - out;
-    let l = if p.relative {
-        room.min(S::LIMIT.to_f64())
-    } else {
-        S::LIMIT.to_f64()
-    };
+    // At rest the bound is the fall's, sqrt(LIMIT / g); walking at a tenth of LIMIT per second,
+    // the time t with (w + g t) t = LIMIT. Twice either is refused with it as the range's end.
+    let l = S::LIMIT.to_f64();
     let w = 0.1 * l;
     let walking = (-w + (w * w + 4.0 * 9.81 * l).sqrt()) / (2.0 * 9.81);
     let wish = Vec3::new(S::from_f64(w), S::ZERO, S::ZERO);

@@ -33,16 +33,20 @@ impl<S: Scalar> StandardTriangle<S> {
     fn earliest(&self, p0: Vec3<S>, d: Vec3<S>, r: S, from: S) -> Option<Touch<S>> {
         let after = |c: &Timed<S>| c.0.0 >= from;
         let mut best: Option<Timed<S>> = None;
-        for i in 0..3 {
+        // Each edge's rounded alpha, for the vertices at its ends.
+        let mut edges: [Option<S>; 3] = [None; 3];
+        for (i, at) in edges.iter_mut().enumerate() {
             if self.features.edge(i) {
-                best = earlier(best, self.edge_contact(i, p0, d, r).filter(after));
+                let e = self.edge_contact(i, p0, d, r).filter(after);
+                *at = e.map(|e| e.0.0);
+                best = earlier(best, e);
             }
         }
         // The path's length and direction, computed once and only if a vertex needs them.
         let mut motion = None;
         // Where an edge's contact lies next to its vertex, the two arrive together; the edge's
-        // normal is the right one, so a vertex must be earlier than an edge through it by more
-        // than rounding. Against any other contact (another vertex, the opposite edge) the
+        // normal is the right one, so a vertex must be earlier than each edge through it by
+        // more than rounding. Against any other contact (another vertex, the opposite edge) the
         // exact order decides: there a margin would keep a contact later than the vertex's.
         let tie = tie::<S>();
         for i in 0..3 {
@@ -61,13 +65,14 @@ impl<S: Scalar> StandardTriangle<S> {
                     resting(q, r).then_some((at, (S::ZERO, S::ONE)))
                 }
             };
-            let v = v.filter(after);
-            best = match (best, v) {
-                (Some(b), Some(v)) if through(b.0.2, i) => {
-                    Some(if v.0.0 < b.0.0 - tie { v } else { b })
-                }
-                (b, v) => earlier(b, v),
+            // The edges through vertex `i`: edge `i` (from it) and the one before (to it).
+            let shadowed = |v: &Timed<S>| {
+                [i, (i + 2) % 3]
+                    .iter()
+                    .any(|&e| edges[e].is_some_and(|a| v.0.0 >= a - tie))
             };
+            let v = v.filter(|v| after(v) && !shadowed(v));
+            best = earlier(best, v);
         }
         best.map(|((alpha, offset, contact), key)| (alpha, offset, contact, key))
     }
@@ -193,12 +198,6 @@ pub(crate) fn off_line<S: Scalar>(q0: Vec3<S>, dir: Vec3<S::Unit>) -> Vec3<S> {
 #[inline(never)]
 fn resting<S: Scalar>(q: Vec3<S>, r: S) -> bool {
     q.y >= S::ZERO && S::chord(r, q).is_some_and(|k| k > S::ZERO)
-}
-
-/// Whether `contact` is with an edge through vertex `i` (edge `e` runs from vertex `e` to the
-/// next).
-fn through(contact: Contact, i: usize) -> bool {
-    matches!(contact, Contact::Edge(e) if e as usize == i || (e as usize + 1) % 3 == i)
 }
 
 /// The earlier of two contacts, by their exact fractions `t / len` (the first on a tie).

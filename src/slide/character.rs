@@ -10,8 +10,8 @@ use crate::{Error, Geometry, Input, Scalar, Vec3, check};
 /// does not slide down a walkable slope; not when it stands, its walk rounding to nothing:
 /// the press could then only move it about its gap, and in fixed point down the slope; nor,
 /// in fixed point, where the press is no longer than the rounding of a height, `I16F16` from
-/// about 290 Hz, where rounded it would not point along the normal: there it looks for the
-/// floor within the press and a skin without moving), then
+/// about 285 Hz under a gravity of 9.81, where rounded it would not point along the normal:
+/// there it looks for the floor within the press and a skin without moving), then
 /// walks by the wished velocity's part along the floor's plane times `dt`, stepping onto
 /// ledges up to its step height
 /// ([`Slider::step_slide`], Quake's `PM_StepSlideMove`); in the air, gravity adds to its
@@ -216,11 +216,12 @@ impl<S: Scalar> Character<S> {
     /// `velocity` component beyond `±`[`Scalar::LIMIT`] (naming which: [`Input::Wish`],
     /// [`Input::Gravity`], [`Input::Position`], [`Input::Velocity`]), or a `dt`
     /// ([`Input::TimeStep`]) below zero or so long that a move this frame might not fit in the
-    /// range: `(|velocity| + |wish| + |gravity| dt) dt` beyond `LIMIT`, or for floats beyond
-    /// the distance from the ball to where its radius falls below [`min_radius`] if that is
-    /// nearer (the error's `max` is the longest `dt` that fits, in `f64`; in `I16F16`, whose
-    /// `LIMIT` is 4 096, about 20 s for a ball at rest under Earth's gravity; in `f32`, for a
-    /// ball of radius 0.4 near the origin, about 73 s). Give `dt` in seconds: a time step in
+    /// range: `(|velocity| + |wish| + |gravity| dt) dt` beyond `LIMIT` (the error's `max` is
+    /// the longest `dt` that fits, in `f64`; in `I16F16`, whose `LIMIT` is 4 096, about 20 s
+    /// for a ball at rest under Earth's gravity). A float's step that fits but carries the ball
+    /// out to where its radius is below [`min_radius`] (in `f32`, a ball of 0.4 beyond 52 428
+    /// units: a fall of 74 s) is refused by the slide as [`Error::RadiusTooSmall`], naming the
+    /// coordinates it would reach. Give `dt` in seconds: a time step in
     /// milliseconds is refused only beyond that bound, and below it is obeyed. Then those of the
     /// slides it makes ([`Slider::slide`], [`Slider::step_slide`], [`Slider::snap_to_floor`]):
     /// a move whose target leaves the range ([`Input::Target`]), a ball too small for the
@@ -245,9 +246,7 @@ impl<S: Scalar> Character<S> {
         if dt.partial_cmp(&dt).is_none() {
             return Err(Error::NaN { input, triangle });
         }
-        let moves = (wish, gravity, self.velocity);
-        let longest = longest_step(moves, self.position, self.ball.radius());
-        let t = dt.to_f64();
+        let (t, longest) = (dt.to_f64(), longest_step(wish, gravity, self.velocity));
         if !(0.0..=longest).contains(&t) {
             return Err(Error::OutOfRange {
                 input,
@@ -336,34 +335,17 @@ impl<S: Scalar> Character<S> {
 
 /// The longest time step whose moves fit in the range: `(|velocity| + |wish| + |gravity| dt) dt
 /// <= LIMIT` (lengths bound every coordinate: a walk is at most `|wish| dt`, a fall with air
-/// control at most that), and `LIMIT` itself; for floats also no farther than the ball at
-/// `position` can go before its `radius` falls below [`min_radius`](super::min_radius) there
-/// (beyond, the slide would refuse the radius, where the time step is what was too long).
-/// Worked out in `f64` (correctly rounded operations: the same bits on every target).
-fn longest_step<S: Scalar>(
-    (wish, gravity, velocity): (Vec3<S>, Vec3<S>, Vec3<S>),
-    position: Vec3<S>,
-    radius: S,
-) -> f64 {
+/// control at most that), and `LIMIT` itself. Worked out in `f64` (correctly rounded
+/// operations: the same bits on every target).
+fn longest_step<S: Scalar>(wish: Vec3<S>, gravity: Vec3<S>, velocity: Vec3<S>) -> f64 {
     let length = |v: Vec3<S>| {
         let [x, y, z] = v.to_array().map(S::to_f64);
         libm::sqrt(x * x + y * y + z * z)
     };
-    let p = S::PRECISION;
-    // Where the radius is still resolved, less a margin for the scalar's own rounding of the
-    // extent; a position already beyond (or NaN) is left to the slide to name.
-    let room =
-        radius.to_f64() / p.min_radius(1.0) * (1.0 - 1.0 / 1024.0) - magnitude(position).to_f64();
-    let limit = S::LIMIT.to_f64();
-    let l = if p.relative && room > 0.0 && room < limit {
-        room
-    } else {
-        limit
-    };
-    let g = length(gravity);
+    let (l, g) = (S::LIMIT.to_f64(), length(gravity));
     let v = length(velocity) + length(wish);
     // The positive root of g t² + v t = l (v >= 0): 2 l / (v + sqrt(v² + 4 g l)), no
     // cancellation; infinite where nothing moves.
     let fall = 2.0 * l / (v + libm::sqrt(v * v + 4.0 * g * l));
-    fall.min(limit)
+    fall.min(l)
 }
