@@ -117,7 +117,7 @@ pub(super) fn settle<S: Scalar, G: Geometry<S> + ?Sized>(
     } else {
         lift
     };
-    lift_from(scene, at, lift, (radius, skin), rounding)
+    lift_from(scene, at, (hit.normal, lift), (radius, skin), rounding)
 }
 
 /// Where a ball at `at` ends after a lift (off a plane, a skin or a few steps) that is swept
@@ -125,15 +125,20 @@ pub(super) fn settle<S: Scalar, G: Geometry<S> + ?Sized>(
 /// by another plane, it stands a skin short of it along the lift, or, where that is less than
 /// half the way (a slot or corner too narrow for a skin on both sides), half way; met by one
 /// at once (a ball resting in the corner), or within a position's rounding where the lift can
-/// slide along it, the lift slides along it, once.
+/// slide along it, the lift slides along it, once; and if that is met at once too, it becomes
+/// the shortest lift that leaves both (the first plane, `normal`, by as much as before, the
+/// other by a skin), unless the two are within about 14° of opposed.
 fn lift_from<S: Scalar, G: Geometry<S> + ?Sized>(
     scene: &G,
     at: Vec3<S>,
-    mut lift: Vec3<S>,
+    (normal, mut lift): (Vec3<S>, Vec3<S>),
     (radius, skin): (S, S),
     rounding: S,
 ) -> Vec3<S> {
-    for _ in 0..2 {
+    // What the first lift asks of its plane, and the plane the lift slid along, if it did.
+    let first = (normal, S::dot(lift, normal));
+    let mut along = None;
+    for round in 0..3 {
         if lift == Vec3::ZERO {
             return at;
         }
@@ -143,6 +148,19 @@ fn lift_from<S: Scalar, G: Geometry<S> + ?Sized>(
         let Some(next) = scene.cast(&sweep) else {
             return at + lift;
         };
+        // Slid along a plane and met by it again, which only rounding does: a lift of a few
+        // steps of the coordinates' rounding (`f32` a thousand units out) rounds into it. Left
+        // touching the first plane, the ball met it at once on every later move along the
+        // corner (stuck in a ditch): lifted off both instead, a skin off the other.
+        if along.take() == Some(next.normal) {
+            match around(first, next.normal, (radius, skin)) {
+                Some(both) => {
+                    lift = both;
+                    continue;
+                }
+                None => return at,
+            }
+        }
         let into = S::dot(lift, next.normal);
         let slid = lift - next.normal.scale(into);
         // Met within a position's rounding by a plane the lift can slide along (keeping over
@@ -160,10 +178,10 @@ fn lift_from<S: Scalar, G: Geometry<S> + ?Sized>(
                 _ => half,
             };
         }
-        if into >= S::ZERO {
+        if into >= S::ZERO || round > 0 {
             return at;
         }
-        lift = slid;
+        (lift, along) = (slid, Some(next.normal));
     }
     at
 }
