@@ -5,7 +5,8 @@
 
 mod common;
 
-use ballcast::{Error, Scalar, Scene, Triangle, Vec3, slide::Slider};
+use ballcast::slide::{Character, Slider};
+use ballcast::{Error, Scalar, Scene, Triangle, Vec3};
 use common::walker::{Gait, HALF, walk, with_and_without_snap};
 use common::{P, Tolerance, back, quad, v};
 use fixed::types::{I16F16, I32F32};
@@ -280,6 +281,33 @@ fn the_snap_finds_what_the_probe_finds<S: Tolerance>() {
 }
 
 /// Bad snap depths are errors, and a zero one is the ground probe.
+/// Walking at 2 units/s down six steps of 0.2 with `Character` (a snap of 0.25) at 60 to 960
+/// Hz: never faster than wished, and as fast at 960 Hz as at 240 within 1 % (5.63 of the 6
+/// units in 3 s at 60 Hz, 5.76 to 5.78 above, in every scalar: rolling over each step's edge,
+/// the walk follows the edge's tilted plane). Rolling over an edge, the ball is snapped back
+/// onto it every frame, and the snap's slide took the edge it was walking off for no floor and
+/// rolled on around it by what was left of its reach, two skins a frame: at 960 Hz `f64` made
+/// 6.10 and `I16F16` 6.54. An edge within the slope limit now holds the snap's slide as a face
+/// does.
+fn walking_down_stairs_keeps_the_wished_pace<S: Tolerance>() {
+    let level = stairs::<S>(6, 0.2);
+    let made = [60, 240, 960].map(|hz| {
+        let (r, dt) = (S::from_f64(0.5), S::from_f64(1.0 / hz as f64));
+        let (gravity, wish) = (v::<S>([0.0, -9.81, 0.0]), v::<S>([2.0, 0.0, 0.0]));
+        let mut me = Character::new(v::<S>([-0.5, 0.5005, 0.0]), r).unwrap();
+        for _ in 0..3 * hz {
+            me.update(&level, wish, gravity, dt).unwrap();
+        }
+        me.position.x.to_f64() + 0.5
+    });
+    let [_, at_240, at_960] = made;
+    assert!(
+        made.iter().all(|m| (5.5..=6.0).contains(m)) && (at_960 - at_240).abs() < 0.06,
+        "{}: made {made:?} of 6 at 60, 240 and 960 Hz",
+        S::NAME
+    );
+}
+
 fn bad_snaps_are_errors<S: Tolerance>() {
     let level = stairs::<S>(1, 0.2);
     let (up, walkable) = (v::<S>([0.0, 1.0, 0.0]), S::from_f64(0.5f64.sqrt()));
@@ -332,6 +360,10 @@ macro_rules! per_scalar {
         #[test]
         fn the_snap_finds_what_the_probe_finds() {
             super::the_snap_finds_what_the_probe_finds::<$t>();
+        }
+        #[test]
+        fn walking_down_stairs_keeps_the_wished_pace() {
+            super::walking_down_stairs_keeps_the_wished_pace::<$t>();
         }
         #[test]
         fn bad_snaps_are_errors() { super::bad_snaps_are_errors::<$t>(); }

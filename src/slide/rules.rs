@@ -2,7 +2,7 @@
 //! is constrained by the planes touched.
 
 use crate::merge::{PLANES, same_plane};
-use crate::{Contact, Scalar, SceneHit, Vec3, contact::unit};
+use crate::{Scalar, SceneHit, Vec3, contact::unit};
 use heapless::Vec;
 
 /// The distinct planes a call has touched. Eight is more than a ball ever needs (three stop it);
@@ -12,16 +12,16 @@ pub(super) type Planes<S> = Vec<Vec3<S>, { 2 * PLANES }>;
 /// Where a ground probe's slide ends: at the first floor it meets (a contact within the slope
 /// limit, or one of whose planes meets a plane touched so far in a crease that holds the ball,
 /// as [`Slide::floor`](super::Slide::floor) has it), not carried on down that floor's slope
-/// by what is left of the probe's reach. An edge or vertex the ball is walking off (its
-/// normal leans along the level heading) is no such stop: the probe rolls on around it.
+/// by what is left of the probe's reach. An edge or vertex counts as a face does, also one the
+/// ball is walking off: rolling over a stair's edge, a ball snapped back onto the edge every
+/// frame was carried on around it by the rest of the reach, two skins a frame, faster than it
+/// walked (at 960 Hz, `f64` down stairs at 1.02 times the wished pace, `I16F16` 1.09).
 #[derive(Clone, Copy)]
 pub(super) struct FloorStop<S> {
     /// `up` as a unit vector.
     pub up: Vec3<S>,
     /// The cosine of the steepest walkable slope.
     pub min_cos: S,
-    /// The level part of the ball's heading (zero for none).
-    pub heading: Vec3<S>,
 }
 
 impl<S: Scalar> FloorStop<S> {
@@ -37,8 +37,7 @@ impl<S: Scalar> FloorStop<S> {
                 let _ = touched.push(*n);
             }
         }
-        let floor = S::dot(hit.normal, self.up) >= self.min_cos
-            && (hit.contact == Contact::Face || S::dot(hit.normal, self.heading) <= S::ZERO);
+        let floor = S::dot(hit.normal, self.up) >= self.min_cos;
         let crease = || {
             let held = |a: &Vec3<S>| {
                 let hold = |b: &Vec3<S>| holds(*a, *b, self.up, self.min_cos).is_some();

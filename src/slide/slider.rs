@@ -125,9 +125,8 @@ impl<S: Scalar> Slider<S> {
     /// floor it meets (not carried on down that floor's slope by the rest of its reach): that
     /// slide's [`Slide::floor_normal`] with the same `up` and `min_cos`, and where it ended
     /// ([`Floor::position`]: at most a skin off the floor, a game's *floor snap*). The ball
-    /// itself is not moved. Knowing no heading, it stops on a rounded edge whether the ball
-    /// walks onto it or off it; [`snap_to_floor`](Self::snap_to_floor) with the velocity and a
-    /// `depth` of zero rolls on around an edge the ball walks off.
+    /// itself is not moved. It stops on a rounded edge within the slope limit whether the ball
+    /// walks onto it or off it.
     ///
     /// Why: the response keeps a ball a skin off what it touched, and lifts one met at once (a
     /// ball left exactly touching a floor, say) by a skin. A ball resting on a floor is then up
@@ -192,22 +191,23 @@ impl<S: Scalar> Slider<S> {
     /// step's edge until it lands on the next.
     ///
     /// The slide stops at the first thing below that can be stood on (a ball rolling up over a
-    /// ledge's edge stays on the edge, not carried down its slope to the floor below), and goes
-    /// on past what is too steep and around an edge it walks off. An edge or vertex it meets is
-    /// one the ball walks off (behind it: its normal leans along the level part of `heading`,
-    /// the ball's velocity or the walk's displacement) or over (ahead of it, the heading
-    /// crossing it at more than about 15°, or right under it): it is snapped to only if, clear
-    /// of it (a radius and a skin past the touched point, level: away from it, or across it),
-    /// a cast finds something to stand on, a radius deeper than the snap for one walked off
-    /// level or down (a step down; a crest, beyond which a slope at the limit lies up to
-    /// `0.59 r` lower), no deeper than the snap for one walked over or off moving up (the
-    /// landing at a ramp's top, a ledge's top, a step down within the snap). Over a deeper
-    /// drop (a cliff, a trench, the lip of a ramp) the snap is the ground probe, so the ball
-    /// falls or flies at any speed as it would without the snap. An edge walked along, or met
-    /// with no heading, is snapped to as a face is. Rolling around an edge uses up some of the reach: choose `depth` a quarter more
-    /// than the highest step down, and at least the drop of a walk down the steepest walkable
-    /// slope in a frame (`speed dt tan(slope)`). Do not snap a ball that was not on the ground
-    /// (a jump, a fall).
+    /// ledge's edge stays on the edge, not carried down its slope to the floor below; one rolling
+    /// off a step's edge stays on it until the edge's slope passes the limit, not carried around it
+    /// by the rest of the reach), and goes on past what is too steep (around the edge of a step,
+    /// beyond that). An edge or vertex it meets is one the ball walks off (behind it: its normal
+    /// leans along the level part of `heading`, the ball's velocity or the walk's displacement) or
+    /// over (ahead of it, the heading crossing it at more than about 15°, or right under it): it is
+    /// snapped to only if, clear of it (a radius and a skin past the touched point, level: away
+    /// from it, or across it), a cast finds something to stand on, a radius deeper than the snap
+    /// for one walked off level or down (a step down; a crest, beyond which a slope at the limit
+    /// lies up to `0.59 r` lower), no deeper than the snap for one walked over or off moving up
+    /// (the landing at a ramp's top, a ledge's top, a step down within the snap). Over a deeper
+    /// drop (a cliff, a trench, the lip of a ramp) the snap is the ground probe, so the ball falls
+    /// or flies at any speed as it would without the snap. An edge walked along, or met with no
+    /// heading, is snapped to as a face is. Rolling around an edge uses up some of the reach:
+    /// choose `depth` a quarter more than the highest step down, and at least the drop of a walk
+    /// down the steepest walkable slope in a frame (`speed dt tan(slope)`). Do not snap a ball that
+    /// was not on the ground (a jump, a fall).
     ///
     /// Walking at 2 units/s down steps of 0.2, a ball of r 0.5 snapping 0.25 was grounded on
     /// every frame, against 136 of 180 with the probe alone; up a 20° ramp, over its top and up
@@ -296,7 +296,6 @@ impl<S: Scalar> Slider<S> {
         let stop = FloorStop {
             up: up_unit,
             min_cos: cos,
-            heading: level(heading),
         };
         let probe = run(
             self,
