@@ -17,7 +17,8 @@ use crate::{Error, Geometry, Input, Scalar, Vec3, check};
 /// ([`Slider::step_slide`], Quake's `PM_StepSlideMove`); in the air, gravity adds to its
 /// velocity and it moves by that (the wish steers in the air only with
 /// [`with_air_control`](Self::with_air_control)). Its velocity then keeps what the contacts allow
-/// ([`Slider::clip`]). Where no move touched a floor it probes two skins down
+/// ([`Slider::clip`]), and off the floor after a walk it rises no faster than the walk
+/// rose. Where no move touched a floor it probes two skins down
 /// ([`Slider::probe_floor`]), and a walk that began on the floor and left it (down a step,
 /// over a crest, up a ramp's top) is snapped down onto the floor within its snap depth
 /// ([`Slider::snap_to_floor`]; Source's `StayOnGround`, Godot's floor snap), while off a
@@ -258,6 +259,8 @@ impl<S: Scalar> Character<S> {
         }
         // Worked on a copy, kept only when every slide succeeded.
         let mut me = *self;
+        // Where the walk began (after the press): what a walker leaving the floor rose since.
+        let mut start = me.position;
         let (ball, up, min_cos) = (me.ball, me.up, me.min_cos);
         let walked = me.floor.is_some();
         let out = match me.floor.map(|f| f.normal) {
@@ -293,6 +296,7 @@ impl<S: Scalar> Character<S> {
                 };
                 let on = (up, min_cos);
                 let from = pressed.as_ref().map_or(me.position, |p| p.position);
+                start = from;
                 let out = ball.walk(level, from, walk, Some(n), on, me.step)?;
                 let floor = out.ground_floor(up, min_cos)?;
                 let held = match &pressed {
@@ -326,6 +330,22 @@ impl<S: Scalar> Character<S> {
             let found = ball.snap_to_floor(level, me.position, me.velocity, up, min_cos, depth)?;
             if let Some(f) = found.filter(|f| walked || me.velocity.dot(f.normal) <= S::ZERO) {
                 (me.floor, me.position) = (Some(f), f.position);
+            }
+        }
+        // A walker that left the floor flies on with its walk's velocity (off a ramp's lip), but
+        // rises no faster than its walk rose: held in a pocket of steep faces, its walk's
+        // velocity along the floor's plane, clipped by the face it pressed into, ran up their
+        // crease, and launched the ball once rounding lost it the floor (`I16F16` at 960 Hz).
+        if walked && me.floor.is_none() {
+            let up = me.unit_up();
+            let (rising, rose) = (S::dot(me.velocity, up), S::dot(me.position - start, up));
+            if rising.mul(dt) > rose {
+                let most = if rose > S::ZERO {
+                    rose.div(dt)
+                } else {
+                    S::ZERO
+                };
+                me.velocity -= up.scale(rising - most);
             }
         }
         *self = me;
