@@ -283,8 +283,10 @@ impl<S: Scalar> Slider<S> {
                 } else {
                     reach
                 };
+                // Met at once there, the ground rises at least as high as the ball just past the
+                // edge (the next step of a flight too narrow for the ball): no drop.
                 let below = down(ahead, look);
-                if !below.is_some_and(|h| S::dot(h.normal, up_unit) >= cos) {
+                if !below.is_some_and(|h| h.alpha == S::ZERO || S::dot(h.normal, up_unit) >= cos) {
                     return self.snap_to_floor(scene, position, heading, up, min_cos, S::ZERO);
                 }
             }
