@@ -165,7 +165,7 @@ pub(super) struct Walk<S> {
     pub stands: S,
     /// The cosine of the steepest slope the walk climbs by itself.
     pub climbs: S,
-    /// The step's height, two skins and the walk's own rise.
+    /// The step's height and two skins.
     pub reach: S,
 }
 

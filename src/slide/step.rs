@@ -169,7 +169,10 @@ impl<S: Scalar> Slider<S> {
         let own = self.max_slope.map_or(S::ZERO, |(_, c)| c);
         let own = if own > S::ZERO { own } else { S::ZERO };
         let climbs = if own < cos { own } else { cos };
-        // A walk up a ramp carries the lifted ball its own rise higher still.
+        // A walk up a ramp carries the lifted ball its own rise higher still. (Not so the move
+        // as it is: with that rise in its reach, a walk of 0.13 a frame up a 40° slope, at 30
+        // Hz, took the upright wall at its top for a ledge to step over, climbed it by the
+        // rise, and was launched off it.)
         let rising = S::dot(displacement, up_unit);
         let rising = if rising > S::ZERO { rising } else { S::ZERO };
         let walk = floor.map(|floor| {
@@ -179,7 +182,7 @@ impl<S: Scalar> Slider<S> {
                 up: up_unit,
                 stands: cos,
                 climbs,
-                reach: height + skin + skin + rising,
+                reach: height + skin + skin,
             }
         });
         let plain = run(self, scene, position, displacement, None, walk)?;
