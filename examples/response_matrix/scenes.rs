@@ -144,7 +144,12 @@ pub fn cases() -> Vec<Case> {
             });
         }
     }
-    for (h, tread, riser) in [(0.2, 0.6, 90.0), (0.25, 0.5, 70.0), (0.15, 0.3, 60.0)] {
+    for (h, tread, riser) in [
+        (0.2, 0.6, 90.0),
+        (0.25, 0.5, 70.0),
+        (0.15, 0.3, 60.0),
+        (0.18, 0.28, 90.0),
+    ] {
         for down in [false, true] {
             let mut t = Vec::new();
             let run = h / tan(riser);
