@@ -198,16 +198,17 @@ impl<S: Scalar> Slider<S> {
     /// leans along the level part of `heading`, the ball's velocity or the walk's displacement) or
     /// over (ahead of it, the heading crossing it at more than about 15°, or right under it): it is
     /// snapped to only if, clear of it (a radius and a skin past the touched point, level: away
-    /// from it, or across it), a cast finds something to stand on, a radius deeper than the snap
-    /// for one walked off level or down (a step down; a crest, beyond which a slope at the limit
-    /// lies up to `0.59 r` lower), no deeper than the snap for one walked over or off moving up
-    /// (the landing at a ramp's top, a ledge's top, a step down within the snap). Over a deeper
-    /// drop (a cliff, a trench, the lip of a ramp) the snap is the ground probe, so the ball falls
-    /// or flies at any speed as it would without the snap. An edge walked along, or met with no
-    /// heading, is snapped to as a face is. Rolling around an edge uses up some of the reach:
-    /// choose `depth` a quarter more than the highest step down, and at least the drop of a walk
-    /// down the steepest walkable slope in a frame (`speed dt tan(slope)`). Do not snap a ball that
-    /// was not on the ground (a jump, a fall).
+    /// from it, or across it), a cast finds something to stand on (or ground at once: the next step
+    /// of a flight narrower than the ball), a radius deeper than the snap for one walked off level
+    /// or down (a step down; a crest, beyond which a slope at the limit lies up to `0.59 r` lower),
+    /// no deeper than the snap for one walked over or off moving up (the landing at a ramp's top, a
+    /// ledge's top, a step down within the snap). Over a deeper drop (a cliff, a trench, the lip of
+    /// a ramp) the snap is the ground probe, so the ball falls or flies at any speed as it would
+    /// without the snap. An edge walked along, or met with no heading, is snapped to as a face is.
+    /// Rolling around an edge uses up some of the reach: choose `depth` a quarter more than the
+    /// highest step down, and at least the drop of a walk down the steepest walkable slope in a
+    /// frame (`speed dt tan(slope)`). Do not snap a ball that was not on the ground (a jump, a
+    /// fall).
     ///
     /// Walking at 2 units/s down steps of 0.2, a ball of r 0.5 snapping 0.25 was grounded on
     /// every frame, against 136 of 180 with the probe alone; up a 20° ramp, over its top and up
