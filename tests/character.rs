@@ -4,7 +4,7 @@
 
 mod common;
 
-use ballcast::{Error, Scalar, Scene, Triangle, Vec3, move_and_slide, slide::Slider};
+use ballcast::{Error, Scalar, Scene, Triangle, Vec3, move_and_slide, slide, slide::Slider};
 use common::{Tolerance, back, v};
 use fixed::types::{I16F16, I32F32};
 
@@ -97,6 +97,57 @@ fn grounded_only_on_walkable_slopes<S: Tolerance>() {
             "{}: {deg}°",
             S::NAME
         );
+    }
+}
+
+/// A slope of exactly the default limit, 45° (rising 1 in 1 along x, tiles of 1), as laid out
+/// and turned 30° about up: a ball stands on it without sliding (less than 1e-3 in 3 s) and
+/// walks up it at 4 units/s grounded on every frame, making at least 3.6 of the 4 the walk along
+/// the slope gives in 2 s. A 45° normal came out a unit in the last place below the limit's
+/// cosine or above it, tile by tile, so the ball was grounded on some and held back as by a wall
+/// on others: in `f64` it slid back down instead of walking up, and slid 1.3 standing.
+fn a_slope_at_the_limit_is_walkable<S: Tolerance>() {
+    for turn in [0.0f64, 30.0] {
+        let (sin, cos) = turn.to_radians().sin_cos();
+        let at = |x: f64, z: f64| v::<S>([cos * x - sin * z, x, sin * x + cos * z]);
+        let mut level: Scene<S, 128> = Scene::new();
+        for i in -4..4 {
+            for k in -4..4 {
+                let (x, z) = (i as f64, k as f64);
+                let (a, b, c, d) = (
+                    at(x, z),
+                    at(x, z + 1.0),
+                    at(x + 1.0, z + 1.0),
+                    at(x + 1.0, z),
+                );
+                level.push(Triangle::new(a, b, c)).unwrap();
+                level.push(Triangle::new(a, c, d)).unwrap();
+            }
+        }
+        let (r, dt) = (S::from_f64(0.5), S::from_f64(1.0 / 60.0));
+        let gravity = v::<S>([0.0, -9.81, 0.0]);
+        let start = at(-2.0, 0.0) + v::<S>([0.0, 0.5 * 2f64.sqrt() + 0.01, 0.0]);
+        let (across, along) = (Vec3::ZERO, v::<S>([4.0 * cos, 0.0, 4.0 * sin]));
+        for (wish, frames) in [(across, 180), (along, 120)] {
+            let mut me = slide::Character::new(start, r).unwrap();
+            for _ in 0..10 {
+                me.update(&level, Vec3::ZERO, gravity, dt).unwrap();
+            }
+            let from = back(me.position);
+            for frame in 0..frames {
+                me.update(&level, wish, gravity, dt).unwrap();
+                let what = format!("{} turned {turn}°, frame {frame}", S::NAME);
+                assert!(me.is_grounded(), "{what}: in the air at {:?}", me.position);
+            }
+            let [x, _, z] = back(me.position);
+            let made = (x - from[0]) * cos + (z - from[2]) * sin;
+            let what = format!("{} turned {turn}°, wishing {wish:?}", S::NAME);
+            if wish == Vec3::ZERO {
+                assert!(made.abs() < 1e-3, "{what}: slid {made}");
+            } else {
+                assert!(made > 3.6, "{what}: made {made}");
+            }
+        }
     }
 }
 
@@ -353,6 +404,10 @@ macro_rules! per_scalar {
         #[test]
         fn grounded_on_walkable_slopes() {
             grounded_only_on_walkable_slopes::<$t>();
+        }
+        #[test]
+        fn a_slope_at_the_limit() {
+            a_slope_at_the_limit_is_walkable::<$t>();
         }
         #[test]
         fn own_skin() {

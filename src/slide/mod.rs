@@ -128,7 +128,9 @@ impl<S: Scalar> Slide<S> {
 
     /// The last contact that counts as floor: one whose normal lies within a slope limit of
     /// the direction `up` (of any length: it is normalised here), i.e. `normal · up >= min_cos`
-    /// with `min_cos` the cosine of the steepest walkable slope (`FRAC_1_SQRT_2` for 45°). The
+    /// with `min_cos` the cosine of the steepest walkable slope (`FRAC_1_SQRT_2` for 45°), less
+    /// the rounding of unit normals (eight steps of the scalar), so that a face exactly at the
+    /// limit counts. The
     /// character controllers of engines call a ball with such a contact *grounded* (Unity's
     /// `isGrounded`, Godot's `is_on_floor`).
     ///
@@ -210,12 +212,17 @@ impl<S: Scalar> Slide<S> {
 }
 
 /// A slope limit checked: `up` (components within `±LIMIT`, not zero in the scalar) as a unit
-/// vector, and `min_cos` within `[-1, 1]`.
+/// vector, and `min_cos` within `[-1, 1]`, lowered by the rounding of a product of unit normals
+/// (eight steps, as [`constrain`](rules::constrain) allows): a face exactly at the limit counts
+/// as within it. (A 45° face's normal came out a unit in the last place either side of
+/// `FRAC_1_SQRT_2`, tile by tile, and a ball walking up a 45° slope was held back on some tiles
+/// as by a wall: in `f64` it slid back down.)
 fn slope_limit<S: Scalar>(up: Vec3<S>, min_cos: S) -> Result<(Vec3<S>, S), Error> {
     let up = check::point(up, S::LIMIT, Input::Up)?;
     let min_cos = check::within(min_cos, -S::ONE, S::ONE, Input::MaxSlope)?;
     let zero = Error::ZeroVector { input: Input::Up };
-    Ok((unit(up).ok_or(zero)?, min_cos))
+    let tie = crate::scalar::tie::<S>();
+    Ok((unit(up).ok_or(zero)?, min_cos - (tie + tie)))
 }
 
 /// The gap kept between a ball of `radius` and what it touched, for centres within `±extent`:
