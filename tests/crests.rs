@@ -222,6 +222,97 @@ fn walking_up_a_narrow_flight_stays_grounded<S: Tolerance>() {
     }
 }
 
+/// Running up that flight at 10 units/s at 30 Hz and 20 units/s at 30 and 60 Hz (a frame's walk
+/// longer than a tread): the ball climbs it, 2 units up in 1 s. The step lifted the ball and
+/// carried it across by the whole walk, into the second riser; lowered from there it came down
+/// on the first step's nosing too steep to stand on, so the step was dropped, and the walk
+/// stopped at the first riser, every frame: the ball stood at the foot of the stairs for good,
+/// in every scalar.
+fn running_up_a_narrow_flight_climbs_it<S: Tolerance>() {
+    let level = flight::<S>();
+    for (speed, hz) in [(10.0, 30.0), (20.0, 30.0), (20.0, 60.0)] {
+        let gait = Gait {
+            r: 0.4,
+            hz,
+            step: 0.2,
+            snap: 0.2,
+        };
+        let end = walk(
+            &level,
+            [-1.0, 0.41, 0.0],
+            [speed, 0.0, 0.0],
+            gait,
+            hz as usize,
+            |_, _| (),
+        );
+        let [x, y, _] = back(end);
+        assert!(
+            y > 2.4,
+            "{} {speed} units/s at {hz} Hz: at x {x}, y {y} after 1 s",
+            S::NAME
+        );
+    }
+}
+
+/// A floor at y = 0 up to x = 0, a riser `d` high there facing -x, and a floor at y = `d` out
+/// to x = 30; 10 wide in z.
+fn small_step<S: Scalar>(d: f64) -> Scene<S, 6> {
+    let (z, across) = ([0.0, 0.0, 10.0], -5.0);
+    let mut s = Scene::new();
+    for [o, a, b] in [
+        [[-10.0, 0.0, across], z, [10.0, 0.0, 0.0]],
+        [[0.0, 0.0, across], z, [0.0, d, 0.0]],
+        [[0.0, d, across], z, [30.0, 0.0, 0.0]],
+    ] {
+        for t in quad(o, a, b) {
+            s.push(Triangle::new(v(t[0]), v(t[1]), v(t[2]))).unwrap();
+        }
+    }
+    s
+}
+
+/// Running over small steps (3 to 10 cm, r 0.4) at 12 to 24 units/s, 30 and 60 Hz, where a
+/// frame's walk is about the radius: the ball stays within 0.2 of the floor it is on (or of the
+/// step's top, over the edge). The walk met the step's edge part-way, took its rounded top
+/// (within the slope limit) for the floor, and went on up along its tilted plane; the next
+/// frame's walk along that plane rose 0.2 more, out of the snap's reach, and the ball flew off
+/// with that rise, 1.8 to 7.1 units high, in every scalar. The snap now reaches down by what
+/// the walk rose too. (The first frame's walk along the edge's plane still lifts the ball up to
+/// 0.16 over the step at 16 units/s and 30 Hz.)
+fn running_over_small_steps_stays_on_the_floor<S: Tolerance>() {
+    for d in [0.03, 0.05, 0.1] {
+        let level = small_step::<S>(d);
+        for (speed, hz) in [(12.0, 30.0), (16.0, 30.0), (20.0, 30.0), (24.0, 60.0)] {
+            let gait = Gait {
+                r: 0.4,
+                hz,
+                step: 0.2,
+                snap: 0.2,
+            };
+            let mut high = 0.0f64;
+            let frames = (1.2 * hz) as usize;
+            walk(
+                &level,
+                [-4.0, 0.401, 0.0],
+                [speed, 0.0, 0.0],
+                gait,
+                frames,
+                |p, _| {
+                    let [x, y, _] = back(p);
+                    // Past the riser, or on its edge.
+                    let floor = if x > -0.4 { d } else { 0.0 };
+                    high = high.max(y - 0.4 - floor);
+                },
+            );
+            assert!(
+                high < 0.2,
+                "{} step {d} at {speed} units/s, {hz} Hz: up to {high} above the floor",
+                S::NAME
+            );
+        }
+    }
+}
+
 /// A 30° or 20° ramp 40 wide rising to a lip at x = 3, beyond it a drop of 0.5 (deeper than
 /// the snap, though within a radius more) or 3: walked at 8 units/s head-on (at 60 and 240 Hz)
 /// and at 45° to the lip (60 Hz), the ball flies off the lip, at least 0.1 above it, as it
@@ -275,6 +366,14 @@ macro_rules! per_scalar {
         #[test]
         fn walking_up_a_narrow_flight_stays_grounded() {
             super::walking_up_a_narrow_flight_stays_grounded::<$t>();
+        }
+        #[test]
+        fn running_up_a_narrow_flight_climbs_it() {
+            super::running_up_a_narrow_flight_climbs_it::<$t>();
+        }
+        #[test]
+        fn running_over_small_steps_stays_on_the_floor() {
+            super::running_over_small_steps_stays_on_the_floor::<$t>();
         }
         #[test]
         fn off_a_ramps_lip_over_a_drop_the_ball_flies() {

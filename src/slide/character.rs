@@ -20,11 +20,11 @@ use crate::{Error, Geometry, Input, Scalar, Vec3, check};
 /// ([`Slider::clip`]), and off the floor after a walk it rises no faster than the walk
 /// rose. Where no move touched a floor it probes two skins down
 /// ([`Slider::probe_floor`]), and a walk that began on the floor and left it (down a step,
-/// over a crest, up a ramp's top) is snapped down onto the floor within its snap depth
-/// ([`Slider::snap_to_floor`]; Source's `StayOnGround`, Godot's floor snap), while off a
-/// cliff or a ramp's lip over a deeper drop it falls or flies. Slopes steeper than the slope
-/// limit hold it back as walls ([`Slider::with_max_slope`]). It has no friction and no
-/// inertia on the floor: it walks at the wished speed at once.
+/// over a crest, up a ramp's top) is snapped down onto the floor within its snap depth and
+/// what the walk rose ([`Slider::snap_to_floor`]; Source's `StayOnGround`, Godot's floor
+/// snap), while off a cliff or a ramp's lip over a deeper drop it falls or flies. Slopes
+/// steeper than the slope limit hold it back as walls ([`Slider::with_max_slope`]). It has no
+/// friction and no inertia on the floor: it walks at the wished speed at once.
 ///
 /// Defaults: `up` along +y, slopes up to 45° walkable, a step height and a snap depth of half
 /// the radius each, the default [`skin`](super::skin). The fields are the state a game keeps:
@@ -323,10 +323,17 @@ impl<S: Scalar> Character<S> {
         me.position = out.position;
         me.velocity = ball.clip(&out, me.velocity)?;
         // The probe reaches two skins down; a walk that began on the floor and left it reaches
-        // the snap's depth further. A ball that was in the air is not put on a floor it moves
-        // away from (a jump's first frames).
+        // the snap's depth further, and what the walk itself rose: over a small step's edge, a
+        // fast walk (about a radius a frame) took the edge's rounded top for its floor and went
+        // on up its tilted plane, out of the snap's reach, and flew off metres high. A ball
+        // that was in the air is not put on a floor it moves away from (a jump's first frames).
         if me.floor.is_none() {
-            let depth = if walked { me.snap } else { S::ZERO };
+            let rose = S::dot(me.position - start, me.unit_up());
+            let depth = match (walked, rose > S::ZERO) {
+                (true, true) => me.snap + rose,
+                (true, false) => me.snap,
+                _ => S::ZERO,
+            };
             let found = ball.snap_to_floor(level, me.position, me.velocity, up, min_cos, depth)?;
             if let Some(f) = found.filter(|f| walked || me.velocity.dot(f.normal) <= S::ZERO) {
                 (me.floor, me.position) = (Some(f), f.position);

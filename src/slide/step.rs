@@ -222,7 +222,7 @@ impl<S: Scalar> Slider<S> {
             // Lifted by the walk's own rise too, which the contacts it may step over allow
             // for: the move across, blocked at the edge, would not rise by it.
             let lift = height + rising;
-            let stepped = self.stepped(scene, start, displacement, into, (up_unit, cos), lift);
+            let step = |walk| self.stepped(scene, start, walk, into, (up_unit, cos), lift);
             // Past where the walk stopped, across what stopped it (not merely higher: a wall
             // beside an up-slope), and farther along the walk (measured along its unit
             // direction: fixed-point products of two short vectors round to zero).
@@ -232,7 +232,17 @@ impl<S: Scalar> Slider<S> {
                     .is_none_or(|(_, w)| S::dot(level(ahead), w.map(S::unit_to_scalar)) > S::ZERO);
                 S::dot(ahead, into) > skin + skin && along
             };
-            if let Some(out) = stepped.filter(past) {
+            // A walk that goes farther into the riser than a step must carry the ball, dropped,
+            // is tried once more carried only that far (no walk of its own): running up stairs
+            // narrower than a frame's walk, the move across ran into the second riser, and
+            // lowered from there the ball came down on the first step's nosing, too steep to
+            // stand on; dropped every frame, the step held the ball at the foot of the stairs.
+            let carry = landing(self.radius, lift, cos) + skin + skin;
+            let least = || (S::dot(displacement, into) > carry).then(|| step(Vec3::ZERO));
+            if let Some(out) = step(displacement)
+                .filter(past)
+                .or_else(|| least().flatten().filter(past))
+            {
                 return Ok(Slide {
                     pushed_out: plain.pushed_out,
                     ..out
