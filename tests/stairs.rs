@@ -280,7 +280,6 @@ fn the_snap_finds_what_the_probe_finds<S: Tolerance>() {
     );
 }
 
-/// Bad snap depths are errors, and a zero one is the ground probe.
 /// Walking at 2 units/s down six steps of 0.2 with `Character` (a snap of 0.25) at 60 to 960
 /// Hz: never faster than wished, and as fast at 960 Hz as at 240 within 1 % (5.63 of the 6
 /// units in 3 s at 60 Hz, 5.76 to 5.78 above, in every scalar: rolling over each step's edge,
@@ -308,6 +307,7 @@ fn walking_down_stairs_keeps_the_wished_pace<S: Tolerance>() {
     );
 }
 
+/// Bad snap depths are errors, and a zero one is the ground probe.
 fn bad_snaps_are_errors<S: Tolerance>() {
     let level = stairs::<S>(1, 0.2);
     let (up, walkable) = (v::<S>([0.0, 1.0, 0.0]), S::from_f64(0.5f64.sqrt()));

@@ -328,11 +328,15 @@ impl<S: Scalar> Character<S> {
         // on up its tilted plane, out of the snap's reach, and flew off metres high. A ball
         // that was in the air is not put on a floor it moves away from (a jump's first frames).
         if me.floor.is_none() {
+            // (A snap of zero stays the ground probe alone.)
             let rose = S::dot(me.position - start, me.unit_up());
-            let depth = match (walked, rose > S::ZERO) {
-                (true, true) => me.snap + rose,
-                (true, false) => me.snap,
-                _ => S::ZERO,
+            let depth = if !walked {
+                S::ZERO
+            } else if me.snap > S::ZERO && rose > S::ZERO {
+                let sum = me.snap + rose;
+                if sum > S::LIMIT { S::LIMIT } else { sum }
+            } else {
+                me.snap
             };
             let found = ball.snap_to_floor(level, me.position, me.velocity, up, min_cos, depth)?;
             if let Some(f) = found.filter(|f| walked || me.velocity.dot(f.normal) <= S::ZERO) {

@@ -2,7 +2,7 @@
 
 use super::rules::{FloorStop, magnitude};
 use super::{Floor, Slide, run, skin, slope_limit};
-use crate::{Contact, Error, Geometry, Input, Scalar, Sweep, Vec3, check};
+use crate::{Contact, Error, Geometry, Input, Scalar, SceneHit, Sweep, Vec3, check};
 
 /// A ball's settings for [`Slider::slide`]: its radius and, optionally, its own skin and a
 /// slope limit beyond which slopes hold it back like walls.
@@ -198,17 +198,17 @@ impl<S: Scalar> Slider<S> {
     /// leans along the level part of `heading`, the ball's velocity or the walk's displacement) or
     /// over (ahead of it, the heading crossing it at more than about 15°, or right under it): it is
     /// snapped to only if, clear of it (a radius and a skin past the touched point, level: away
-    /// from it, or across it), a cast finds something to stand on (or ground at once: the next step
-    /// of a flight narrower than the ball), a radius deeper than the snap for one walked off level
-    /// or down (a step down; a crest, beyond which a slope at the limit lies up to `0.59 r` lower),
-    /// no deeper than the snap for one walked over or off moving up (the landing at a ramp's top, a
-    /// ledge's top, a step down within the snap). Over a deeper drop (a cliff, a trench, the lip of
-    /// a ramp) the snap is the ground probe, so the ball falls or flies at any speed as it would
-    /// without the snap. An edge walked along, or met with no heading, is snapped to as a face is.
-    /// Rolling around an edge uses up some of the reach: choose `depth` a quarter more than the
-    /// highest step down, and at least the drop of a walk down the steepest walkable slope in a
-    /// frame (`speed dt tan(slope)`). Do not snap a ball that was not on the ground (a jump, a
-    /// fall).
+    /// from it, or across it), a cast finds something to stand on (or ground at once below the
+    /// centre: the next step of a flight narrower than the ball), a radius deeper than the snap for
+    /// one walked off level or down (a step down; a crest, beyond which a slope at the limit lies
+    /// up to `0.59 r` lower), no deeper than the snap for one walked over or off moving up (the
+    /// landing at a ramp's top, a ledge's top, a step down within the snap). Over a deeper drop (a
+    /// cliff, a trench, the lip of a ramp) the snap is the ground probe, so the ball falls or flies
+    /// at any speed as it would without the snap. An edge walked along, or met with no heading, is
+    /// snapped to as a face is. Rolling around an edge uses up some of the reach: choose `depth` a
+    /// quarter more than the highest step down, and at least the drop of a walk down the steepest
+    /// walkable slope in a frame (`speed dt tan(slope)`). Do not snap a ball that was not on the
+    /// ground (a jump, a fall).
     ///
     /// Walking at 2 units/s down steps of 0.2, a ball of r 0.5 snapping 0.25 was grounded on
     /// every frame, against 136 of 180 with the probe alone; up a 20° ramp, over its top and up
@@ -284,10 +284,15 @@ impl<S: Scalar> Slider<S> {
                 } else {
                     reach
                 };
-                // Met at once there, the ground rises at least as high as the ball just past the
-                // edge (the next step of a flight too narrow for the ball): no drop.
+                // Met at once there by something below the centre, the ground rises at least as
+                // high as the ball just past the edge (the next step of a flight too narrow for
+                // the ball): no drop. (A side wall met at once is no ground: beside a cliff.)
                 let below = down(ahead, look);
-                if !below.is_some_and(|h| h.alpha == S::ZERO || S::dot(h.normal, up_unit) >= cos) {
+                let ground = |h: SceneHit<S>| {
+                    let slope = S::dot(h.normal, up_unit);
+                    slope >= cos || (h.alpha == S::ZERO && slope > S::ZERO)
+                };
+                if !below.is_some_and(ground) {
                     return self.snap_to_floor(scene, position, heading, up, min_cos, S::ZERO);
                 }
             }
