@@ -314,14 +314,16 @@ fn running_over_small_steps_stays_on_the_floor<S: Tolerance>() {
 }
 
 /// A 30° or 20° ramp 40 wide rising to a lip at x = 3, beyond it a drop of 0.5 (deeper than
-/// the snap, though within a radius more) or 3: walked at 8 units/s head-on (at 60 and 240 Hz)
+/// the snap, though within a radius more), 3, or 0.28 (deeper than the snap by less than a
+/// frame's rise along the ramp, which the snap once added to its depth as for an edge's rounded
+/// top, not only at 60 Hz): walked at 8 units/s head-on (at 60 and 240 Hz)
 /// and at 45° to the lip (60 Hz), the ball flies off the lip, at least 0.1 above it, as it
 /// would without the snap, bit for bit, until it lands. Looking past the lip along the heading (a radius and a skin, of which
 /// only the part across the lip gets past it at an angle) and a radius deeper than the snap,
 /// the snap once found floor there and held the ball onto the lip: it dropped off it instead
 /// of flying 4 units.
 fn off_a_ramps_lip_over_a_drop_the_ball_flies<S: Tolerance>() {
-    for (degrees, drop) in [(30.0f64, 0.5), (20.0, 0.5), (30.0, 3.0)] {
+    for (degrees, drop) in [(30.0f64, 0.5), (20.0, 0.5), (30.0, 3.0), (30.0, 0.28)] {
         let (z, across) = ([0.0, 0.0, 40.0], -20.0);
         let rise = 3.0 * degrees.to_radians().tan();
         let mut level = Scene::<S, 16>::new();
@@ -341,6 +343,11 @@ fn off_a_ramps_lip_over_a_drop_the_ball_flies<S: Tolerance>() {
                 .unwrap();
         }
         for (heading, hz) in [(0.0f64, 60.0), (0.0, 240.0), (45.0, 60.0)] {
+            // At 240 Hz the ball leaves the lip's rounded edge with its bottom 0.24 over the
+            // floor below a drop of 0.28: within the snap, which takes it there.
+            if drop < 0.3 && hz > 60.0 {
+                continue;
+            }
             let (sin, cos) = heading.to_radians().sin_cos();
             let wish = [8.0 * cos, 0.0, 8.0 * sin];
             let frames = (1.5 * hz) as usize;

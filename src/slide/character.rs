@@ -2,7 +2,7 @@
 
 use super::rules::magnitude;
 use super::{Floor, Slide, Slider, min_radius};
-use crate::{Error, Geometry, Input, Scalar, Vec3, check};
+use crate::{Contact, Error, Geometry, Input, Scalar, Vec3, check};
 
 /// A walking ball: the character loop of game engines, one [`update`](Self::update) a frame.
 ///
@@ -21,7 +21,8 @@ use crate::{Error, Geometry, Input, Scalar, Vec3, check};
 /// rose. Where no move touched a floor it probes two skins down
 /// ([`Slider::probe_floor`]), and a walk that began on the floor and left it (down a step,
 /// over a crest, up a ramp's top) is snapped down onto the floor within its snap depth and
-/// what the walk rose ([`Slider::snap_to_floor`]; Source's `StayOnGround`, Godot's floor
+/// what the walk rose beyond its floor's plane (over an edge's rounded top, all of its rise)
+/// ([`Slider::snap_to_floor`]; Source's `StayOnGround`, Godot's floor
 /// snap), while off a cliff or a ramp's lip over a deeper drop it falls or flies. Slopes
 /// steeper than the slope limit hold it back as walls ([`Slider::with_max_slope`]). It has no
 /// friction and no inertia on the floor: it walks at the wished speed at once.
@@ -151,6 +152,18 @@ impl<S: Scalar> Character<S> {
         Ok(Self { ball, ..self })
     }
 
+    /// How far the snap reaches down after a walk that left the floor and rose by `extra` more
+    /// than its floor's plane foretold: the snap's depth, and that rise where it is positive,
+    /// at most `LIMIT` (a snap of zero stays the ground probe alone).
+    fn snap_depth(&self, extra: S) -> S {
+        if self.snap > S::ZERO && extra > S::ZERO {
+            let sum = self.snap + extra;
+            if sum > S::LIMIT { S::LIMIT } else { sum }
+        } else {
+            self.snap
+        }
+    }
+
     /// `up` as a unit vector (validated nonzero when set).
     fn unit_up(&self) -> Vec3<S> {
         self.up.try_normalize().unwrap_or(Vec3::Y)
@@ -263,8 +276,11 @@ impl<S: Scalar> Character<S> {
         let mut start = me.position;
         let (ball, up, min_cos) = (me.ball, me.up, me.min_cos);
         let walked = me.floor.is_some();
-        let out = match me.floor.map(|f| f.normal) {
-            Some(n) => {
+        // What the walk would rise along its floor's plane (up a ramp: no reason to snap),
+        // where that is a face's, not the tangent of an edge it rounds.
+        let mut planned = S::ZERO;
+        let out = match me.floor.map(|f| (f.normal, f.contact)) {
+            Some((n, on)) => {
                 // Standing (the walk rounds to nothing), the press could only move the ball
                 // about its gap above the floor, where, rounded to a step straight down in fixed
                 // point, it walks the ball down the slope (`I16F16` at 960 Hz, or in a steep
@@ -280,6 +296,9 @@ impl<S: Scalar> Character<S> {
                 // against the rounding of its walk, which would lift it off the floor.)
                 me.velocity = wish.reject_from_normalized(n);
                 let walk = me.velocity * dt;
+                if on == Contact::Face {
+                    planned = S::dot(walk, me.unit_up());
+                }
                 let depth = gravity.length().mul(dt).mul(dt);
                 let extent = magnitude(me.position);
                 let pressed = if walk == Vec3::ZERO {
@@ -323,20 +342,19 @@ impl<S: Scalar> Character<S> {
         me.position = out.position;
         me.velocity = ball.clip(&out, me.velocity)?;
         // The probe reaches two skins down; a walk that began on the floor and left it reaches
-        // the snap's depth further, and what the walk itself rose: over a small step's edge, a
-        // fast walk (about a radius a frame) took the edge's rounded top for its floor and went
-        // on up its tilted plane, out of the snap's reach, and flew off metres high. A ball
-        // that was in the air is not put on a floor it moves away from (a jump's first frames).
+        // the snap's depth further, and what the walk rose beyond what its floor's plane
+        // foretold: over a small step's edge, a fast walk (about a radius a frame) took the
+        // edge's rounded top for its floor and went on up its tilted plane, out of the snap's
+        // reach, and flew off metres high; off a ramp's lip the rise was the ramp's, and the
+        // ball flies. A ball that was in the air is not put on a floor it moves away from (a
+        // jump's first frames).
         if me.floor.is_none() {
-            // (A snap of zero stays the ground probe alone.)
             let rose = S::dot(me.position - start, me.unit_up());
-            let depth = if !walked {
-                S::ZERO
-            } else if me.snap > S::ZERO && rose > S::ZERO {
-                let sum = me.snap + rose;
-                if sum > S::LIMIT { S::LIMIT } else { sum }
+            let unforeseen = rose - if planned > S::ZERO { planned } else { S::ZERO };
+            let depth = if walked {
+                me.snap_depth(unforeseen)
             } else {
-                me.snap
+                S::ZERO
             };
             let found = ball.snap_to_floor(level, me.position, me.velocity, up, min_cos, depth)?;
             if let Some(f) = found.filter(|f| walked || me.velocity.dot(f.normal) <= S::ZERO) {

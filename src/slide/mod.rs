@@ -28,7 +28,7 @@ mod slider;
 mod step;
 
 use crate::contact::unit;
-use crate::{Error, Geometry, Input, Scalar, SceneHit, Sweep, Vec3, check};
+use crate::{Contact, Error, Geometry, Input, Scalar, SceneHit, Sweep, Vec3, check};
 pub use character::Character;
 use heapless::Vec;
 use resolve::{resolve, settle};
@@ -74,6 +74,10 @@ pub struct Floor<S> {
     /// The index of the triangle whose contact gave the floor (in a valley, that of the later
     /// of its two slopes): what a game looks its surface up by (a footstep's sound).
     pub index: usize,
+    /// The feature of that triangle the contact was with: on [`Contact::Face`] the floor is
+    /// the triangle's plane; on an edge or vertex its normal is a tangent of the rounded
+    /// feature, which the ball leaves as soon as it walks on.
+    pub contact: Contact,
 }
 
 /// A contact met by [`move_and_slide`], with where and when it happened.
@@ -182,6 +186,7 @@ impl<S: Scalar> Slide<S> {
             normal,
             position: self.position,
             index: c.hit.index,
+            contact: c.hit.contact,
         }))
     }
 
