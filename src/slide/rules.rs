@@ -101,8 +101,18 @@ pub(super) fn stand_off<S: Scalar>(
         }
         let back = S::div(skin, -into);
         if back >= hit.alpha {
-            // Started within a skin: it cannot back off along its path, so it stays.
-            return (S::ZERO, zero);
+            // Started within a skin: it cannot back off along its path, so it stays. A float
+            // ball within a position's rounding of the plane, moving mostly along it, is lifted
+            // back to a skin off it: each end of a slide along the plane rounds to coordinates
+            // that may lie a little closer every time, until the plane meets the ball at once.
+            let gap = (-into).mul(hit.alpha);
+            let grazing = -into <= S::div_pow2(magnitude(rest), 1);
+            let lift = if S::PRECISION.relative && gap <= rounding && grazing {
+                skin - gap
+            } else {
+                S::ZERO
+            };
+            return (S::ZERO, hit.normal.scale(lift));
         }
         let alpha = hit.alpha - back;
         let settled = magnitude(rest).mul(alpha) <= rounding;
