@@ -348,8 +348,8 @@ impl<S: Scalar> Character<S> {
         // reach, and flew off metres high; off a ramp's lip the rise was the ramp's, and the
         // ball flies. A ball that was in the air is not put on a floor it moves away from (a
         // jump's first frames).
+        let rose = S::dot(me.position - start, me.unit_up());
         if me.floor.is_none() {
-            let rose = S::dot(me.position - start, me.unit_up());
             let unforeseen = rose - if planned > S::ZERO { planned } else { S::ZERO };
             let depth = if walked {
                 me.snap_depth(unforeseen)
@@ -366,20 +366,26 @@ impl<S: Scalar> Character<S> {
         // velocity along the floor's plane, clipped by the face it pressed into, ran up their
         // crease, and launched the ball once rounding lost it the floor (`I16F16` at 960 Hz).
         if walked && me.floor.is_none() {
-            let up = me.unit_up();
-            let (rising, rose) = (S::dot(me.velocity, up), S::dot(me.position - start, up));
-            if rising.mul(dt) > rose {
-                let most = if rose > S::ZERO {
-                    rose.div(dt)
-                } else {
-                    S::ZERO
-                };
-                me.velocity -= up.scale(rising - most);
-            }
+            me.velocity = rising_at_most(me.velocity, me.unit_up(), rose, dt);
         }
         *self = me;
         Ok(out)
     }
+}
+
+/// `velocity` rising along the unit `up` no faster than `rose` in `dt` (nor at all where that
+/// is not above zero).
+fn rising_at_most<S: Scalar>(velocity: Vec3<S>, up: Vec3<S>, rose: S, dt: S) -> Vec3<S> {
+    let rising = S::dot(velocity, up);
+    if rising.mul(dt) <= rose {
+        return velocity;
+    }
+    let most = if rose > S::ZERO {
+        rose.div(dt)
+    } else {
+        S::ZERO
+    };
+    velocity - up.scale(rising - most)
 }
 
 /// The longest time step whose moves fit in the range: `(|velocity| + |wish| + |gravity| dt) dt
