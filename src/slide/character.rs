@@ -23,7 +23,9 @@ use crate::{Contact, Error, Geometry, Input, Scalar, Vec3, check};
 /// over a crest, up a ramp's top) is snapped down onto the floor within its snap depth and
 /// what the walk rose beyond its floor's plane (over an edge's rounded top, all of its rise)
 /// ([`Slider::snap_to_floor`]; Source's `StayOnGround`, Godot's floor
-/// snap), while off a cliff or a ramp's lip over a deeper drop it falls or flies. Slopes
+/// snap), while off a cliff or a ramp's lip over a deeper drop it falls or flies (rolling
+/// round the drop's edge first only if it is slow enough for gravity to hold it there, `v² <=
+/// g r cos θ`, at any frame rate). Slopes
 /// steeper than the slope limit hold it back as walls ([`Slider::with_max_slope`]). It has no
 /// friction and no inertia on the floor: it walks at the wished speed at once.
 ///
@@ -162,6 +164,29 @@ impl<S: Scalar> Character<S> {
         } else {
             self.snap
         }
+    }
+
+    /// Whether the ball leaves `floor`, an edge or vertex, heading along `heading`: it moves off
+    /// it (the level parts of the contact's normal and of the heading within about 75°) faster
+    /// than gravity can hold its centre on the circle of radius r round the feature, `|v|² > |g|
+    /// r cos θ` (θ the normal's angle from `up`). Held by the probe two skins below instead, the
+    /// ball rolled round the edge of a drop whenever a frame's fall from the edge's tangent was
+    /// shorter than that: at 4 units/s at 960 Hz, not at 60 or 240, and it left the edge at the
+    /// slope limit with half its speed.
+    fn rolls_off(&self, floor: &Floor<S>, heading: Vec3<S>, gravity: Vec3<S>) -> bool {
+        let up = self.unit_up();
+        let level = |v: Vec3<S>| {
+            let l = v - up.scale(S::dot(v, up));
+            S::direction(l).map(|(_, u)| u.map(S::unit_to_scalar))
+        };
+        let off = match (floor.contact, level(floor.normal), level(heading)) {
+            (Contact::Face, ..) => false,
+            (_, Some(n), Some(h)) => S::dot(n, h) > S::div_pow2(S::ONE, 2),
+            _ => false,
+        };
+        let speed = self.velocity.length();
+        let hold = self.ball.radius().mul(S::dot(floor.normal, up));
+        off && S::mul_cmp(speed, speed, gravity.length(), hold).is_gt()
     }
 
     /// `up` as a unit vector (validated nonzero when set).
@@ -322,6 +347,8 @@ impl<S: Scalar> Character<S> {
                     Some(p) => p.ground_floor(up, min_cos)?,
                     None => None,
                 };
+                let moved = out.position - from;
+                let held = held.filter(|f| !me.rolls_off(f, moved, gravity));
                 me.floor = floor.or(held);
                 out
             }
@@ -356,8 +383,13 @@ impl<S: Scalar> Character<S> {
             } else {
                 S::ZERO
             };
-            let found = ball.snap_to_floor(level, me.position, me.velocity, up, min_cos, depth)?;
-            if let Some(f) = found.filter(|f| walked || me.velocity.dot(f.normal) <= S::ZERO) {
+            let (found, probe) =
+                ball.snap_or_probe(level, me.position, me.velocity, (up, min_cos), depth)?;
+            // Only the probe's edge can be rolled off: the snap holds a ball over a crest.
+            let on = |f: &Floor<S>| walked || me.velocity.dot(f.normal) <= S::ZERO;
+            let rolls = |f: &Floor<S>| probe && me.rolls_off(f, me.velocity, gravity);
+            let found = found.filter(|f| on(f) && !rolls(f));
+            if let Some(f) = found {
                 (me.floor, me.position) = (Some(f), f.position);
             }
         }

@@ -245,6 +245,25 @@ impl<S: Scalar> Slider<S> {
         min_cos: S,
         depth: S,
     ) -> Result<Option<Floor<S>>, Error> {
+        let snap = self.snap_or_probe(scene, position, heading, (up, min_cos), depth)?;
+        Ok(snap.0)
+    }
+
+    /// [`snap_to_floor`](Self::snap_to_floor), and whether what it found is the ground probe's
+    /// alone (a `depth` of zero, nothing within it, or a drop past an edge): no ground beyond
+    /// the ball's floor was found to hold it to.
+    pub(super) fn snap_or_probe<G: Geometry<S> + ?Sized>(
+        &self,
+        scene: &G,
+        position: Vec3<S>,
+        heading: Vec3<S>,
+        (up, min_cos): (Vec3<S>, S),
+        depth: S,
+    ) -> Result<(Option<Floor<S>>, bool), Error> {
+        let probe = |depth| {
+            let floor = self.snap_to_floor(scene, position, heading, up, min_cos, depth)?;
+            Ok((floor, true))
+        };
         let (up_unit, cos) = slope_limit(up, min_cos)?;
         let depth = check::within(depth, S::ZERO, S::LIMIT, Input::Snap)?;
         let heading = check::point(heading, S::LIMIT, Input::Heading)?;
@@ -262,7 +281,7 @@ impl<S: Scalar> Slider<S> {
             };
             // Nothing within reach (or a sweep refused near the range's edge): the probe.
             let Some(hit) = down(position, reach) else {
-                return self.snap_to_floor(scene, position, heading, up, min_cos, S::ZERO);
+                return probe(S::ZERO);
             };
             // An edge or vertex the ball walks off or over: a step down, a crest or a landing
             // if, clear of it (a radius and a skin past the touched point, level), a cast finds
@@ -293,7 +312,7 @@ impl<S: Scalar> Slider<S> {
                     slope >= cos || (h.alpha == S::ZERO && slope > S::ZERO)
                 };
                 if !below.is_some_and(ground) {
-                    return self.snap_to_floor(scene, position, heading, up, min_cos, S::ZERO);
+                    return probe(S::ZERO);
                 }
             }
             if S::dot(hit.normal, up_unit) >= cos {
@@ -305,7 +324,7 @@ impl<S: Scalar> Slider<S> {
             up: up_unit,
             min_cos: cos,
         };
-        let probe = run(
+        let slide = run(
             self,
             scene,
             position,
@@ -313,7 +332,7 @@ impl<S: Scalar> Slider<S> {
             Some(stop),
             None,
         )?;
-        probe.ground_floor(up, min_cos)
+        Ok((slide.ground_floor(up, min_cos)?, depth == S::ZERO))
     }
 
     /// [`Slide::clip`] of `velocity` by what `slide` (a move of this ball) touched, held back
