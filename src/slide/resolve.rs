@@ -3,7 +3,6 @@
 use super::MAX_SLIDES;
 use super::push::{around, push_out};
 use super::rules::{magnitude, stand_off};
-use crate::merge::same_plane;
 use crate::penetration::deepest;
 use crate::{Geometry, Scalar, SceneHit, Sweep, Vec3};
 
@@ -149,11 +148,11 @@ fn lift_from<S: Scalar, G: Geometry<S> + ?Sized>(
         let Some(next) = scene.cast(&sweep) else {
             return at + lift;
         };
-        // Slid along a plane and met by it (or a tile of it) again, which only rounding does: a lift of a few
+        // Slid along a plane and met by it again, which only rounding does: a lift of a few
         // steps of the coordinates' rounding (`f32` a thousand units out) rounds into it. Left
         // touching the first plane, the ball met it at once on every later move along the
         // corner (stuck in a ditch): lifted off both instead, a skin off the other.
-        if along.take().is_some_and(|a| same_plane(a, next.normal)) {
+        if along.take() == Some(next.normal) {
             match around(first, next.normal, (radius, skin)) {
                 Some(both) => {
                     lift = both;
@@ -179,8 +178,21 @@ fn lift_from<S: Scalar, G: Geometry<S> + ?Sized>(
                 _ => half,
             };
         }
-        if into >= S::ZERO || round > 0 {
+        if round > 0 {
             return at;
+        }
+        // Met at once by a plane it runs along or leaves, which only rounding does (the ball
+        // within a position's rounding of a floor and a wall square on it, `f32` a few hundred
+        // units out): lifted off both, a skin off the other; left touching both, the ball was
+        // met by the first at once on every later move (stuck for good against the wall).
+        if into >= S::ZERO {
+            match around(first, next.normal, (radius, skin)) {
+                Some(both) => {
+                    lift = both;
+                    continue;
+                }
+                None => return at,
+            }
         }
         (lift, along) = (slid, Some(next.normal));
     }
