@@ -289,7 +289,19 @@ fn progress<S: Scalar, const N: usize>(
     heading: [f64; 3],
     hz: usize,
 ) -> (f64, Vec3<S>) {
-    let (r, dt) = (S::from_f64(0.5), S::from_f64(1.0 / hz as f64));
+    progress_of(0.5, level, start, wish, heading, hz)
+}
+
+/// [`progress`] of a ball of radius `r`.
+fn progress_of<S: Scalar, const N: usize>(
+    r: f64,
+    level: &Scene<S, N>,
+    start: [f64; 3],
+    wish: [f64; 3],
+    heading: [f64; 3],
+    hz: usize,
+) -> (f64, Vec3<S>) {
+    let (r, dt) = (S::from_f64(r), S::from_f64(1.0 / hz as f64));
     let (gravity, wish) = (v::<S>([0.0, -9.81, 0.0]), v::<S>(wish));
     let mut me = Character::new(v::<S>(start), r).unwrap();
     let along = |me: &Character<S>| {
@@ -491,6 +503,44 @@ fn walks_along_an_upright_wall_up_a_slope_far_out<S: Tolerance>() {
     }
 }
 
+/// A V-ditch of 35° and 75° sides tiled in unit cells, 8 000 units out and turned 45°, walked
+/// along at 2 units/s and 0.2 into the steep side by a ball of r 0.3 at 240 Hz. In `f32` the
+/// lift off the steep side met the floor's plane, slid along it, and was met again by the
+/// floor's next triangle, whose normal rounds 2.5e-4 rad apart that far out: taken for another
+/// plane, the ball was left where it was and stuck for good (1.5 made in 3 s, where `f64` makes
+/// over 5.5). A lift met
+/// again by a plane within 1e-3 rad of the one it slid along leaves both. (`I16F16` vertices
+/// stay within ±4096: the scalars whose range reaches 8 000.)
+fn walks_along_a_tiled_ditch_eight_thousand_out<S: Tolerance>() {
+    let (sin, cos) = 45f64.to_radians().sin_cos();
+    let turn = |[x, y, z]: [f64; 3]| [cos * x - sin * z, y, sin * x + cos * z];
+    let far = |p: [f64; 3]| {
+        let [x, y, z] = turn(p);
+        [8000.3 + x, 7.1 + y, -8000.7 + z]
+    };
+    let y = |z: f64| {
+        if z < 0.0 {
+            -tan(35.0) * z
+        } else {
+            tan(75.0) * z
+        }
+    };
+    let p = |x: f64, z: f64| v::<S>(far([x, y(z), z]));
+    let mut level: Scene<S, 192> = Scene::new();
+    for i in 0..16 {
+        for k in 0..6 {
+            let (x, z) = (-8.0 + i as f64, -3.0 + k as f64);
+            let (a, b, c, d) = (p(x, z), p(x, z + 1.0), p(x + 1.0, z + 1.0), p(x + 1.0, z));
+            level.push(Triangle::new(a, b, c)).unwrap();
+            level.push(Triangle::new(a, c, d)).unwrap();
+        }
+    }
+    let start = far([-5.0, 0.3 / 75f64.to_radians().cos() + 0.1, 0.0]);
+    let heading = turn([1.0, 0.0, 0.0]);
+    let (made, at) = progress_of(0.3, &level, start, turn([2.0, 0.0, 0.2]), heading, 240);
+    assert!(made > 5.5, "{}: made {made} at {at:?}", S::NAME);
+}
+
 /// `tan` of an angle in degrees.
 fn tan(degrees: f64) -> f64 {
     degrees.to_radians().tan()
@@ -552,3 +602,18 @@ macro_rules! per_scalar {
 }
 
 per_scalar!(f64_: f64, f32_: f32, i32f32: I32F32, i16f16: I16F16);
+
+#[test]
+fn walks_along_a_tiled_ditch_eight_thousand_out_f64() {
+    walks_along_a_tiled_ditch_eight_thousand_out::<f64>();
+}
+
+#[test]
+fn walks_along_a_tiled_ditch_eight_thousand_out_f32() {
+    walks_along_a_tiled_ditch_eight_thousand_out::<f32>();
+}
+
+#[test]
+fn walks_along_a_tiled_ditch_eight_thousand_out_i32f32() {
+    walks_along_a_tiled_ditch_eight_thousand_out::<I32F32>();
+}

@@ -3,6 +3,7 @@
 use super::MAX_SLIDES;
 use super::push::{around, push_out};
 use super::rules::{magnitude, stand_off};
+use crate::merge::same_plane;
 use crate::penetration::deepest;
 use crate::{Geometry, Scalar, SceneHit, Sweep, Vec3};
 
@@ -148,11 +149,12 @@ fn lift_from<S: Scalar, G: Geometry<S> + ?Sized>(
         let Some(next) = scene.cast(&sweep) else {
             return at + lift;
         };
-        // Slid along a plane and met by it again, which only rounding does: a lift of a few
-        // steps of the coordinates' rounding (`f32` a thousand units out) rounds into it. Left
-        // touching the first plane, the ball met it at once on every later move along the
-        // corner (stuck in a ditch): lifted off both instead, a skin off the other.
-        if along.take() == Some(next.normal) {
+        // Slid along a plane and met by it again (or by another of its triangles, whose
+        // normal rounds a little apart), which only rounding does: a lift of a few steps of
+        // the coordinates' rounding (`f32` a thousand units out) rounds into it. Left touching
+        // the first plane, the ball met it at once on every later move along the corner (stuck
+        // in a ditch): lifted off both instead, a skin off the other.
+        if along.take().is_some_and(|a| same_plane(a, next.normal)) {
             match around(first, next.normal, (radius, skin)) {
                 Some(both) => {
                     lift = both;
