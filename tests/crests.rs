@@ -316,7 +316,7 @@ fn running_over_small_steps_stays_on_the_floor<S: Tolerance>() {
 /// A 30° or 20° ramp 40 wide rising to a lip at x = 3, beyond it a drop of 0.5 (deeper than
 /// the snap, though within a radius more), 3, or 0.28 (deeper than the snap by less than a
 /// frame's rise along the ramp, which the snap once added to its depth as for an edge's rounded
-/// top, not only at 60 Hz): walked at 8 units/s head-on (at 60 and 240 Hz)
+/// top; at 60 Hz only, see below): walked at 8 units/s head-on (at 60 and 240 Hz)
 /// and at 45° to the lip (60 Hz), the ball flies off the lip, at least 0.1 above it, as it
 /// would without the snap, bit for bit, until it lands. Looking past the lip along the heading (a radius and a skin, of which
 /// only the part across the lip gets past it at an angle) and a radius deeper than the snap,

@@ -246,44 +246,41 @@ fn leaving_an_edge_over_a_drop_is_a_fall<S: Tolerance>() {
     }
 }
 
-/// Walking off a cliff 2 deep (r 0.5, the default snap) at 1 and 4 units/s, at 60, 240 and
-/// 960 Hz: the ball lands as far out at every rate (within 0.15). At 4 units/s it is too fast
-/// for gravity to hold it round the edge (`v² > g r`) and flies off level at once; at 1 it
-/// rolls round the edge to the slope limit first. Held by the ground probe two skins below
-/// whenever a frame's fall from the edge's tangent was shorter than that, a ball at 4 units/s
-/// rolled round the edge at 960 Hz (not at 60 or 240), left it at the slope limit with half
-/// its speed and landed at 1.25 instead of 2.6.
+/// Walking off a cliff 2 deep (r 0.5, the default snap) at 1 and 4 units/s square to its edge
+/// and at 20 units/s 80° from square (3.5 across it), at 60, 240 and 960 Hz: the ball lands as
+/// far out at every rate (within 0.15). Across the edge faster than gravity can hold it round
+/// the edge (`v² > g r`), it flies off level at once; at 1 unit/s it rolls round the edge to
+/// the slope limit first. Held by the ground probe two skins below whenever a frame's fall from
+/// the edge's tangent was shorter than that, a ball at 4 units/s rolled round the edge at 960
+/// Hz (not at 60 or 240), left it at the slope limit with half its speed and landed at 1.25
+/// instead of 2.6.
 fn walking_off_a_cliff_lands_as_far_at_every_frame_rate<S: Tolerance>() {
     let level = scene::<S>(&[
-        [[-9.0, 0.0, -9.0], [0.0, 0.0, 18.0], [9.0, 0.0, 0.0]],
-        [[0.0, -2.0, -9.0], [0.0, 2.0, 0.0], [0.0, 0.0, 18.0]],
-        [[0.0, -2.0, -9.0], [0.0, 0.0, 18.0], [40.0, 0.0, 0.0]],
+        [[-9.0, 0.0, -30.0], [0.0, 0.0, 60.0], [9.0, 0.0, 0.0]],
+        [[0.0, -2.0, -30.0], [0.0, 2.0, 0.0], [0.0, 0.0, 60.0]],
+        [[0.0, -2.0, -30.0], [0.0, 0.0, 60.0], [40.0, 0.0, 0.0]],
     ]);
-    for speed in [1.0, 4.0] {
+    for (speed, degrees, from) in [(1.0, 0.0, -2.0), (4.0, 0.0, -2.0), (20.0, 80.0, -1.0)] {
+        let (sin, cos) = f64::to_radians(degrees).sin_cos();
         let landed = [60.0, 240.0, 960.0].map(|hz| {
             let mut at = None;
             let gait = Gait { hz, ..HALF };
-            walk(
-                &level,
-                [-2.0, 0.5005, 0.0],
-                [speed, 0.0, 0.0],
-                gait,
-                (4.0 * hz) as usize,
-                |p, on| {
-                    let [x, y, _] = back(p);
-                    if on && y < -1.0 {
-                        at = at.or(Some(x));
-                    }
-                },
-            );
-            at.unwrap_or_else(|| panic!("{} at {speed} units/s, {hz} Hz: never landed", S::NAME))
+            let (start, wish) = ([from, 0.5005, -20.0], [speed * cos, 0.0, speed * sin]);
+            walk(&level, start, wish, gait, (4.0 * hz) as usize, |p, on| {
+                let [x, y, _] = back(p);
+                if on && y < -1.0 {
+                    at = at.or(Some(x));
+                }
+            });
+            let what = format!("{} at {speed} units/s, {degrees}°, {hz} Hz", S::NAME);
+            at.unwrap_or_else(|| panic!("{what}: never landed"))
         });
         let spread = landed
             .iter()
             .fold(0.0f64, |m, a| m.max((a - landed[0]).abs()));
         assert!(
             spread < 0.15,
-            "{} at {speed} units/s: landed at {landed:?} (60, 240, 960 Hz)",
+            "{} at {speed} units/s, {degrees}°: landed at {landed:?} (60, 240, 960 Hz)",
             S::NAME
         );
     }

@@ -1,5 +1,6 @@
 //! [`Character`]: the README's character loop as a type, one call a frame.
 
+use super::leave::{rising_at_most, rolls_off, snap_depth};
 use super::rules::magnitude;
 use super::{Floor, Slide, Slider, min_radius};
 use crate::{Contact, Error, Geometry, Input, Scalar, Vec3, check};
@@ -124,8 +125,9 @@ impl<S: Scalar> Character<S> {
     }
 
     /// The same character snapped down onto the floor up to `depth` below it where its walk
-    /// left the floor (zero: the ground probe alone). Choose about the highest step down, and
-    /// at least the drop of a walk down the steepest walkable slope in a frame.
+    /// left the floor (zero: the ground probe alone, which lets a walker fly off any convex
+    /// edge it crosses faster than gravity holds it round the edge). Choose about the highest
+    /// step down, and at least the drop of a walk down the steepest walkable slope in a frame.
     ///
     /// Errors: [`Error::NaN`], or [`Error::OutOfRange`] outside `[0, LIMIT]`.
     pub fn with_snap(self, depth: S) -> Result<Self, Error> {
@@ -152,41 +154,6 @@ impl<S: Scalar> Character<S> {
     pub fn with_skin(self, skin: S) -> Result<Self, Error> {
         let ball = self.ball.with_skin(skin)?;
         Ok(Self { ball, ..self })
-    }
-
-    /// How far the snap reaches down after a walk that left the floor and rose by `extra` more
-    /// than its floor's plane foretold: the snap's depth, and that rise where it is positive,
-    /// at most `LIMIT` (a snap of zero stays the ground probe alone).
-    fn snap_depth(&self, extra: S) -> S {
-        if self.snap > S::ZERO && extra > S::ZERO {
-            let sum = self.snap + extra;
-            if sum > S::LIMIT { S::LIMIT } else { sum }
-        } else {
-            self.snap
-        }
-    }
-
-    /// Whether the ball leaves `floor`, an edge or vertex, heading along `heading`: it moves off
-    /// it (the level parts of the contact's normal and of the heading within about 75°) faster
-    /// than gravity can hold its centre on the circle of radius r round the feature, `|v|² > |g|
-    /// r cos θ` (θ the normal's angle from `up`). Held by the probe two skins below instead, the
-    /// ball rolled round the edge of a drop whenever a frame's fall from the edge's tangent was
-    /// shorter than that: at 4 units/s at 960 Hz, not at 60 or 240, and it left the edge at the
-    /// slope limit with half its speed.
-    fn rolls_off(&self, floor: &Floor<S>, heading: Vec3<S>, gravity: Vec3<S>) -> bool {
-        let up = self.unit_up();
-        let level = |v: Vec3<S>| {
-            let l = v - up.scale(S::dot(v, up));
-            S::direction(l).map(|(_, u)| u.map(S::unit_to_scalar))
-        };
-        let off = match (floor.contact, level(floor.normal), level(heading)) {
-            (Contact::Face, ..) => false,
-            (_, Some(n), Some(h)) => S::dot(n, h) > S::div_pow2(S::ONE, 2),
-            _ => false,
-        };
-        let speed = self.velocity.length();
-        let hold = self.ball.radius().mul(S::dot(floor.normal, up));
-        off && S::mul_cmp(speed, speed, gravity.length(), hold).is_gt()
     }
 
     /// `up` as a unit vector (validated nonzero when set).
@@ -347,8 +314,6 @@ impl<S: Scalar> Character<S> {
                     Some(p) => p.ground_floor(up, min_cos)?,
                     None => None,
                 };
-                let moved = out.position - from;
-                let held = held.filter(|f| !me.rolls_off(f, moved, gravity));
                 me.floor = floor.or(held);
                 out
             }
@@ -379,7 +344,7 @@ impl<S: Scalar> Character<S> {
         if me.floor.is_none() {
             let unforeseen = rose - if planned > S::ZERO { planned } else { S::ZERO };
             let depth = if walked {
-                me.snap_depth(unforeseen)
+                snap_depth(me.snap, unforeseen)
             } else {
                 S::ZERO
             };
@@ -387,7 +352,9 @@ impl<S: Scalar> Character<S> {
                 ball.snap_or_probe(level, me.position, me.velocity, (up, min_cos), depth)?;
             // Only the probe's edge can be rolled off: the snap holds a ball over a crest.
             let on = |f: &Floor<S>| walked || me.velocity.dot(f.normal) <= S::ZERO;
-            let rolls = |f: &Floor<S>| probe && me.rolls_off(f, me.velocity, gravity);
+            let rolls = |f: &Floor<S>| {
+                walked && probe && rolls_off(f, me.velocity, gravity, (me.unit_up(), ball.radius()))
+            };
             let found = found.filter(|f| on(f) && !rolls(f));
             if let Some(f) = found {
                 (me.floor, me.position) = (Some(f), f.position);
@@ -403,21 +370,6 @@ impl<S: Scalar> Character<S> {
         *self = me;
         Ok(out)
     }
-}
-
-/// `velocity` rising along the unit `up` no faster than `rose` in `dt` (nor at all where that
-/// is not above zero).
-fn rising_at_most<S: Scalar>(velocity: Vec3<S>, up: Vec3<S>, rose: S, dt: S) -> Vec3<S> {
-    let rising = S::dot(velocity, up);
-    if rising.mul(dt) <= rose {
-        return velocity;
-    }
-    let most = if rose > S::ZERO {
-        rose.div(dt)
-    } else {
-        S::ZERO
-    };
-    velocity - up.scale(rising - most)
 }
 
 /// The longest time step whose moves fit in the range: `(|velocity| + |wish| + |gravity| dt) dt

@@ -21,6 +21,7 @@
 //! and [`Slider::step_slide`] (a walk that steps up onto low ledges).
 
 mod character;
+mod leave;
 mod push;
 mod resolve;
 mod rules;
@@ -75,8 +76,9 @@ pub struct Floor<S> {
     /// of its two slopes): what a game looks its surface up by (a footstep's sound).
     pub index: usize,
     /// The feature of that triangle the contact was with: on [`Contact::Face`] the floor is
-    /// the triangle's plane; on an edge or vertex its normal is a tangent of the rounded
-    /// feature, which the ball leaves as soon as it walks on.
+    /// the triangle's plane; on an edge or vertex `normal` is that of a tangent plane of the
+    /// rounded feature, which the ball leaves as soon as it walks on (in a valley, between
+    /// two slopes, it is their blend).
     pub contact: Contact,
 }
 

@@ -126,9 +126,10 @@ pub(super) fn settle<S: Scalar, G: Geometry<S> + ?Sized>(
 /// by another plane, it stands a skin short of it along the lift, or, where that is less than
 /// half the way (a slot or corner too narrow for a skin on both sides), half way; met by one
 /// at once (a ball resting in the corner), or within a position's rounding where the lift can
-/// slide along it, the lift slides along it, once; and if that is met at once too, it becomes
-/// the shortest lift that leaves both (the first plane, `normal`, by as much as before, the
-/// other by a skin), unless the two are within about 14° of opposed.
+/// slide along it, the lift slides along it, once; and if that is met at once too by the same
+/// plane (within 1e-3 rad), or the first lift is met at once by a plane it runs along or leaves,
+/// it becomes the shortest lift that leaves both (the first plane, `normal`, by as much as
+/// before, the other by a skin), unless the two are within about 14° of opposed.
 fn lift_from<S: Scalar, G: Geometry<S> + ?Sized>(
     scene: &G,
     at: Vec3<S>,

@@ -59,8 +59,9 @@ impl<S: Scalar> FloorStop<S> {
 /// goes on to the contact (unless that travel is rounding too) and is lifted there by its
 /// motion's approach: at least `rounding` for floats; for fixed point, at least a step per
 /// unit of the motion left (its largest coordinate). Any other that started within a skin of
-/// the plane stays where it is. One met at once (already touching or overlapping) is lifted by
-/// a skin instead.
+/// the plane stays where it is (a float ball within a position's rounding of the plane and
+/// moving along it within 30° is lifted back to a skin off it). One met at once (already
+/// touching or overlapping) is lifted by a skin instead.
 pub(super) fn stand_off<S: Scalar>(
     hit: &SceneHit<S>,
     rest: Vec3<S>,
@@ -106,7 +107,7 @@ pub(super) fn stand_off<S: Scalar>(
             // back to a skin off it: each end of a slide along the plane rounds to coordinates
             // that may lie a little closer every time, until the plane meets the ball at once.
             let gap = (-into).mul(hit.alpha);
-            let grazing = -into <= S::div_pow2(magnitude(rest), 1);
+            let grazing = -into <= S::div_pow2(rest.length(), 1);
             let lift = if S::PRECISION.relative && gap <= rounding && grazing {
                 skin - gap
             } else {

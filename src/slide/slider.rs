@@ -259,9 +259,9 @@ impl<S: Scalar> Slider<S> {
         heading: Vec3<S>,
         (up, min_cos): (Vec3<S>, S),
         depth: S,
-    ) -> Result<(Option<Floor<S>>, bool), Error> {
-        let probe = |depth| {
-            let floor = self.snap_to_floor(scene, position, heading, up, min_cos, depth)?;
+    ) -> Result<Snapped<S>, Error> {
+        let probe_alone = || {
+            let floor = self.snap_to_floor(scene, position, heading, up, min_cos, S::ZERO)?;
             Ok((floor, true))
         };
         let (up_unit, cos) = slope_limit(up, min_cos)?;
@@ -281,7 +281,7 @@ impl<S: Scalar> Slider<S> {
             };
             // Nothing within reach (or a sweep refused near the range's edge): the probe.
             let Some(hit) = down(position, reach) else {
-                return probe(S::ZERO);
+                return probe_alone();
             };
             // An edge or vertex the ball walks off or over: a step down, a crest or a landing
             // if, clear of it (a radius and a skin past the touched point, level), a cast finds
@@ -312,7 +312,7 @@ impl<S: Scalar> Slider<S> {
                     slope >= cos || (h.alpha == S::ZERO && slope > S::ZERO)
                 };
                 if !below.is_some_and(ground) {
-                    return probe(S::ZERO);
+                    return probe_alone();
                 }
             }
             if S::dot(hit.normal, up_unit) >= cos {
@@ -343,6 +343,10 @@ impl<S: Scalar> Slider<S> {
         slide.clip_within(velocity, self.max_slope)
     }
 }
+
+/// A snap's floor, and whether it is the ground probe's alone (see
+/// [`Slider::snap_or_probe`]).
+type Snapped<S> = (Option<Floor<S>>, bool);
 
 /// Where to look past an edge or vertex met by a snap, given the level parts of its normal and
 /// of the ball's heading: away from it, with `true`, where the ball walks off it (behind the
