@@ -269,7 +269,7 @@ impl<S: Scalar> Character<S> {
         let (ball, up, min_cos) = (me.ball, me.up, me.min_cos);
         let walked = me.floor.is_some();
         // What the walk would rise along its floor's plane (up a ramp: no reason to snap),
-        // where that is a face's, not the tangent of an edge it rounds.
+        // where that is a face's, not the tangent of an edge it rounds; zero going down.
         let mut planned = S::ZERO;
         let out = match me.floor.map(|f| (f.normal, f.contact)) {
             Some((n, on)) => {
@@ -288,8 +288,9 @@ impl<S: Scalar> Character<S> {
                 // against the rounding of its walk, which would lift it off the floor.)
                 me.velocity = wish.reject_from_normalized(n);
                 let walk = me.velocity * dt;
-                if on == Contact::Face {
-                    planned = S::dot(walk, me.unit_up());
+                let rise = S::dot(walk, me.unit_up());
+                if on == Contact::Face && rise > S::ZERO {
+                    planned = rise;
                 }
                 let depth = gravity.length().mul(dt).mul(dt);
                 let extent = magnitude(me.position);
@@ -342,7 +343,7 @@ impl<S: Scalar> Character<S> {
         // jump's first frames).
         let rose = S::dot(me.position - start, me.unit_up());
         if me.floor.is_none() {
-            let unforeseen = rose - if planned > S::ZERO { planned } else { S::ZERO };
+            let unforeseen = rose - planned;
             let depth = if walked {
                 snap_depth(me.snap, unforeseen)
             } else {

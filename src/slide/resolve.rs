@@ -156,13 +156,11 @@ fn lift_from<S: Scalar, G: Geometry<S> + ?Sized>(
         // the first plane, the ball met it at once on every later move along the corner (stuck
         // in a ditch): lifted off both instead, a skin off the other.
         if along.take().is_some_and(|a| same_plane(a, next.normal)) {
-            match around(first, next.normal, (radius, skin)) {
-                Some(both) => {
-                    lift = both;
-                    continue;
-                }
-                None => return at,
-            }
+            let Some(both) = around(first, next.normal, (radius, skin)) else {
+                return at;
+            };
+            lift = both;
+            continue;
         }
         let into = S::dot(lift, next.normal);
         let slid = lift - next.normal.scale(into);
@@ -189,13 +187,11 @@ fn lift_from<S: Scalar, G: Geometry<S> + ?Sized>(
         // units out): lifted off both, a skin off the other; left touching both, the ball was
         // met by the first at once on every later move (stuck for good against the wall).
         if into >= S::ZERO {
-            match around(first, next.normal, (radius, skin)) {
-                Some(both) => {
-                    lift = both;
-                    continue;
-                }
-                None => return at,
-            }
+            let Some(both) = around(first, next.normal, (radius, skin)) else {
+                return at;
+            };
+            lift = both;
+            continue;
         }
         (lift, along) = (slid, Some(next.normal));
     }

@@ -107,8 +107,8 @@ pub(super) fn stand_off<S: Scalar>(
             // back to a skin off it: each end of a slide along the plane rounds to coordinates
             // that may lie a little closer every time, until the plane meets the ball at once.
             let gap = (-into).mul(hit.alpha);
-            let grazing = -into <= S::div_pow2(rest.length(), 1);
-            let lift = if S::PRECISION.relative && gap <= rounding && grazing {
+            let grazing = || -into <= S::div_pow2(rest.length(), 1);
+            let lift = if S::PRECISION.relative && gap <= rounding && grazing() {
                 skin - gap
             } else {
                 S::ZERO
