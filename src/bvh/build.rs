@@ -130,7 +130,7 @@ fn class_at(keys: &[u64], items: &[Item], s: usize) -> u32 {
 const CENTRE_BITS: u32 = 13;
 
 /// The key of an item: its box's centre quantized to [`CENTRE_BITS`] per axis on one scale for
-/// the three axes (x above y above z), above its index.
+/// the three axes (x above y above z: [`Fields`] `[0, 1, 2]`), above its index.
 fn key_of(it: &Item, c: usize, (lo, hi): Cells) -> u64 {
     let extent = (0..3).fold(0i64, |m, a| m.max(hi[a] as i64 - lo[a] as i64));
     let (blo, bhi) = item_box(it);
@@ -142,44 +142,50 @@ fn key_of(it: &Item, c: usize, (lo, hi): Cells) -> u64 {
     centres << INDEX_BITS | c as u64 & INDEX
 }
 
-/// Rotates the centres of `keys`, whose top field is that of axis `*top`, so that the top one
-/// is axis `a`'s: then the keys' own order is by the centre on `a`, the other two, the index.
-fn rotate(keys: &mut [u64], top: &mut usize, a: usize) {
-    let k = (a + 3 - *top) as u32 % 3 * CENTRE_BITS;
-    if k == 0 {
+/// Which axis's centre each field of a key holds, from the top: the keys' own order is by the
+/// centre on the first, then the second, the third, the index.
+type Fields = [usize; 3];
+
+/// Rewrites the centres of `keys`, whose fields are those of `*fields`, into the fields `to`.
+fn arrange(keys: &mut [u64], fields: &mut Fields, to: Fields) {
+    if *fields == to {
         return;
     }
-    let width = 3 * CENTRE_BITS;
+    let at = |f: usize| (2 - f) as u32 * CENTRE_BITS + INDEX_BITS;
+    // Where each new field's axis sits now: the same shifts for every key.
+    let from = to.map(|a| at(fields.iter().position(|&b| b == a).unwrap_or(0)));
+    let mask = (1u64 << CENTRE_BITS) - 1;
     for key in keys.iter_mut() {
-        let c = *key >> INDEX_BITS;
-        let c = (c << k | c >> (width - k)) & ((1 << width) - 1);
-        *key = c << INDEX_BITS | *key & INDEX;
+        let k = *key;
+        let field = |f: usize| (k >> from[f] & mask) << at(f);
+        *key = field(0) | field(1) | field(2) | k & INDEX;
     }
-    *top = a;
+    *fields = to;
 }
 
 /// Puts the `m` keys with the smallest centres on the longest axis of `bounds` (the lowest such
-/// axis on a tie) first: an object-median split. The order is a total one (the quantized
-/// centres, then the index), so the split is the same whatever algorithm makes it. Returns
-/// `bounds` cut at the median: the two sides' boxes as far as choosing their own split axis
-/// needs. `root` is the box the centres were quantized in; `top`, the axis on top of the keys.
+/// axis on a tie) first: an object-median split. Equal centres on that axis (a grid's columns)
+/// are ordered by the centre on the next longest axis, so that a run cut out of a column is
+/// a stretch of it, not a scatter along it; then by the last axis and the index. The order is
+/// a total one, so the split is the same whatever algorithm makes it. Returns `bounds` cut at
+/// the median: the two sides' boxes as far as choosing their own split axis needs. `root` is
+/// the box the centres were quantized in; `fields`, the keys' fields.
 fn split(
     keys: &mut [u64],
     m: usize,
     (lo, hi): Cells,
     root: Cells,
-    top: &mut usize,
+    fields: &mut Fields,
 ) -> (Cells, Cells) {
     if m == 0 || m >= keys.len() {
         return ((lo, hi), (lo, hi));
     }
-    let mut axis = 0;
-    for a in 1..3 {
-        if hi[a] as i64 - lo[a] as i64 > hi[axis] as i64 - lo[axis] as i64 {
-            axis = a;
-        }
-    }
-    rotate(keys, top, axis);
+    // The axes longest first, the lower axis on a tie.
+    let mut by = [0, 1, 2];
+    let extent = |a: usize| hi[a] as i64 - lo[a] as i64;
+    by.sort_unstable_by_key(|&a| (core::cmp::Reverse(extent(a)), a));
+    let axis = by[0];
+    arrange(keys, fields, by);
     let (_, &mut median, _) = keys.select_nth_unstable(m);
     let extent = (0..3).fold(0i64, |m, a| m.max(root.1[a] as i64 - root.0[a] as i64));
     let q = (median >> (INDEX_BITS + 2 * CENTRE_BITS)) as i64;
@@ -212,24 +218,24 @@ pub(crate) fn build(
     if n == 0 {
         return Ok(0);
     }
-    // (node, first item, item count, node box, depth, the axis on top of its keys)
-    type Work = (usize, usize, usize, Cells, usize, usize);
+    // (node, first item, item count, node box, depth, its keys' fields)
+    type Work = (usize, usize, usize, Cells, usize, Fields);
     let mut work: heapless::Vec<Work, STACK> = heapless::Vec::new();
-    let _ = work.push((0, 0, n, root, 1, 0));
+    let _ = work.push((0, 0, n, root, 1, [0, 1, 2]));
     let mut next = 1;
-    while let Some((at, first, count, (lo, hi), depth, mut top)) = work.pop() {
+    while let Some((at, first, count, (lo, hi), depth, mut fields)) = work.pop() {
         if depth > MAX_DEPTH {
             return Err(BuildError::Depth);
         }
         let range = &mut keys[first..first + count];
         // Up to four runs: the two halves split at the median, each split again.
         let p = parts(count, leaf);
-        let (lb, rb) = split(range, p[0] + p[1], (lo, hi), root, &mut top);
+        let (lb, rb) = split(range, p[0] + p[1], (lo, hi), root, &mut fields);
         let (left, right) = range.split_at_mut(p[0] + p[1]);
-        let (mut ltop, mut rtop) = (top, top);
-        split(left, p[0], lb, root, &mut ltop);
-        split(right, p[2], rb, root, &mut rtop);
-        let tops = [ltop, ltop, rtop, rtop];
+        let (mut lf, mut rf) = (fields, fields);
+        split(left, p[0], lb, root, &mut lf);
+        split(right, p[2], rb, root, &mut rf);
+        let all = [lf, lf, rf, rf];
         let bounds = [
             (0, p[0]),
             (p[0], p[0] + p[1]),
@@ -245,7 +251,7 @@ pub(crate) fn build(
             }
             node.shift[ax] = s as u8;
         }
-        for (&(s, e), &top) in bounds.iter().zip(&tops) {
+        for (&(s, e), &fields) in bounds.iter().zip(&all) {
             if s == e {
                 continue;
             }
@@ -275,7 +281,7 @@ pub(crate) fn build(
                 }
                 node.children[k] = child as u32;
                 if work
-                    .push((child, first + s, e - s, (dlo, dhi), depth + 1, top))
+                    .push((child, first + s, e - s, (dlo, dhi), depth + 1, fields))
                     .is_err()
                 {
                     return Err(BuildError::Depth);
