@@ -1,6 +1,6 @@
 //! [`Character`]: the README's character loop as a type, one call a frame.
 
-use super::leave::{rising_at_most, rolls_off, snap_depth};
+use super::leave::{rising_at_most, rolls_off, snap_depth, walks_off};
 use super::rules::magnitude;
 use super::{Floor, Slide, Slider, min_radius};
 use crate::{Contact, Error, Geometry, Input, Scalar, Vec3, check};
@@ -311,10 +311,12 @@ impl<S: Scalar> Character<S> {
                 start = from;
                 let out = ball.walk(level, from, walk, Some(n), on, me.step)?;
                 let floor = out.ground_floor(up, min_cos)?;
+                // The press's floor holds the ball unless the walk leaves it (`walks_off`).
                 let held = match &pressed {
                     Some(p) => p.ground_floor(up, min_cos)?,
                     None => None,
                 };
+                let held = held.filter(|f| !walks_off(f, walk, me.unit_up()));
                 me.floor = floor.or(held);
                 out
             }

@@ -1,9 +1,24 @@
-//! What a walker that leaves the floor does: how far the snap reaches after it, whether it
-//! rolls off an edge it walks off, and how fast it may rise (used by
+//! What a walker that leaves the floor does: whether its walk leaves the floor that held it,
+//! how far the snap reaches after it, whether it rolls off an edge it walks off, and how fast
+//! it may rise (used by
 //! [`Character::update`](super::Character::update)).
 
 use super::Floor;
 use crate::{Contact, Scalar, Vec3};
+
+/// Whether a walk by `walk` leaves `floor`, an edge or vertex it was pressed onto: the walk
+/// goes along the feature's tangent plane and away across it (along the level part of its
+/// normal, `up` a unit vector), off the rounded feature, so the press's floor does not hold the
+/// ball and the snap finds the floor where the walk ended, as when the press falls short of
+/// it. Held by the press every other frame in `f64` (on the frames after a snap, which leave
+/// the ball on the edge) and snapped every frame in `I16F16` (whose press is a probe), a ball
+/// rolled over each stair's edge two frames or one at a time, left the edge a frame apart, and
+/// walked down stairs up to 3 % slower in `I16F16` than in `f64` (steps of 0.15 on 0.4, r 0.4,
+/// 5 units/s at 144 Hz).
+pub(super) fn walks_off<S: Scalar>(floor: &Floor<S>, walk: Vec3<S>, up: Vec3<S>) -> bool {
+    let level = |v: Vec3<S>| v - up.scale(S::dot(v, up));
+    floor.contact != Contact::Face && S::dot(level(floor.normal), level(walk)) > S::ZERO
+}
 
 /// How far the snap reaches down after a walk that left the floor and rose by `extra` more
 /// than its floor's plane foretold: the snap's depth `snap`, and that rise where it is positive,
