@@ -306,6 +306,7 @@ impl fmt::Display for Error {
                 max,
                 ..
             } => {
+                let (value, min, max) = (Typed(value), Typed(min), Typed(max));
                 if input == Input::Number {
                     write!(f, "{value} is outside the accepted range [{min}, {max}]")?;
                 } else {
@@ -314,7 +315,7 @@ impl fmt::Display for Error {
                         "{input} is {value}, outside the accepted range [{min}, {max}]"
                     )?;
                 }
-                if saturated(value) {
+                if saturated(value.0) {
                     f.write_str(
                         " (a fixed-point extreme: `Scalar::from_f64` saturates larger numbers, \
                          and NaN, to it)",
@@ -322,7 +323,9 @@ impl fmt::Display for Error {
                 }
                 Ok(())
             }
-            Error::NegativeRadius { value } => write!(f, "the radius {value} is negative"),
+            Error::NegativeRadius { value } => {
+                write!(f, "the radius {} is negative", Typed(value))
+            }
             Error::Full { capacity: 1 } => f.write_str("full: it holds 1 triangle"),
             Error::Full { capacity } => write!(f, "full: it holds {capacity} triangles"),
             Error::RadiusTooSmall {
@@ -331,8 +334,11 @@ impl fmt::Display for Error {
                 extent,
             } => write!(
                 f,
-                "the radius {radius} is below {min}, the smallest the scalar resolves at \
-                 coordinates up to {extent}"
+                "the radius {} is below {}, the smallest the scalar resolves at coordinates up \
+                 to {}",
+                Typed(radius),
+                Typed(min),
+                Typed(extent)
             ),
             Error::Mismatch { .. } => {
                 f.write_str("baked parts differ from what their source triangle makes")
@@ -355,6 +361,24 @@ impl fmt::Display for Error {
 }
 
 impl core::error::Error for Error {}
+
+/// A value as the caller most likely typed it: an `f64` below 2^24 in magnitude that is exactly
+/// an `f32` (every such `f32`, and `I16F16` values below 256) in the shortest digits that give
+/// that `f32` back, so an `f32` radius of -0.4 reads -0.4, not -0.4000000059604645; any other
+/// value (2^53 among them, whose `f32` digits would not be its own) in the shortest digits that
+/// give the `f64` back. (The error's fields keep the exact value.)
+struct Typed(f64);
+
+impl fmt::Display for Typed {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let narrow = self.0 as f32;
+        if f64::from(narrow) == self.0 && self.0.abs() < 16_777_216.0 {
+            write!(f, "{narrow}")
+        } else {
+            write!(f, "{}", self.0)
+        }
+    }
+}
 
 /// Whether `value` is the largest or smallest value of a fixed-point scalar: what a conversion
 /// of a larger number, or of NaN, gives ([`Scalar::from_f64`](crate::Scalar::from_f64)).

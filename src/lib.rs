@@ -84,10 +84,11 @@
 //! - [`compound`] holds [`Compound`], two geometries (a heightfield and the meshes standing on
 //!   it) cast against as one, answering exactly as one mesh of the same prepared triangles
 //!   (each part keeps its own active edges), and [`CompoundPart`], what can be one of them.
-//! - [`slide`] holds [`move_and_slide`], the collision response (Quake's fly-move, constrained
-//!   by every plane touched), [`Slide`], and the [`skin`](slide::skin) and
-//!   [`min_radius`](slide::min_radius) it works with; for a character, [`Slider`]'s ground
-//!   probe ([`Slider::probe_floor`], giving a [`Floor`]), floor snap
+//! - [`slide`] holds [`slide::Character`], a game's walking character in one call a frame
+//!   (walk, steps, the floor snap, jumps, falls), and what it is built of: [`move_and_slide`],
+//!   the collision response (Quake's fly-move, constrained by every plane touched), [`Slide`],
+//!   the [`skin`](slide::skin) and [`min_radius`](slide::min_radius) it works with, and
+//!   [`Slider`]'s ground probe ([`Slider::probe_floor`], giving a [`Floor`]), floor snap
 //!   ([`Slider::snap_to_floor`]) and step up ([`Slider::step_slide`]).
 //! - [`mod@penetration`] holds [`penetration()`], the deepest overlap of a resting ball with
 //!   geometry and the way out ([`Penetration`]).

@@ -235,6 +235,25 @@ fn radius_errors_give_the_radius<S: Scalar>() {
     assert!(e.to_string().starts_with("the radius "), "{e}");
 }
 
+/// An `f32` value reads as typed: a radius of -0.4 is -0.4 in the message, not the `f64` it
+/// widens to (-0.4000000059604645, as it read), and so is a time step of -0.016 (-0.01600000075995922).
+#[test]
+fn f32_values_read_as_typed() {
+    let scene: Scene<f32, 1> = Scene::new();
+    let e = move_and_slide(&scene, Vec3::ZERO, Vec3::ZERO, -0.4).unwrap_err();
+    assert_eq!(e.to_string(), "the radius -0.4 is negative");
+    let mut me = ballcast::slide::Character::new(Vec3::ZERO, 0.5f32).unwrap();
+    let e = me
+        .update(&scene, Vec3::ZERO, Vec3::ZERO, -0.016)
+        .unwrap_err();
+    let said = e.to_string();
+    assert!(said.starts_with("the time step is -0.016, "), "{said}");
+    // An `f64` that is no `f32` keeps its own digits.
+    let scene: Scene<f64, 1> = Scene::new();
+    let e = move_and_slide(&scene, Vec3::ZERO, Vec3::ZERO, -0.1).unwrap_err();
+    assert_eq!(e.to_string(), "the radius -0.1 is negative");
+}
+
 macro_rules! per_scalar {
     ($($m:ident: $t:ty),*) => {$(mod $m {
         #[allow(unused_imports)] // the fixed-point types, unused where $t is a float
