@@ -306,7 +306,7 @@ impl fmt::Display for Error {
                 max,
                 ..
             } => {
-                let (value, min, max) = (Typed(value), Typed(min), Typed(max));
+                let [value, min, max] = typed([value, min, max]);
                 if input == Input::Number {
                     write!(f, "{value} is outside the accepted range [{min}, {max}]")?;
                 } else {
@@ -324,7 +324,8 @@ impl fmt::Display for Error {
                 Ok(())
             }
             Error::NegativeRadius { value } => {
-                write!(f, "the radius {} is negative", Typed(value))
+                let [value] = typed([value]);
+                write!(f, "the radius {value} is negative")
             }
             Error::Full { capacity: 1 } => f.write_str("full: it holds 1 triangle"),
             Error::Full { capacity } => write!(f, "full: it holds {capacity} triangles"),
@@ -332,14 +333,14 @@ impl fmt::Display for Error {
                 radius,
                 min,
                 extent,
-            } => write!(
-                f,
-                "the radius {} is below {}, the smallest the scalar resolves at coordinates up \
-                 to {}",
-                Typed(radius),
-                Typed(min),
-                Typed(extent)
-            ),
+            } => {
+                let [radius, min, extent] = typed([radius, min, extent]);
+                write!(
+                    f,
+                    "the radius {radius} is below {min}, the smallest the scalar resolves at \
+                     coordinates up to {extent}"
+                )
+            }
             Error::Mismatch { .. } => {
                 f.write_str("baked parts differ from what their source triangle makes")
             }
@@ -362,18 +363,31 @@ impl fmt::Display for Error {
 
 impl core::error::Error for Error {}
 
-/// A value as the caller most likely typed it: an `f64` below 2^24 in magnitude that is exactly
-/// an `f32` (every such `f32`, and `I16F16` values below 256) in the shortest digits that give
-/// that `f32` back, so an `f32` radius of -0.4 reads -0.4, not -0.4000000059604645; any other
-/// value (2^53 among them, whose `f32` digits would not be its own) in the shortest digits that
-/// give the `f64` back. (The error's fields keep the exact value.)
-struct Typed(f64);
+/// The values of one message as the caller most likely typed them: where each is an `f32`
+/// (zero, or exactly an `f32` between its smallest normal and 2^24 in magnitude, or a whole
+/// number of 2^24 or more, which prints alike either way), those below 2^24 in the shortest
+/// digits that give the `f32` back, so an `f32` radius of -0.4 reads -0.4, not the
+/// -0.4000000059604645 it widens to; else all in the shortest digits that give the `f64`
+/// back, so no two values of a message read alike (an `f64` radius just above a limit that is
+/// an `f32` would have). The error's fields keep the exact values.
+fn typed<const N: usize>(values: [f64; N]) -> [Typed; N] {
+    const WHOLE: f64 = 16_777_216.0;
+    let narrow = values.iter().all(|&v| {
+        let a = v.abs();
+        v == 0.0
+            || (a >= f64::from(f32::MIN_POSITIVE) && a < WHOLE && f64::from(v as f32) == v)
+            || (a >= WHOLE && libm::trunc(a) == a)
+    });
+    values.map(|v| Typed(v, narrow && v.abs() < WHOLE))
+}
+
+/// A value, printed as the `f32` it is (true) or as itself.
+struct Typed(f64, bool);
 
 impl fmt::Display for Typed {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        let narrow = self.0 as f32;
-        if f64::from(narrow) == self.0 && self.0.abs() < 16_777_216.0 {
-            write!(f, "{narrow}")
+        if self.1 {
+            write!(f, "{}", self.0 as f32)
         } else {
             write!(f, "{}", self.0)
         }

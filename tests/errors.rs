@@ -252,6 +252,25 @@ fn f32_values_read_as_typed() {
     let scene: Scene<f64, 1> = Scene::new();
     let e = move_and_slide(&scene, Vec3::ZERO, Vec3::ZERO, -0.1).unwrap_err();
     assert_eq!(e.to_string(), "the radius -0.1 is negative");
+    // So do all the values of its message: an `f64` radius just below a limit that is an
+    // `f32`, typed as that `f32`'s digits, read alike when the limit alone took them.
+    let min = 3.0 * 2f64.powi(-46);
+    let radius: f64 = (min as f32).to_string().parse().unwrap();
+    assert!(radius < min);
+    let e = Error::RadiusTooSmall {
+        radius,
+        min,
+        extent: 3.0,
+    };
+    assert_eq!(
+        e.to_string(),
+        "the radius 0.000000000000042632564 is below 0.00000000000004263256414560601, the \
+         smallest the scalar resolves at coordinates up to 3"
+    );
+    // A subnormal `f32` in its `f64` digits: as an `f32` it printed 1e-45, 40 % off.
+    let tiny = -f64::from(f32::from_bits(1));
+    let e = Error::NegativeRadius { value: tiny };
+    assert_eq!(e.to_string(), format!("the radius {tiny} is negative"));
 }
 
 macro_rules! per_scalar {

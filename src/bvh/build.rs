@@ -182,8 +182,8 @@ fn split(
     }
     // The axes longest first, the lower axis on a tie.
     let mut by = [0, 1, 2];
-    let extent = |a: usize| hi[a] as i64 - lo[a] as i64;
-    by.sort_unstable_by_key(|&a| (core::cmp::Reverse(extent(a)), a));
+    let length = |a: usize| hi[a] as i64 - lo[a] as i64;
+    by.sort_unstable_by_key(|&a| (core::cmp::Reverse(length(a)), a));
     let axis = by[0];
     arrange(keys, fields, by);
     let (_, &mut median, _) = keys.select_nth_unstable(m);
