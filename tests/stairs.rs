@@ -359,8 +359,8 @@ fn walking_down_stairs_keeps_the_wished_pace<S: Tolerance>() {
 /// 8 units/s and 60 to 960 Hz, `f32` and `I16F16` go as far as `f64` within 0.5 %. Rolling
 /// over each edge, the ball was held by the press's edge every other frame in `f64` and
 /// snapped every frame in `I16F16`, so it left the edge a frame later or sooner: `I16F16` made
-/// 0.991 of `f64`'s distance at 144 Hz and 5 units/s, 0.992 at 480 Hz and 8 units/s (0.968 on
-/// stairs begun half a radius further on).
+/// 0.991 of `f64`'s distance at 144 Hz and 5 units/s, 0.992 at 480 Hz and 8 units/s (0.968 with
+/// the walk begun half a unit before the edge instead of one).
 #[test]
 fn walking_down_stairs_every_scalar_goes_as_far_as_f64() {
     fn made<S: Scalar>(hz: f64, speed: f64) -> f64 {
