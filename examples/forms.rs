@@ -1,9 +1,10 @@
 //! The arena run (`embedded/src/arena.rs`) on the two compact forms of `embedded/src/forms.rs`,
 //! built at run time: the arena as a `CompactMesh` and the 64 × 64 terrain `Heightfield`, each
-//! alone and both as one `Compound` level, in I16F16. Prints `compact I16F16 hash`,
-//! `heightfield I16F16 hash` and `compound I16F16 hash`, the lines the Cortex-M0
-//! program `forms` (the same forms baked into flash) must print bit for bit (`.ci/embedded.sh`
-//! compares them). Contacts and escapes go to stderr.
+//! alone and both as one `Compound` level, in I16F16, and a `Character` walking over the
+//! terrain (`embedded/src/walker.rs`). Prints `compact I16F16 hash`, `heightfield I16F16 hash`,
+//! `compound I16F16 hash` and `character I16F16 hash`, the lines the Cortex-M0 program `forms`
+//! (the same forms baked into flash) must print bit for bit (`.ci/embedded.sh` compares them).
+//! Contacts and escapes go to stderr.
 //!
 //! Run: `cargo run --release --example forms`
 
@@ -19,6 +20,8 @@ mod arena;
 mod forms;
 #[path = "../embedded/src/lockstep.rs"]
 mod lockstep;
+#[path = "../embedded/src/walker.rs"]
+mod walker;
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
     let (throws, steps) = (arena::THROWS, arena::STEPS_PER_THROW);
@@ -63,6 +66,8 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     println!("heightfield I16F16 {:016x}", h.hash);
     let b = arena::simulate::<I16F16, _>(&Compound::new(&compact, &field)?, throws, steps);
     println!("compound I16F16 {:016x}", b.hash);
+    let (walked, grounded) = walker::walk::<I16F16, _>(&field);
+    println!("character I16F16 {walked:016x}");
     eprintln!(
         "compact: {} triangles, {} contacts, {} escapes; heightfield: {} triangles, {} contacts, {} escapes; compound: {} contacts, {} escapes",
         compact.len(),
@@ -73,6 +78,10 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         h.escapes,
         b.contacts,
         b.escapes
+    );
+    eprintln!(
+        "character: {} frames on the heightfield, grounded on {grounded}",
+        walker::FRAMES
     );
     // The same run on the prepared mesh, for comparison: the compact form answers as it does.
     let m = arena::simulate::<I16F16, _>(&mesh, throws, steps);

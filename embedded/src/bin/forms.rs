@@ -1,9 +1,11 @@
 //! The arena run (`../arena.rs`) on the two compact forms baked into flash by `build.rs`: the
 //! 2 168-triangle arena as a `CompactMesh` and a 64 × 64 terrain `Heightfield` (8 192 triangles;
 //! `../forms.rs`), each alone and both as one `Compound` level. Prints `compact I16F16 hash`,
-//! `heightfield I16F16 hash` and `compound I16F16 hash`, the lines the host's
-//! `cargo run --release --example forms` (the forms built at run time) prints, then each form's
-//! bytes in flash and the RAM the runs never touched (the stack is painted first).
+//! `heightfield I16F16 hash`, `compound I16F16 hash` and, for a `Character` walking over the
+//! terrain (`../walker.rs`), `character I16F16 hash`: the lines the host's
+//! `cargo run --release --example forms` (the forms built at run time) prints; then each form's
+//! bytes in flash, the RAM the arena runs never touched and the stack the walk used (the
+//! stack is painted first, and again before the walk).
 //!
 //! Run: `cargo m0 forms` in `embedded/`.
 #![no_std]
@@ -21,6 +23,8 @@ mod arena;
 mod lockstep;
 #[path = "../stack.rs"]
 mod stack;
+#[path = "../walker.rs"]
+mod walker;
 mod compact {
     include!(concat!(env!("OUT_DIR"), "/compact.rs"));
 }
@@ -43,6 +47,13 @@ fn main() -> ! {
         Ok(b) => hprintln!("compound I16F16 {:016x}", b.hash),
         Err(e) => hprintln!("compound I16F16 refused: {}", e),
     }
+    let untouched = painted.untouched();
+    // The walk's own stack: RAM painted anew, then what of it the walk wrote.
+    let again = stack::paint();
+    let free = again.untouched();
+    let (walked, grounded) = walker::walk::<I16F16, _>(&terrain::FIELD);
+    let used = free - again.untouched();
+    hprintln!("character I16F16 {:016x}", walked);
     use core::mem::size_of_val as size;
     let compact_bytes = size(&compact::NODES)
         + size(&compact::VERTICES)
@@ -63,7 +74,16 @@ fn main() -> ! {
         h.contacts,
         h.escapes
     );
-    hprintln!("stack: {} bytes of RAM never touched", painted.untouched());
+    hprintln!(
+        "character: {} frames on the heightfield, grounded on {}; {} bytes of stack",
+        walker::FRAMES,
+        grounded,
+        used
+    );
+    hprintln!(
+        "stack: {} bytes of RAM never touched by the arena runs",
+        untouched
+    );
     debug::exit(debug::EXIT_SUCCESS);
     loop {
         cortex_m::asm::wfi();
