@@ -59,11 +59,11 @@ pub struct TriangleCache<S: Scalar, const N: usize> {
 
 impl<S: Scalar, const N: usize> TriangleCache<S, N> {
     /// An empty cache.
-    pub(crate) const fn new() -> Self {
+    pub(crate) fn new() -> Self {
         Self {
-            keys: [const { Cell::new(EMPTY) }; N],
-            triangles: [const { Cell::new(Mesh::<S>::filler()) }; N],
-            used: [const { Cell::new(0) }; N],
+            keys: core::array::from_fn(|_| Cell::new(EMPTY)),
+            triangles: core::array::from_fn(|_| Cell::new(Mesh::<S>::filler())),
+            used: core::array::from_fn(|_| Cell::new(0)),
             clock: Cell::new(0),
             hits: Cell::new(0),
             misses: Cell::new(0),
@@ -325,23 +325,9 @@ pub struct Cached<G, S: Scalar, const N: usize> {
 
 impl<G: Cacheable<S>, S: Scalar, const N: usize> Cached<G, S, N> {
     /// `geometry` with an empty cache of its own. The slot count is part of the type
-    /// (`let level: Cached<_, _, 32> = Cached::new(terrain);`): 32 slots take 3.3 KB in `f32`
-    /// (3.2 KB on a 32-bit core), 512 in `f64` about 100 KB. Made as a local, the cache is on
-    /// the stack; `new` is a `const fn`, so on a microcontroller the cache can be made at
-    /// compile time in RAM instead, as a `static mut` declared in cortex-m-rt's `#[entry]`
-    /// function (which hands it over as a `&'static mut`, without `unsafe`), over a geometry
-    /// baked as a `static`:
-    ///
-    /// ```ignore
-    /// #[entry]
-    /// fn main() -> ! {
-    ///     static mut LEVEL: Cached<Heightfield<'static, I16F16>, I16F16, 16> =
-    ///         Cached::new(terrain::FIELD);
-    ///     let level: &'static Cached<_, _, 16> = LEVEL;
-    ///     // ... `me.update(level, wish, gravity, dt)` every frame
-    /// }
-    /// ```
-    pub const fn new(geometry: G) -> Self {
+    /// (`let level: Cached<_, _, 32> = Cached::new(terrain);`), and the cache is made in place
+    /// on the stack: 32 slots take 3.3 KB in `f32`, 512 in `f64` about 100 KB.
+    pub fn new(geometry: G) -> Self {
         Self {
             geometry,
             cache: TriangleCache::new(),
