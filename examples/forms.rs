@@ -9,9 +9,7 @@
 //! Run: `cargo run --release --example forms`
 
 use ballcast::bvh::{LeafSize, nodes_for};
-use ballcast::{
-    CompactMesh, Compound, Degenerates, Heightfield, HeightfieldShape, Mesh, Node, Vec3,
-};
+use ballcast::{CompactMesh, Compound, Degenerates, Heightfield, Mesh, Node};
 use fixed::types::I16F16;
 
 #[path = "../embedded/src/arena.rs"]
@@ -39,7 +37,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         &mut order,
         &mut scratch,
     )?;
-    let (vertices, indices) = forms::indexed(&tris);
+    let (vertices, indices) = ballcast::import::weld(&tris)?;
     let k = mesh.len();
     let (mut t, mut o, mut b) = (vec![[0u16; 3]; k], vec![0u16; k], vec![0u8; k]);
     let compact = CompactMesh::compact(&mesh, &vertices, &indices, &mut t, &mut o, &mut b)?;
@@ -47,21 +45,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     println!("compact I16F16 {:016x}", c.hash);
     let heights = forms::heights();
     let mut cells = vec![0u8; (forms::CELLS * forms::CELLS) as usize];
-    let spacing = I16F16::from_bits(forms::SPACING_BITS);
-    let unit = I16F16::from_bits(forms::UNIT_BITS);
-    let size = forms::CELLS;
-    let field = Heightfield::build(
-        HeightfieldShape {
-            origin: Vec3::ZERO,
-            spacing,
-            unit,
-            columns: size,
-            rows: size,
-        },
-        &heights,
-        |_, _| false,
-        &mut cells,
-    )?;
+    let field = Heightfield::build(forms::shape(), &heights, |_, _| false, &mut cells)?;
     let h = arena::simulate::<I16F16, _>(&field, throws, steps);
     println!("heightfield I16F16 {:016x}", h.hash);
     let b = arena::simulate::<I16F16, _>(&Compound::new(&compact, &field)?, throws, steps);

@@ -31,8 +31,9 @@ use query::{prepare, triangle};
 /// The two-sided bit of a triangle's byte.
 const TWO_SIDED: u8 = 1 << 6;
 
-/// An index into a compact mesh's vertices or input triangles: `u16` or `u32`.
-pub trait MeshIndex: Copy + sealed::Sealed {
+/// An index into a compact mesh's vertices or input triangles: `u16` or `u32` (so it is
+/// `Default`, zero, for buffers, and `Debug` and `PartialEq` as the mesh that holds it).
+pub trait MeshIndex: Copy + Default + fmt::Debug + PartialEq + sealed::Sealed {
     /// The largest index this type holds.
     const MAX: usize;
     /// The index as a `usize`.

@@ -3,13 +3,13 @@
 //! at run time and must print the same hashes).
 //!
 //! - The arena (`examples/data/arena.obj`, 2 168 triangles) as a `CompactMesh`: its vertices
-//!   shared (exact coordinates merged), u16 indices.
+//!   shared (exact coordinates merged, `ballcast::import::weld`), u16 indices.
 //! - A 64 × 64 terrain `Heightfield` (8 192 triangles) over the arena's ground, x and z from 0 to
 //!   32: a bowl with ripples, heights in steps of 1/64 from an integer formula.
 #![allow(dead_code)]
 
-use ballcast::{Scalar, Triangle, Vec3};
-use std::collections::HashMap;
+use ballcast::fixed::types::I16F16;
+use ballcast::{HeightfieldShape, Vec3};
 
 /// Cells along x and along z.
 pub const CELLS: u32 = 64;
@@ -26,27 +26,20 @@ pub fn height(i: u32, k: u32) -> i16 {
     ((x * x + z * z) / 6 + wave(3 * i as i32 + 2 * k as i32)) as i16
 }
 
+/// The terrain's grid: cells of 0.5 from the origin, heights in steps of 1/64.
+pub fn shape() -> HeightfieldShape<I16F16> {
+    HeightfieldShape {
+        origin: Vec3::ZERO,
+        spacing: I16F16::from_bits(SPACING_BITS),
+        unit: I16F16::from_bits(UNIT_BITS),
+        columns: CELLS,
+        rows: CELLS,
+    }
+}
+
 /// The terrain's heights, row by row (x fastest).
 pub fn heights() -> Vec<i16> {
     (0..=CELLS)
         .flat_map(|k| (0..=CELLS).map(move |i| height(i, k)))
         .collect()
-}
-
-/// Shared vertices (exact coordinates merged, in order of first use) and index triples.
-pub fn indexed<S: Scalar>(tris: &[Triangle<S>]) -> (Vec<Vec3<S>>, Vec<[u32; 3]>) {
-    let (mut vertices, mut seen) = (Vec::new(), HashMap::new());
-    let key = |p: Vec3<S>| p.to_array().map(|c| c.to_f64().to_bits());
-    let indices = tris
-        .iter()
-        .map(|t| {
-            t.vertices().map(|p| {
-                *seen.entry(key(p)).or_insert_with(|| {
-                    vertices.push(p);
-                    vertices.len() as u32 - 1
-                })
-            })
-        })
-        .collect();
-    (vertices, indices)
 }

@@ -1,6 +1,8 @@
 //! Bakes the firmware's levels (`examples/data/ramp.obj` in every scalar, and in `f32` with
-//! leaves of four too; `arena.obj` in I16F16) into `OUT_DIR` with this crate's own bake, so `tests/baked.rs` can compile the
-//! statics and check them against the run-time build.
+//! leaves of four too; `arena.obj` in I16F16), their compact forms (the ramp in `f32`, the arena
+//! in I16F16) and the `hills.png` heightmap (I16F16 and `f32`) into `OUT_DIR` with this crate's
+//! own bake, so `tests/baked.rs` can compile the statics and check them against the run-time
+//! build.
 
 use std::path::{Path, PathBuf};
 
@@ -33,4 +35,22 @@ fn main() {
         "arena_i16f16.rs",
         level::bake::<fixed::types::I16F16>(&arena),
     );
+    write("ramp_compact_f32.rs", level::bake_compact::<f32>(&ramp));
+    write(
+        "arena_compact_i16f16.rs",
+        level::bake_compact::<fixed::types::I16F16>(&arena),
+    );
+    let path = data.join("hills.png");
+    println!("cargo::rerun-if-changed={}", path.display());
+    let hills = level::load_heightmap(&path).unwrap_or_else(|e| panic!("{e}"));
+    let placement = level::Placement {
+        origin: [-8.0, -1.0, -8.0],
+        spacing: 0.5,
+        height: 4.0,
+    };
+    write(
+        "hills_i16f16.rs",
+        hills.bake::<fixed::types::I16F16>(&placement),
+    );
+    write("hills_f32.rs", hills.bake::<f32>(&placement));
 }

@@ -38,10 +38,10 @@ fn main() -> ! {
     let (throws, steps) = (arena::THROWS, arena::STEPS_PER_THROW);
     let c = arena::simulate::<I16F16, _>(&compact::MESH, throws, steps);
     hprintln!("compact I16F16 {:016x}", c.hash);
-    let h = arena::simulate::<I16F16, _>(&terrain::FIELD, throws, steps);
+    let h = arena::simulate::<I16F16, _>(&terrain::HEIGHTFIELD, throws, steps);
     hprintln!("heightfield I16F16 {:016x}", h.hash);
     // Both as one level: the terrain inside the arena's walls.
-    let both = Compound::new(&compact::MESH, &terrain::FIELD);
+    let both = Compound::new(&compact::MESH, &terrain::HEIGHTFIELD);
     let b = both.map(|level| arena::simulate::<I16F16, _>(&level, throws, steps));
     match &b {
         Ok(b) => hprintln!("compound I16F16 {:016x}", b.hash),
@@ -51,7 +51,7 @@ fn main() -> ! {
     // The walk's own stack: RAM painted anew, then what of it the walk wrote.
     let again = stack::paint();
     let free = again.untouched();
-    let (walked, grounded) = walker::walk::<I16F16, _>(&terrain::FIELD);
+    let (walked, grounded) = walker::walk::<I16F16, _>(&terrain::HEIGHTFIELD);
     let used = free - again.untouched();
     hprintln!("character I16F16 {:016x}", walked);
     use core::mem::size_of_val as size;
@@ -69,7 +69,7 @@ fn main() -> ! {
     );
     hprintln!(
         "heightfield: {} triangles, {} bytes in flash; {} contacts, {} escapes",
-        terrain::FIELD.len(),
+        terrain::HEIGHTFIELD.len(),
         size(&terrain::HEIGHTS) + size(&terrain::CELLS),
         h.contacts,
         h.escapes

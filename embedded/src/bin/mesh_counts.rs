@@ -90,7 +90,7 @@ fn query_arena_compact(s: &Sweep<I16F16>) -> Hit {
 #[inline(never)]
 #[unsafe(no_mangle)]
 fn query_terrain_air(s: &Sweep<I16F16>) -> Hit {
-    terrain::FIELD.cast(s)
+    terrain::HEIGHTFIELD.cast(s)
 }
 
 #[inline(never)]
@@ -98,7 +98,7 @@ fn query_terrain_air(s: &Sweep<I16F16>) -> Hit {
 fn query_terrain_ground(s: &Sweep<I16F16>) -> Hit {
     // Not the same body as `query_terrain_air`'s, so the linker keeps the two apart.
     core::hint::black_box(2u8);
-    terrain::FIELD.cast(s)
+    terrain::HEIGHTFIELD.cast(s)
 }
 
 /// A cache's slots beside the terrain and the compact arena (100 bytes each in `I16F16` here).
@@ -211,7 +211,7 @@ fn main() -> ! {
         1,
         100,
     );
-    let visit: Visit = |a, b, f| terrain::FIELD.visit(a, b, f);
+    let visit: Visit = |a, b, f| terrain::HEIGHTFIELD.visit(a, b, f);
     let field = terrain_run(
         &Probe(query_terrain_air, visit),
         &Probe(query_terrain_ground, visit),
@@ -223,7 +223,7 @@ fn main() -> ! {
         arena::simulate::<I16F16, _>(&Via(&cached, query_arena_compact_cached), 1, 100)
     };
     let field_cached = {
-        let cached = CachedField::new(terrain::FIELD);
+        let cached = CachedField::new(terrain::HEIGHTFIELD);
         terrain_run(
             &Via(&cached, query_terrain_air_cached),
             &Via(&cached, query_terrain_ground_cached),

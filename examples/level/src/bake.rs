@@ -2,6 +2,7 @@
 //! run time, written out as Rust source through `const` constructors, one line per node or
 //! triangle.
 
+use super::source::{self, list, point};
 use super::{Level, LevelError, Problem};
 use ballcast::bvh::{LeafSize, nodes_for_leaves};
 use ballcast::{Degenerates, Error, Mesh, Node, Scalar, StandardTriangle, Triangle, Vec3};
@@ -18,8 +19,8 @@ pub trait Emit: Scalar {
     const BITS: &'static str;
     /// The integer type of the raw bits of `UNIT`.
     const UNIT_BITS: &'static str;
-    /// The `use` line the source needs for the two types (empty for floats).
-    const IMPORT: &'static str;
+    /// Whether it is a `fixed` type (imported through `ballcast::fixed`).
+    const FIXED: bool;
     /// A value's raw bits as a literal.
     fn bits(self) -> String;
     /// A unit component's raw bits as a literal.
@@ -27,13 +28,13 @@ pub trait Emit: Scalar {
 }
 
 macro_rules! emit {
-    ($s:ty, $u:ty, $bits:ty, $ubits:ty, $import:expr) => {
+    ($s:ty, $u:ty, $bits:ty, $ubits:ty, $fixed:expr) => {
         impl Emit for $s {
             const NAME: &'static str = stringify!($s);
             const UNIT: &'static str = stringify!($u);
             const BITS: &'static str = stringify!($bits);
             const UNIT_BITS: &'static str = stringify!($ubits);
-            const IMPORT: &'static str = $import;
+            const FIXED: bool = $fixed;
             fn bits(self) -> String {
                 self.to_bits().to_string()
             }
@@ -43,39 +44,82 @@ macro_rules! emit {
         }
     };
 }
-emit!(f32, f32, u32, u32, "");
-emit!(f64, f64, u64, u64, "");
-emit!(
-    I16F16,
-    I2F30,
-    i32,
-    i32,
-    "use ballcast::fixed::types::{I2F30, I16F16};"
-);
-emit!(
-    I32F32,
-    I2F62,
-    i64,
-    i64,
-    "use ballcast::fixed::types::{I2F62, I32F32};"
-);
+emit!(f32, f32, u32, u32, false);
+emit!(f64, f64, u64, u64, false);
+emit!(I16F16, I2F30, i32, i32, true);
+emit!(I32F32, I2F62, i64, i64, true);
+
+/// The form a level was baked into, with what sizes it.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Form {
+    /// A prepared [`Mesh`]: every triangle prepared, under a tree of `nodes` nodes with leaves
+    /// of up to `leaf_size` triangles.
+    Mesh {
+        /// Tree nodes.
+        nodes: usize,
+        /// The most triangles in a leaf.
+        leaf_size: LeafSize,
+    },
+    /// A [`ballcast::CompactMesh`]: shared vertices and three indices a triangle, under a tree
+    /// of `nodes` nodes with leaves of four.
+    Compact {
+        /// Tree nodes.
+        nodes: usize,
+        /// Shared vertices.
+        vertices: usize,
+        /// The index type (`u16` or `u32`).
+        index: &'static str,
+    },
+    /// A [`ballcast::Heightfield`]: a grid of 16-bit heights.
+    Heightfield {
+        /// Cells along x.
+        columns: u32,
+        /// Cells along z.
+        rows: u32,
+        /// Cells left out as holes.
+        holes: usize,
+    },
+}
+
+impl fmt::Display for Form {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Self::Mesh { nodes, leaf_size } => write!(
+                f,
+                "prepared mesh, {nodes} nodes (leaves of up to {})",
+                leaf_size.triangles()
+            ),
+            Self::Compact {
+                nodes,
+                vertices,
+                index,
+            } => write!(
+                f,
+                "compact mesh, {nodes} nodes (leaves of up to 4), {vertices} vertices, {index} indices"
+            ),
+            Self::Heightfield {
+                columns,
+                rows,
+                holes,
+            } => write!(f, "heightfield, {columns} x {rows} cells, {holes} holes"),
+        }
+    }
+}
 
 /// What a bake made of a level.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Stats {
     /// The scalar.
     pub scalar: &'static str,
-    /// Triangles in the level.
+    /// The form and its sizes.
+    pub form: Form,
+    /// Triangles in the level (a heightfield's: two a cell, holes included).
     pub triangles: usize,
     /// Input indices of the degenerate triangles left out.
     pub skipped: Vec<usize>,
     /// Two-sided triangles kept.
     pub two_sided: usize,
-    /// Tree nodes.
-    pub nodes: usize,
-    /// The most triangles in a leaf of the tree.
-    pub leaf_size: LeafSize,
-    /// Bytes of the statics: prepared triangles, order and nodes.
+    /// Bytes of the statics.
     pub bytes: usize,
     /// The largest coordinate's magnitude.
     pub extent: f64,
@@ -92,14 +136,13 @@ impl fmt::Display for Stats {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         write!(
             f,
-            "{}: {} triangles, {} degenerate skipped {:?}, {} two-sided, {} nodes (leaves of up to {}), {} bytes in flash ({:.1} per triangle)",
+            "{} {}: {} triangles, {} degenerate skipped {:?}, {} two-sided, {} bytes in flash ({:.1} per triangle)",
             self.scalar,
+            self.form,
             self.triangles,
             self.skipped.len(),
             self.skipped,
             self.two_sided,
-            self.nodes,
-            self.leaf_size.triangles(),
             self.bytes,
             self.per_triangle()
         )
@@ -174,21 +217,44 @@ pub fn bake_with<S: Scalar + Emit>(
     leaf_size: LeafSize,
 ) -> Result<Baked, LevelError> {
     let sources = triangles::<S>(level)?;
+    with_mesh(level, &sources, leaf_size, |mesh| {
+        let stats = Stats {
+            scalar: S::NAME,
+            form: Form::Mesh {
+                nodes: mesh.nodes().len(),
+                leaf_size,
+            },
+            triangles: sources.len(),
+            skipped: skipped(&sources),
+            two_sided: mesh.triangles().iter().filter(|t| t.is_two_sided()).count(),
+            bytes: size_of_val(mesh.triangles())
+                + size_of_val(mesh.order())
+                + size_of_val(mesh.nodes()),
+            extent: extent(level),
+        };
+        let source = write::<S>(mesh, level, &stats);
+        Baked { source, stats }
+    })
+}
+
+/// `f` of the mesh [`Mesh::build_sided`] makes of the level's triangles `sources` at run time
+/// (degenerate ones skipped, the level's two-sided ones two-sided).
+///
+/// Errors: [`Problem::Mesh`] when the build refuses a triangle, [`Problem::AllDegenerate`]
+/// when none is left.
+pub(crate) fn with_mesh<S: Scalar, R>(
+    level: &Level,
+    sources: &[Triangle<S>],
+    leaf_size: LeafSize,
+    f: impl FnOnce(&Mesh<S>) -> R,
+) -> Result<R, LevelError> {
     let n = sources.len();
-    let skipped: Vec<usize> = (0..n)
-        .filter(|&i| {
-            matches!(
-                StandardTriangle::new(&sources[i]),
-                Err(Error::Degenerate { .. })
-            )
-        })
-        .collect();
     let mut nodes = vec![Node::default(); nodes_for_leaves(n, leaf_size)];
     let mut prepared = vec![Mesh::<S>::filler(); n];
     let mut order = vec![0u32; n];
     let mut scratch = vec![0u64; 6 * n];
     let (mesh, _) = Mesh::build_sided(
-        &sources,
+        sources,
         |i| level.is_two_sided(i),
         Degenerates::Skip.with_leaf_size(leaf_size),
         &mut nodes,
@@ -203,49 +269,32 @@ pub fn bake_with<S: Scalar + Emit>(
             Problem::AllDegenerate { count: n },
         ));
     }
-    let extent = level
+    Ok(f(&mesh))
+}
+
+/// The indices of the degenerate triangles among `sources`, which a bake leaves out.
+pub(crate) fn skipped<S: Scalar>(sources: &[Triangle<S>]) -> Vec<usize> {
+    let degenerate = |t| matches!(StandardTriangle::new(t), Err(Error::Degenerate { .. }));
+    (0..sources.len())
+        .filter(|&i| degenerate(&sources[i]))
+        .collect()
+}
+
+/// The largest coordinate's magnitude in the level.
+pub(crate) fn extent(level: &Level) -> f64 {
+    level
         .triangles
         .iter()
         .flatten()
         .flatten()
-        .fold(0.0f64, |m, c| m.max(c.abs()));
-    let stats = Stats {
-        scalar: S::NAME,
-        triangles: n,
-        skipped,
-        two_sided: mesh.triangles().iter().filter(|t| t.is_two_sided()).count(),
-        nodes: mesh.nodes().len(),
-        leaf_size,
-        bytes: size_of_val(mesh.triangles())
-            + size_of_val(mesh.order())
-            + size_of_val(mesh.nodes()),
-        extent,
-    };
-    let source = write::<S>(&mesh, level, &stats);
-    Ok(Baked { source, stats })
+        .fold(0.0f64, |m, c| m.max(c.abs()))
 }
 
 fn write<S: Scalar + Emit>(mesh: &Mesh<S>, level: &Level, stats: &Stats) -> String {
     let (s, u, b, ub) = (S::NAME, S::UNIT, S::BITS, S::UNIT_BITS);
-    let mut o = String::new();
-    let _ = writeln!(
-        o,
-        // Quoted and escaped: a path may hold anything, a line break included.
-        "// Generated by ballcast-level from {:?}: do not edit.",
-        level.path.display().to_string()
-    );
-    let _ = writeln!(o, "// {stats}");
-    let _ = writeln!(
-        o,
-        "use ballcast::{{Edge, Grid, Mesh, Node, Parts, StandardTriangle, Vec3}};"
-    );
-    let _ = writeln!(o, "{}", S::IMPORT);
-    let _ = writeln!(o, "const fn s(b: {b}) -> {s} {{ {s}::from_bits(b) }}");
+    let items = "Edge, Grid, Mesh, Node, Parts, StandardTriangle, Vec3";
+    let mut o = source::header::<S>(&level.path, stats, items, true);
     let _ = writeln!(o, "const fn u(b: {ub}) -> {u} {{ {u}::from_bits(b) }}");
-    let _ = writeln!(
-        o,
-        "const fn v(p: [{b}; 3]) -> Vec3<{s}> {{ Vec3::new(s(p[0]), s(p[1]), s(p[2])) }}"
-    );
     let _ = writeln!(
         o,
         "const fn w(p: [{ub}; 3]) -> Vec3<{u}> {{ Vec3::new(u(p[0]), u(p[1]), u(p[2])) }}"
@@ -263,31 +312,8 @@ fn write<S: Scalar + Emit>(mesh: &Mesh<S>, level: &Level, stats: &Stats) -> Stri
          shape: [s(shape[0]), s(shape[1]), s(shape[2])], normal: v(normal), \
          edges: [e(dirs[0], lens[0]), e(dirs[1], lens[1]), e(dirs[2], lens[2])], features, two_sided, world_heights }})\n}}"
     );
-    let _ = writeln!(
-        o,
-        "const fn n(boxes: [[u8; 4]; 6], shift: [u8; 3], count: u8, children: [u32; 4]) -> Node {{ Node {{ boxes, shift, count, children }} }}"
-    );
-    let list = |v: &[String]| format!("[{}]", v.join(", "));
-    let vs = |p: Vec3<S>| list(&p.to_array().map(S::bits));
     let ws = |p: Vec3<S::Unit>| list(&[p.x, p.y, p.z].map(S::unit_bits));
-    let nodes = mesh.nodes();
-    let _ = writeln!(
-        o,
-        "/// The tree's nodes.\npub static NODES: [Node; {}] = [",
-        nodes.len()
-    );
-    for nd in nodes {
-        let boxes: Vec<String> = nd.boxes.iter().map(|b| format!("{b:?}")).collect();
-        let _ = writeln!(
-            o,
-            "    n({}, {:?}, {}, {:?}),",
-            list(&boxes),
-            nd.shift,
-            nd.count,
-            nd.children
-        );
-    }
-    let _ = writeln!(o, "];");
+    source::nodes(&mut o, mesh.nodes());
     let tris = mesh.triangles();
     let _ = writeln!(
         o,
@@ -306,10 +332,10 @@ fn write<S: Scalar + Emit>(mesh: &Mesh<S>, level: &Level, stats: &Stats) -> Stri
         let _ = writeln!(
             o,
             "    t({}, {}, {}, {}, {}, {}, {}, {}, {}),",
-            vs(p.origin),
+            point(p.origin),
             list(&axes),
             list(&p.shape.map(S::bits)),
-            vs(p.normal),
+            point(p.normal),
             list(&dirs),
             list(&lens),
             p.features,

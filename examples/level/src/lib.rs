@@ -13,10 +13,15 @@
 //! nothing panics on a malformed file.
 
 mod bake;
+mod compact;
 mod gltf_file;
+mod heightmap;
 mod obj;
+mod source;
 
-pub use bake::{Baked, Emit, Stats, bake, bake_with, triangles, verdicts};
+pub use bake::{Baked, Emit, Form, Stats, bake, bake_with, triangles, verdicts};
+pub use compact::bake_compact;
+pub use heightmap::{Heightmap, Placement, bake_heightfield, load_heightmap};
 
 use std::fmt;
 use std::path::{Path, PathBuf};
@@ -116,6 +121,22 @@ pub enum Problem {
     },
     /// The mesh build refused it.
     Mesh(ballcast::MeshError),
+    /// Its compact form could not be made (the message).
+    Compact(String),
+    /// A heightmap image that is not grey: a colour pixel at column `x`, row `y`.
+    Colour {
+        /// The pixel's column.
+        x: u32,
+        /// The pixel's row.
+        y: u32,
+    },
+    /// The heightfield build refused it.
+    Heightfield(ballcast::HeightfieldError),
+    /// A heightmap's height (of white above black) that is not positive and finite.
+    Height {
+        /// The height given.
+        value: f64,
+    },
 }
 
 impl fmt::Display for LevelError {
@@ -150,6 +171,17 @@ impl fmt::Display for LevelError {
                  coordinate {value}, outside {scalar}'s range ±{limit}"
             ),
             Problem::Mesh(e) => write!(f, "mesh build refused: {e}"),
+            Problem::Compact(m) => write!(f, "compact mesh refused: {m}"),
+            Problem::Colour { x, y } => write!(
+                f,
+                "pixel ({x}, {y}) (column, row from the top left) is coloured: a heightmap's \
+                 pixels are grey (red, green and blue equal)"
+            ),
+            Problem::Heightfield(e) => write!(f, "heightfield build refused: {e}"),
+            Problem::Height { value } => write!(
+                f,
+                "the height of white above black must be positive and finite, not {value}"
+            ),
         }
     }
 }

@@ -1,10 +1,13 @@
 //! The statics the bake writes (`build.rs` bakes the firmware's levels into `OUT_DIR`, as the
 //! firmware's build script does) are exactly the mesh `Mesh::build` makes of the loaded level
-//! at run time: nodes, prepared triangles with their active edges, order and grid, bit for bit.
+//! at run time: nodes, prepared triangles with their active edges, order and grid, bit for bit;
+//! likewise the compact meshes and the heightfields.
 
 use ballcast::bvh::{LeafSize, nodes_for};
-use ballcast::{Degenerates, Mesh, MeshError, Node, Scalar};
-use ballcast_level::{Emit, load, triangles};
+use ballcast::heightfield::HOLE;
+use ballcast::import::weld;
+use ballcast::{CompactMesh, Degenerates, Heightfield, Mesh, MeshError, MeshIndex, Node, Scalar};
+use ballcast_level::{Emit, Placement, load, load_heightmap, triangles};
 
 mod ramp_f32 {
     include!(concat!(env!("OUT_DIR"), "/ramp_f32.rs"));
@@ -29,6 +32,20 @@ mod ramp_i32f32 {
 mod arena_i16f16 {
     mod fixed {}
     include!(concat!(env!("OUT_DIR"), "/arena_i16f16.rs"));
+}
+mod ramp_compact_f32 {
+    include!(concat!(env!("OUT_DIR"), "/ramp_compact_f32.rs"));
+}
+mod arena_compact_i16f16 {
+    mod fixed {}
+    include!(concat!(env!("OUT_DIR"), "/arena_compact_i16f16.rs"));
+}
+mod hills_i16f16 {
+    mod fixed {}
+    include!(concat!(env!("OUT_DIR"), "/hills_i16f16.rs"));
+}
+mod hills_f32 {
+    include!(concat!(env!("OUT_DIR"), "/hills_f32.rs"));
 }
 
 fn equals_run_time_build<S: Scalar + Emit>(
@@ -86,6 +103,70 @@ fn baked_ramp_equals_run_time_build_in_every_scalar() {
 #[test]
 fn baked_arena_equals_run_time_build() {
     equals_run_time_build(&arena_i16f16::MESH, "arena.obj", 2168);
+}
+
+/// The compact statics are [`CompactMesh::compact`] of the mesh built at run time with leaves of
+/// four over the level's welded vertices: tree, vertices, indices, order and bytes.
+fn compact_equals_run_time_build<S: Scalar + Emit, I: MeshIndex>(
+    baked: &CompactMesh<'static, S, I>,
+    file: &str,
+) {
+    let level = load(format!("{}/../data/{file}", env!("CARGO_MANIFEST_DIR"))).unwrap();
+    let sources = triangles::<S>(&level).unwrap();
+    let n = sources.len();
+    let (vertices, indices) = weld(&sources).unwrap();
+    let mut nodes = vec![Node::default(); nodes_for(n)];
+    let mut prepared = vec![Mesh::<S>::filler(); n];
+    let (mut order, mut scratch) = (vec![0u32; n], vec![0u64; 6 * n]);
+    let four = Degenerates::Skip.with_leaf_size(LeafSize::Four);
+    let build = Mesh::build(
+        &sources,
+        four,
+        &mut nodes,
+        &mut prepared,
+        &mut order,
+        &mut scratch,
+    );
+    let (mesh, _) = build.unwrap();
+    let (mut t, mut o, mut b) = (
+        vec![[I::default(); 3]; n],
+        vec![I::default(); n],
+        vec![0; n],
+    );
+    let built = CompactMesh::compact(&mesh, &vertices, &indices, &mut t, &mut o, &mut b).unwrap();
+    assert_eq!(baked.len(), n);
+    assert_eq!(*baked, built);
+}
+
+#[test]
+fn baked_compact_meshes_equal_run_time_builds() {
+    compact_equals_run_time_build(&ramp_compact_f32::MESH, "ramp.obj");
+    compact_equals_run_time_build(&arena_compact_i16f16::MESH, "arena.obj");
+}
+
+/// The heightfield statics are [`Heightfield::build`] of the loaded heightmap, placed as
+/// `build.rs` places it; the hole pixel's cells are holes.
+fn heightfield_equals_run_time_build<S: Scalar + Emit>(baked: &Heightfield<'static, S>) {
+    let map = load_heightmap(format!("{}/../data/hills.png", env!("CARGO_MANIFEST_DIR"))).unwrap();
+    let placement = Placement {
+        origin: [-8.0, -1.0, -8.0],
+        spacing: 0.5,
+        height: 4.0,
+    };
+    let mut cells = vec![0u8; 32 * 32];
+    let hole = |i: u32, k: u32| map.holes[k as usize * 32 + i as usize];
+    let (shape, heights) = map.grid::<S>(&placement).unwrap();
+    let built = Heightfield::build(shape, &heights, hole, &mut cells);
+    assert_eq!(Ok(*baked), built);
+    // Four transparent pixels cut the nine cells around them.
+    let holes = baked.cells().iter().filter(|&&c| c & HOLE != 0).count();
+    assert_eq!((baked.len(), holes), (2 * 32 * 32, 9));
+}
+
+#[test]
+fn baked_heightfields_equal_run_time_builds() {
+    heightfield_equals_run_time_build(&hills_i16f16::HEIGHTFIELD);
+    heightfield_equals_run_time_build(&hills_f32::HEIGHTFIELD);
 }
 
 /// The source's header names the file it came from, quoted: a path holding a line break (any

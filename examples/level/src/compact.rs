@@ -1,0 +1,112 @@
+//! The compact bake: a level as a [`CompactMesh`], for flash-limited parts. Its vertices are
+//! shared (corners equal bit for bit in the scalar welded, [`ballcast::import::weld`]); each
+//! triangle keeps three vertex indices, its index in the level and a byte of active edges and
+//! sidedness, under the tree of the prepared mesh with leaves of four. The answers are the
+//! prepared mesh's, bit for bit ([`CompactMesh::compact`] prepares every triangle again and
+//! checks it); the price is a preparation for each triangle a query reaches.
+
+use super::bake::{extent, skipped, triangles, with_mesh};
+use super::source::{self, point};
+use super::{Baked, Emit, Form, Level, LevelError, Problem, Stats};
+use ballcast::bvh::LeafSize;
+use ballcast::import::weld;
+use ballcast::{CompactError, CompactMesh, Mesh, MeshIndex, Scalar, Vec3};
+use std::fmt::Write;
+
+/// Bakes `level` for scalar `S` as a [`CompactMesh`]: `u16` indices where the level's vertices
+/// and triangles number at most 65 536, `u32` beyond. The source defines `NODES`, `VERTICES`,
+/// `TRIANGLES`, `ORDER`, `BYTES` and `MESH: CompactMesh<'static, S, u16>` (or `u32`); check
+/// the statics in a test against [`CompactMesh::compact`] of the run-time build with leaves of
+/// four (`CompactMesh` compares as `==`).
+///
+/// Errors: those of [`bake`](crate::bake), and [`Problem::Compact`] (not expected: the
+/// vertices are the mesh's own).
+pub fn bake_compact<S: Scalar + Emit>(level: &Level) -> Result<Baked, LevelError> {
+    let sources = triangles::<S>(level)?;
+    let fail = |p| LevelError::new(&level.path, p);
+    let (vertices, indices) = weld(&sources).map_err(|e| fail(Problem::Compact(e.to_string())))?;
+    let small = vertices.len().max(sources.len()) <= u16::MAX as usize + 1;
+    let welded = (vertices.as_slice(), indices.as_slice());
+    with_mesh(level, &sources, LeafSize::Four, |mesh| {
+        let skipped = skipped(&sources);
+        if small {
+            write::<S, u16>(level, mesh, welded, skipped, "u16")
+        } else {
+            write::<S, u32>(level, mesh, welded, skipped, "u32")
+        }
+    })?
+    .map_err(|e| fail(Problem::Compact(e.to_string())))
+}
+
+/// The compact form of `mesh` with indices `I` (named `index`), as source.
+fn write<S: Scalar + Emit, I: MeshIndex>(
+    level: &Level,
+    mesh: &Mesh<S>,
+    (vertices, indices): (&[Vec3<S>], &[[u32; 3]]),
+    skipped: Vec<usize>,
+    index: &'static str,
+) -> Result<Baked, CompactError> {
+    let k = mesh.len();
+    let (mut t, mut o, mut b) = (
+        vec![[I::default(); 3]; k],
+        vec![I::default(); k],
+        vec![0; k],
+    );
+    let compact = CompactMesh::compact(mesh, vertices, indices, &mut t, &mut o, &mut b)?;
+    let (nodes, grid, vertices, triangles, order, bytes, class) = compact.parts();
+    let stats = Stats {
+        scalar: S::NAME,
+        form: Form::Compact {
+            nodes: nodes.len(),
+            vertices: vertices.len(),
+            index,
+        },
+        triangles: level.triangles.len(),
+        skipped,
+        two_sided: mesh.triangles().iter().filter(|t| t.is_two_sided()).count(),
+        bytes: size_of_val(nodes)
+            + size_of_val(vertices)
+            + size_of_val(triangles)
+            + size_of_val(order)
+            + size_of_val(bytes),
+        extent: extent(level),
+    };
+    let s = S::NAME;
+    let mut out = source::header::<S>(&level.path, &stats, "CompactMesh, Grid, Node, Vec3", false);
+    source::nodes(&mut out, nodes);
+    let _ = writeln!(
+        out,
+        "/// The shared vertices.\npub static VERTICES: [Vec3<{s}>; {}] = [",
+        vertices.len()
+    );
+    for &p in vertices {
+        let _ = writeln!(out, "    v({}),", point(p));
+    }
+    let _ = writeln!(out, "];");
+    let each = "Per triangle, in the tree's leaf order:";
+    let corners = format!("[{index}; 3]");
+    source::array(
+        &mut out,
+        &format!("{each} its vertices."),
+        "TRIANGLES",
+        &corners,
+        triangles,
+        8,
+    );
+    source::array(
+        &mut out,
+        &format!("{each} its index in the level."),
+        "ORDER",
+        index,
+        order,
+        16,
+    );
+    let doc = format!("{each} its active edges and vertices, and whether it is two-sided.");
+    source::array(&mut out, &doc, "BYTES", "u8", bytes, 16);
+    let _ = writeln!(
+        out,
+        "/// The mesh, in flash.\npub static MESH: CompactMesh<'static, {s}, {index}> = CompactMesh::from_parts(&NODES, Grid {{ exponent: {}, lo: {:?}, hi: {:?} }}, &VERTICES, &TRIANGLES, &ORDER, &BYTES, {class});",
+        grid.exponent, grid.lo, grid.hi
+    );
+    Ok(Baked { source: out, stats })
+}
