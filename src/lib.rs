@@ -174,7 +174,7 @@ pub use heightfield::HeightfieldBuf;
 pub use heightfield::{Heightfield, HeightfieldError, HeightfieldShape};
 pub use hit::{Contact, Hit};
 pub use merge::PLANES;
-pub use mesh::{Buffer, Degenerates, Mesh, MeshError, MeshOptions};
+pub use mesh::{Buffer, Degenerates, Mesh, MeshError, MeshOptions, MeshPart};
 #[cfg(feature = "alloc")]
 pub use mesh_buf::MeshBuf;
 pub use penetration::{Penetration, penetration};

@@ -2,13 +2,15 @@
 //! `static` in flash, a caller's buffer, `Vec`s on a PC), answering exactly as a linear scan.
 
 mod build;
+mod error;
+
+pub use error::{Buffer, MeshError, MeshPart};
 
 use crate::bvh::{self, Grid, LeafSize, Node};
 use crate::compound::CompoundPart;
 use crate::merge::{Earliest, earliest_of};
-use crate::{Error, Features, Geometry, Parts, Scalar, SceneHit, StandardTriangle, Sweep};
+use crate::{Features, Geometry, Parts, Scalar, SceneHit, StandardTriangle, Sweep};
 use crate::{Triangle, Vec3};
-use core::fmt;
 
 /// A triangle mesh with a bounding volume hierarchy, borrowing its parts.
 ///
@@ -93,77 +95,6 @@ impl From<Degenerates> for MeshOptions {
     }
 }
 
-/// Which buffer given to [`Mesh::build`] was too small.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum Buffer {
-    /// The nodes: [`nodes_for_leaves`](crate::bvh::nodes_for_leaves) of the triangles kept.
-    Nodes,
-    /// The prepared triangles: one per input triangle.
-    Triangles,
-    /// The order: one per input triangle.
-    Order,
-    /// The scratch words: six per input triangle.
-    Scratch,
-}
-
-impl fmt::Display for Buffer {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(match self {
-            Buffer::Nodes => "nodes (bvh::nodes_for_leaves of the triangles kept)",
-            Buffer::Triangles => "triangles (one per input triangle)",
-            Buffer::Order => "order (one per input triangle)",
-            Buffer::Scratch => "scratch (six words per input triangle)",
-        })
-    }
-}
-
-/// Why [`Mesh::build`] or [`Mesh::verify`] refused.
-#[non_exhaustive]
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub enum MeshError {
-    /// Input triangle `index` was refused by [`StandardTriangle::new`] for `error` (a degenerate
-    /// one only under [`Degenerates::Refuse`]).
-    Triangle {
-        /// Its index in the input.
-        index: usize,
-        /// Why.
-        error: Error,
-    },
-    /// A buffer holds fewer than `needed` elements.
-    Capacity {
-        /// Which one.
-        buffer: Buffer,
-        /// How many it must hold.
-        needed: usize,
-        /// How many it holds.
-        given: usize,
-    },
-    /// More than 2^24 triangles.
-    TooMany,
-    /// [`Mesh::verify`]: the parts are not what the build makes of the given triangles.
-    Mismatch,
-}
-
-impl fmt::Display for MeshError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self {
-            MeshError::Triangle { error, .. } => write!(f, "{error}"),
-            MeshError::Capacity {
-                buffer,
-                needed,
-                given,
-            } => write!(
-                f,
-                "the buffer of {buffer} holds {given}, too few: {needed} needed"
-            ),
-            MeshError::TooMany => f.write_str("more than 2^24 triangles"),
-            MeshError::Mismatch => f.write_str("mesh parts differ from the build of its triangles"),
-        }
-    }
-}
-
-impl core::error::Error for MeshError {}
-
 impl<'a, S: Scalar> Mesh<'a, S> {
     /// A mesh from parts made by [`Mesh::build`] (or baked from them), in a `const` context, so
     /// a mesh can be a `static`. Nothing is checked here: check baked parts with
@@ -245,7 +176,8 @@ impl<'a, S: Scalar> Mesh<'a, S> {
     /// those the parts were built with, the leaf size too (parts built with leaves of four
     /// differ from the default's: [`MeshError::Mismatch`]).
     ///
-    /// Errors: those of [`build`](Self::build), or [`MeshError::Mismatch`] on any difference.
+    /// Errors: those of [`build`](Self::build), or [`MeshError::Mismatch`] naming the first
+    /// part that differs.
     pub fn verify(
         &self,
         sources: &[Triangle<S>],
@@ -281,12 +213,9 @@ impl<'a, S: Scalar> Mesh<'a, S> {
         let (built, _) = Mesh::build_sided(
             sources, two_sided, options, nodes, triangles, order, scratch,
         )?;
-        let mut pairs = built.triangles.iter().zip(self.triangles);
-        let identical = pairs.all(|(a, b)| a.to_parts().identical(&b.to_parts()));
-        if built == *self && identical {
-            Ok(())
-        } else {
-            Err(MeshError::Mismatch)
+        match error::first_difference(&built, self) {
+            None => Ok(()),
+            Some(part) => Err(MeshError::Mismatch { part }),
         }
     }
 

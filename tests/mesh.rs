@@ -10,8 +10,8 @@ use ballcast::bvh::{LeafSize, nodes_for, nodes_for_leaves};
 use ballcast::penetration::{Penetration, penetration};
 use ballcast::winding::winding;
 use ballcast::{
-    Buffer, Contact, Degenerates, Geometry, Mesh, MeshError, Node, Scalar, ScalarType, Scene,
-    Sweep, Triangle, Vec3,
+    Buffer, Contact, Degenerates, Geometry, Mesh, MeshError, MeshPart, Node, Scalar, ScalarType,
+    Scene, StandardTriangle, Sweep, Triangle, Vec3,
 };
 use common::{P, Rng, v};
 use fixed::types::{I16F16, I32F32};
@@ -725,25 +725,46 @@ fn t_junction_among_many_posts_has_the_same_edges_for_every_leaf_size<S: Scalar>
 }
 
 /// `Mesh::verify`, the check for baked parts: a mesh from `from_parts` passes against its
-/// triangles, and fails once a triangle of the input differs.
+/// triangles, and fails once a part or a triangle of the input differs, naming the first part
+/// that differs: the prepared triangle (by its input index) where only its baked active edges
+/// do, a node where a vertex of the input moved.
 fn verify_baked_parts<S: Scalar>() {
     let mut rng = Rng(0x5eed_0009);
     let src = heightfield(&mut rng, 6, 1.0, 0.65);
     let mut input: Vec<Triangle<S>> = src.iter().map(|&t| tri(t)).collect();
     let owned = build(&input, Degenerates::Refuse).unwrap();
     let n = input.len();
-    let verify = |input: &[Triangle<S>]| {
+    let verify = |baked: &Mesh<'_, S>, input: &[Triangle<S>]| {
         let mut nodes = vec![Node::default(); nodes_for(n)];
         let mut tris = vec![Mesh::<S>::filler(); n];
         let mut order = vec![0u32; n];
         let mut scratch = vec![0u64; 6 * n];
         let deg = Degenerates::Refuse;
-        let mesh = owned.mesh();
-        mesh.verify(input, deg, &mut nodes, &mut tris, &mut order, &mut scratch)
+        baked.verify(input, deg, &mut nodes, &mut tris, &mut order, &mut scratch)
     };
-    assert_eq!(verify(&input), Ok(()));
+    let mesh = owned.mesh();
+    assert_eq!(verify(&mesh, &input), Ok(()));
+    // Slot 5's triangle baked with one active edge bit flipped.
+    let mut triangles = mesh.triangles().to_vec();
+    let mut parts = triangles[5].to_parts();
+    parts.features ^= 1;
+    triangles[5] = StandardTriangle::from_parts(parts);
+    let tampered = Mesh::from_parts(mesh.nodes(), &triangles, mesh.order(), mesh.grid());
+    let part = MeshPart::Triangle {
+        index: mesh.order()[5] as usize,
+    };
+    assert_eq!(verify(&tampered, &input), Err(MeshError::Mismatch { part }));
     input[3].v1.y = input[3].v1.y + S::from_f64(0.25);
-    assert_eq!(verify(&input), Err(MeshError::Mismatch));
+    let moved = verify(&mesh, &input);
+    assert!(
+        matches!(
+            moved,
+            Err(MeshError::Mismatch {
+                part: MeshPart::Node { .. }
+            })
+        ),
+        "{moved:?}"
+    );
 }
 
 meshes::per_scalar!(

@@ -1,12 +1,13 @@
 //! [`CompactMeshBuf`]: a [`CompactMesh`] that owns its parts, for PCs (feature `alloc`).
 
-use super::CompactMesh;
+use super::{CompactError, CompactMesh};
+use crate::SceneHit;
 use crate::bvh::{Grid, LeafSize, Node};
 use crate::cache::Slots;
 use crate::compound::CompoundPart;
 use crate::import::weld;
 use crate::merge::Earliest;
-use crate::{Cacheable, Degenerates, Error, Geometry, MeshBuf, MeshError, Scalar, SceneHit};
+use crate::{Cacheable, Degenerates, Error, Geometry, MeshBuf, MeshError, MeshPart, Scalar};
 use crate::{StandardTriangle, Sweep, Triangle, Vec3};
 use alloc::vec;
 use alloc::vec::Vec;
@@ -81,7 +82,12 @@ impl<S: Scalar> CompactMeshBuf<S> {
             let (t, o, b) = (&mut triangles, &mut order, &mut bytes);
             // The mesh was built from these very triangles: nothing can mismatch.
             let compact = CompactMesh::<S, u32>::compact(&m, &vertices, &indices, t, o, b)
-                .map_err(|_| MeshError::Mismatch)?;
+                .map_err(|e| MeshError::Mismatch {
+                    part: match e {
+                        CompactError::Mismatch { index } => MeshPart::Triangle { index },
+                        _ => MeshPart::Len,
+                    },
+                })?;
             let (nodes, grid, _, _, _, _, class) = compact.parts();
             (nodes.to_vec(), grid, class)
         };
