@@ -1,15 +1,16 @@
 //! The arena run (`embedded/src/arena.rs`) on the two compact forms of `embedded/src/forms.rs`,
 //! built at run time: the arena as a `CompactMesh` and the 64 × 64 terrain `Heightfield`, each
 //! alone and both as one `Compound` level, in I16F16, and a `Character` walking over the
-//! terrain (`embedded/src/walker.rs`). Prints `compact I16F16 hash`, `heightfield I16F16 hash`,
-//! `compound I16F16 hash` and `character I16F16 hash`, the lines the Cortex-M0 program `forms`
+//! terrain (`embedded/src/walker.rs`), without and with a cache of 16 triangles. Prints
+//! `compact I16F16 hash`, `heightfield I16F16 hash`, `compound I16F16 hash`, `character I16F16
+//! hash` and `character cached I16F16 hash`, the lines the Cortex-M0 program `forms`
 //! (the same forms baked into flash) must print bit for bit (`.ci/embedded.sh` compares them).
 //! Contacts and escapes go to stderr.
 //!
 //! Run: `cargo run --release --example forms`
 
 use ballcast::bvh::{LeafSize, nodes_for};
-use ballcast::{CompactMesh, Compound, Degenerates, Heightfield, Mesh, Node};
+use ballcast::{Cached, CompactMesh, Compound, Degenerates, Heightfield, Mesh, Node};
 use fixed::types::I16F16;
 
 #[path = "../embedded/src/arena.rs"]
@@ -52,6 +53,9 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     println!("compound I16F16 {:016x}", b.hash);
     let (walked, grounded) = walker::walk::<I16F16, _>(&field);
     println!("character I16F16 {walked:016x}");
+    let cached: Cached<_, I16F16, 16> = Cached::new(field);
+    let (walked, _) = walker::walk::<I16F16, _>(&cached);
+    println!("character cached I16F16 {walked:016x}");
     eprintln!(
         "compact: {} triangles, {} contacts, {} escapes; heightfield: {} triangles, {} contacts, {} escapes; compound: {} contacts, {} escapes",
         compact.len(),

@@ -58,7 +58,20 @@ pub struct TriangleCache<S: Scalar, const N: usize> {
 }
 
 impl<S: Scalar, const N: usize> TriangleCache<S, N> {
-    /// An empty cache.
+    /// An empty cache, made at compile time (for a `static`: a local made by it at run time
+    /// can take its size twice on the stack, where [`new`](Self::new) builds in place).
+    const fn empty() -> Self {
+        Self {
+            keys: [const { Cell::new(EMPTY) }; N],
+            triangles: [const { Cell::new(Mesh::<S>::filler()) }; N],
+            used: [const { Cell::new(0) }; N],
+            clock: Cell::new(0),
+            hits: Cell::new(0),
+            misses: Cell::new(0),
+        }
+    }
+
+    /// An empty cache, built in place.
     pub(crate) fn new() -> Self {
         Self {
             keys: core::array::from_fn(|_| Cell::new(EMPTY)),
@@ -331,6 +344,28 @@ impl<G: Cacheable<S>, S: Scalar, const N: usize> Cached<G, S, N> {
         Self {
             geometry,
             cache: TriangleCache::new(),
+        }
+    }
+
+    /// [`new`](Self::new) at compile time, for a `static`: on a microcontroller, the cache in
+    /// RAM instead of on the stack, as a `static mut` of cortex-m-rt's `#[entry]` function
+    /// (handed over as a `&'static mut`, no `unsafe`) over a geometry baked as a `static`. As a
+    /// local, use `new`: a value made by a `const fn` at run time can take its size twice on
+    /// the stack (it is built, then moved).
+    ///
+    /// ```ignore
+    /// #[entry]
+    /// fn main() -> ! {
+    ///     static mut LEVEL: Cached<Heightfield<'static, I16F16>, I16F16, 16> =
+    ///         Cached::for_static(terrain::HEIGHTFIELD);
+    ///     let level: &'static Cached<_, _, 16> = LEVEL;
+    ///     // ... `me.update(level, wish, gravity, dt)` every frame
+    /// }
+    /// ```
+    pub const fn for_static(geometry: G) -> Self {
+        Self {
+            geometry,
+            cache: TriangleCache::empty(),
         }
     }
 

@@ -116,7 +116,7 @@ impl<'a, S: Scalar> Mesh<'a, S> {
     }
 
     /// A placeholder to fill a buffer of prepared triangles with before [`build`](Self::build).
-    pub fn filler() -> StandardTriangle<S> {
+    pub const fn filler() -> StandardTriangle<S> {
         let z = Vec3::ZERO;
         let u = Vec3::new(S::UNIT_ZERO, S::UNIT_ZERO, S::UNIT_ZERO);
         let edge = crate::Edge {

@@ -300,6 +300,34 @@ fn a_cached_compound_keeps_its_parts_apart<S: Scalar>() {
     }
 }
 
+/// `Cached::for_static`, the cache made at compile time for a `static`: the same answers and
+/// counts as `Cached::new`'s cache, and the geometry's answers.
+fn a_cache_made_at_compile_time_answers_as_without<S: Scalar>() {
+    let (mut heights, mut cells) = (Vec::new(), vec![0u8; (W * W) as usize]);
+    let field = terrain::<S>(0x0cac_4e07, &mut heights, &mut cells);
+    let mut rng = Rng(0x5eed_0007);
+    let (made, compiled): (Cached<_, S, 7>, Cached<_, S, 7>) =
+        (Cached::new(field), Cached::for_static(field));
+    for s in sweeps::<S>(&mut rng, 600) {
+        let want = format!("{:?}", field.cast(&s));
+        assert_eq!(format!("{:?}", compiled.cast(&s)), want);
+        assert_eq!(format!("{:?}", made.cast(&s)), want);
+    }
+    let counts = |c: &Cached<_, S, 7>| (c.cache().hits(), c.cache().misses());
+    assert_eq!(counts(&compiled), counts(&made));
+    assert!(counts(&made).0 > 50, "{:?}", counts(&made));
+    // Evaluated by the compiler: an empty level's cache, as a firmware's `static` would be.
+    let nothing: Cached<&[ballcast::StandardTriangle<f32>], f32, 4> =
+        const { Cached::for_static(&[]) };
+    let fall = Sweep::new(
+        ballcast::Vec3::new(0.0, 1.0, 0.0),
+        ballcast::Vec3::ZERO,
+        0.5,
+    )
+    .unwrap();
+    assert_eq!(nothing.cast(&fall), None);
+}
+
 meshes::per_scalar!(
     heightfield_answers_as_without,
     compact_answers_as_without,
@@ -308,4 +336,5 @@ meshes::per_scalar!(
     caches_by_reference_walk_as_the_terrain,
     a_cached_kept_across_frames_prepares_far_fewer,
     a_cached_compound_keeps_its_parts_apart,
+    a_cache_made_at_compile_time_answers_as_without,
 );

@@ -2,7 +2,9 @@
 //! 2 168-triangle arena as a `CompactMesh` and a 64 × 64 terrain `Heightfield` (8 192 triangles;
 //! `../forms.rs`), each alone and both as one `Compound` level. Prints `compact I16F16 hash`,
 //! `heightfield I16F16 hash`, `compound I16F16 hash` and, for a `Character` walking over the
-//! terrain (`../walker.rs`), `character I16F16 hash`: the lines the host's
+//! terrain (`../walker.rs`), `character I16F16 hash` and, over the terrain with a cache of 16
+//! triangles kept in a static (`Cached::for_static`), `character cached I16F16 hash`: the lines
+//! the host's
 //! `cargo run --release --example forms` (the forms built at run time) prints; then each form's
 //! bytes in flash, the RAM the arena runs never touched and the stack the walk used (the
 //! stack is painted first, and again before the walk).
@@ -11,7 +13,7 @@
 #![no_std]
 #![no_main]
 
-use ballcast::Compound;
+use ballcast::{Cached, Compound, Heightfield};
 use cortex_m_rt::entry;
 use cortex_m_semihosting::{debug, hprintln};
 use fixed::types::I16F16;
@@ -34,6 +36,11 @@ mod terrain {
 
 #[entry]
 fn main() -> ! {
+    // A cache of 16 prepared triangles for the terrain, made at compile time in RAM (not on
+    // the stack): cortex-m-rt hands a `static mut` of the entry function over as `&'static mut`.
+    static mut CACHED: Cached<Heightfield<'static, I16F16>, I16F16, 16> =
+        Cached::for_static(terrain::HEIGHTFIELD);
+    let cached: &'static Cached<_, _, 16> = CACHED;
     let painted = stack::paint();
     let (throws, steps) = (arena::THROWS, arena::STEPS_PER_THROW);
     let c = arena::simulate::<I16F16, _>(&compact::MESH, throws, steps);
@@ -54,6 +61,11 @@ fn main() -> ! {
     let (walked, grounded) = walker::walk::<I16F16, _>(&terrain::HEIGHTFIELD);
     let used = free - again.untouched();
     hprintln!("character I16F16 {:016x}", walked);
+    let again = stack::paint();
+    let free = again.untouched();
+    let (walked, _) = walker::walk::<I16F16, _>(cached);
+    let used_cached = free - again.untouched();
+    hprintln!("character cached I16F16 {:016x}", walked);
     use core::mem::size_of_val as size;
     let compact_bytes = size(&compact::NODES)
         + size(&compact::VERTICES)
@@ -75,10 +87,13 @@ fn main() -> ! {
         h.escapes
     );
     hprintln!(
-        "character: {} frames on the heightfield, grounded on {}; {} bytes of stack",
+        "character: {} frames on the heightfield, grounded on {}; {} bytes of stack, {} through the static cache ({} hits, {} misses)",
         walker::FRAMES,
         grounded,
-        used
+        used,
+        used_cached,
+        cached.cache().hits(),
+        cached.cache().misses()
     );
     hprintln!(
         "stack: {} bytes of RAM never touched by the arena runs",
