@@ -68,7 +68,9 @@ impl<S: Scalar> Heightfield<'_, S> {
 
     /// Visits the cells the grown path crosses within the terrain's box, row by row in the
     /// direction of travel, and casts the triangles whose boxes (and planes, and halves of the
-    /// cell) the path comes near before the current reach.
+    /// cell) the path comes near before the current reach. Out of line: its frame is not
+    /// added to the integer path's, which microcontrollers take.
+    #[inline(never)]
     fn walk<K: Keep<S>>(
         &self,
         sweep: &Sweep<S>,

@@ -277,10 +277,10 @@ impl<S: Scalar> Slider<S> {
         } else {
             displacement
         };
-        let across = self.slide(scene, raised.position, forward).ok()?;
+        let mut out = self.slide(scene, raised.position, forward).ok()?;
         // Lowered onto the first thing below, a skin short of it as a slide stops: a slide
         // would carry on down a walkable edge, back off the ledge.
-        let (r, from) = (self.radius, across.position);
+        let (r, from) = (self.radius, out.position);
         let drop = Vec3::ZERO - up.scale(rise + skin + skin);
         let hit = scene.cast(&Sweep::new(from, from + drop, r).ok()?)?;
         if S::dot(hit.normal, up) < min_cos {
@@ -292,25 +292,20 @@ impl<S: Scalar> Slider<S> {
         if S::dot(position - start, up) <= skin + skin {
             return None;
         }
-        let landed = SlideContact {
+        // The move across's last contacts (they fill its slots from the first), then the
+        // landing; built in the move across's own slide.
+        let kept = out.contacts.iter().flatten().count();
+        if kept == MAX_SLIDES {
+            out.contacts.rotate_left(1);
+        }
+        out.contacts[kept.min(MAX_SLIDES - 1)] = Some(SlideContact {
             hit,
             point: hit.position - hit.normal.scale(r),
             time: hit.alpha,
-        };
-        // The move across's last contacts, then the landing.
-        let mut contacts = [None; MAX_SLIDES];
-        let before = across.contacts.iter().flatten();
-        let skip = before.clone().count().saturating_sub(MAX_SLIDES - 1);
-        let all = before.skip(skip).copied().chain([landed]);
-        for (slot, c) in contacts.iter_mut().zip(all) {
-            *slot = Some(c);
-        }
-        Some(Slide {
-            position,
-            pushed_out: Vec3::ZERO,
-            blocked: across.blocked,
-            contacts,
-        })
+        });
+        out.position = position;
+        out.pushed_out = Vec3::ZERO;
+        Some(out)
     }
 }
 
