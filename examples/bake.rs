@@ -33,8 +33,8 @@ use ballcast::Scalar;
 use ballcast::bvh::LeafSize;
 use ballcast::plan::{Memory, ScalarType};
 use ballcast_level::{
-    Baked, Emit, Heightmap, Level, LevelError, Placement, bake_compact, bake_with, load,
-    load_heightmap, verdicts,
+    Baked, Emit, Heightmap, Level, LevelError, Placement, bake_compact, bake_heightfield,
+    bake_with, load, load_heightmap, verdicts,
 };
 use fixed::types::{I16F16, I32F32};
 use std::process::ExitCode;
@@ -55,12 +55,14 @@ struct Options {
 }
 
 fn main() -> ExitCode {
-    let Some(options) = parse(std::env::args().skip(1)) else {
-        eprintln!("{USAGE}");
-        return ExitCode::from(2);
+    let options = match parse(std::env::args().skip(1)) {
+        Ok(o) => o,
+        Err(e) => {
+            eprintln!("bake: {e}\n{USAGE}");
+            return ExitCode::from(2);
+        }
     };
-    let heightmap = options.path.to_ascii_lowercase().ends_with(".png");
-    let done = if heightmap {
+    let done = if options.heightmap() {
         run_heightmap(&options)
     } else {
         run(&options)
@@ -74,8 +76,15 @@ fn main() -> ExitCode {
     }
 }
 
-/// The options, or `None` for a command line that makes no sense.
-fn parse(mut args: impl Iterator<Item = String>) -> Option<Options> {
+impl Options {
+    /// Whether the file is a heightmap (`.png`), not a mesh level.
+    fn heightmap(&self) -> bool {
+        self.path.to_ascii_lowercase().ends_with(".png")
+    }
+}
+
+/// The options, or what makes no sense in the command line.
+fn parse(mut args: impl Iterator<Item = String>) -> Result<Options, String> {
     let mut o = Options {
         path: String::new(),
         scalar: "i16f16".into(),
@@ -87,35 +96,73 @@ fn parse(mut args: impl Iterator<Item = String>) -> Option<Options> {
         height: None,
         origin: [0.0; 3],
     };
-    let number = |a: Option<String>| a?.parse::<f64>().ok().filter(|x| x.is_finite());
+    // Any number f64 reads, NaN and infinities included: the bake says what is wrong with it.
+    let number = |flag: &str, a: Option<String>| {
+        let a = a.ok_or_else(|| format!("{flag} needs a value"))?;
+        a.parse::<f64>()
+            .map_err(|_| format!("{flag} needs a number, not {a:?}"))
+    };
+    let (mut mesh_only, mut map_only) = (None, None);
     while let Some(a) = args.next() {
         match a.as_str() {
-            "--scalar" => o.scalar = args.next()?.to_ascii_lowercase(),
-            "--radius" => o.radius = number(args.next()).filter(|&r| r >= 0.0)?,
-            "--two-sided" => o.two_sided = true,
-            "--compact" => o.compact = true,
-            "--leaves" => {
-                o.leaves = match args.next()?.as_str() {
-                    "2" => LeafSize::Two,
-                    "4" => LeafSize::Four,
-                    _ => return None,
+            "--scalar" => o.scalar = args.next().ok_or("--scalar needs a value")?,
+            "--radius" => {
+                o.radius = number(&a, args.next())?;
+                if !(o.radius >= 0.0 && o.radius.is_finite()) {
+                    return Err(format!(
+                        "--radius must be finite and not negative, not {}",
+                        o.radius
+                    ));
                 }
             }
-            "--spacing" => o.spacing = number(args.next())?,
-            "--height" => o.height = Some(number(args.next())?),
-            "--origin" => {
-                let xyz = args.next()?;
-                let parts: Vec<f64> = xyz
-                    .split(',')
-                    .map(|c| number(Some(c.into())))
-                    .collect::<Option<_>>()?;
-                o.origin = parts.try_into().ok()?;
+            "--two-sided" | "--compact" | "--leaves" => {
+                o.two_sided |= a == "--two-sided";
+                o.compact |= a == "--compact";
+                if a == "--leaves" {
+                    o.leaves = match args.next().as_deref() {
+                        Some("2") => LeafSize::Two,
+                        Some("4") => LeafSize::Four,
+                        other => return Err(format!("--leaves takes 2 or 4, not {other:?}")),
+                    };
+                }
+                mesh_only = Some(a);
             }
-            _ if o.path.is_empty() && !a.starts_with("--") => o.path = a,
-            _ => return None,
+            "--spacing" | "--height" => {
+                let v = number(&a, args.next())?;
+                if a == "--spacing" {
+                    o.spacing = v;
+                } else {
+                    o.height = Some(v);
+                }
+                map_only = Some(a);
+            }
+            "--origin" => {
+                let xyz = args.next().ok_or("--origin needs a value")?;
+                let parts = xyz
+                    .split(',')
+                    .map(|c| number(&a, Some(c.into())))
+                    .collect::<Result<Vec<_>, _>>()?;
+                o.origin = parts
+                    .try_into()
+                    .map_err(|_| format!("--origin takes X,Y,Z, not {xyz:?}"))?;
+                map_only = Some(a);
+            }
+            _ if a.starts_with("--") => return Err(format!("unknown option {a}")),
+            _ if o.path.is_empty() => o.path = a,
+            _ => return Err(format!("one level at a time: {} and {a}", o.path)),
         }
     }
-    (!o.path.is_empty()).then_some(o)
+    o.scalar.make_ascii_lowercase();
+    if o.path.is_empty() {
+        return Err("no level given".into());
+    }
+    match (o.heightmap(), mesh_only, map_only) {
+        (true, Some(flag), _) => Err(format!("{flag} applies to mesh levels, not heightmaps")),
+        (false, _, Some(flag)) => Err(format!(
+            "{flag} applies to heightmaps (.png), not mesh levels"
+        )),
+        _ => Ok(o),
+    }
 }
 
 /// The level in scalar `S`, in the form the options ask for.
@@ -219,7 +266,11 @@ fn run_heightmap(o: &Options) -> Result<(), Box<dyn std::error::Error>> {
     };
     // The baked source and the height step as the scalar holds it.
     fn field<S: Scalar + Emit>(m: &Heightmap, p: &Placement) -> Result<(Baked, f64), LevelError> {
-        Ok((m.bake::<S>(p)?, m.grid::<S>(p)?.0.unit.to_f64()))
+        let (shape, heights) = m.grid::<S>(p)?;
+        let columns = m.columns as usize;
+        let hole = |i: u32, k: u32| m.holes[k as usize * columns + i as usize];
+        let baked = bake_heightfield(&m.path, shape, &heights, hole)?;
+        Ok((baked, shape.unit.to_f64()))
     }
     let (baked, unit) = match o.scalar.as_str() {
         "f32" => field::<f32>(&map, &placement)?,

@@ -170,8 +170,10 @@ pub fn verdicts(extent: f64, radius: f64) -> String {
 /// A level baked for scalar `S`: the source of the statics and what went into them.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Baked {
-    /// Rust source defining `NODES`, `TRIANGLES`, `ORDER` and `MESH: Mesh<'static, S>`; it
-    /// needs the `ballcast` crate (and `fixed` for fixed-point scalars).
+    /// Rust source defining the statics of the form (`MESH: Mesh<'static, S>`,
+    /// `MESH: CompactMesh<'static, S, I>` or `HEIGHTFIELD: Heightfield<'static, S>`, and the
+    /// parts they borrow); it needs only the `ballcast` crate (fixed-point types are named
+    /// through `ballcast::fixed`).
     pub source: String,
     /// What it holds.
     pub stats: Stats,

@@ -9,8 +9,10 @@ use super::bake::{extent, skipped, triangles, with_mesh};
 use super::source::{self, point};
 use super::{Baked, Emit, Form, Level, LevelError, Problem, Stats};
 use ballcast::bvh::LeafSize;
-use ballcast::import::weld;
-use ballcast::{CompactError, CompactMesh, Mesh, MeshIndex, Scalar, Vec3};
+use ballcast::import::{Welded, weld};
+use ballcast::{
+    CompactError, CompactMesh, Error, Mesh, MeshError, MeshIndex, Scalar, Triangle, Vec3,
+};
 use std::fmt::Write;
 
 /// Bakes `level` for scalar `S` as a [`CompactMesh`]: `u16` indices where the level's vertices
@@ -24,18 +26,47 @@ use std::fmt::Write;
 pub fn bake_compact<S: Scalar + Emit>(level: &Level) -> Result<Baked, LevelError> {
     let sources = triangles::<S>(level)?;
     let fail = |p| LevelError::new(&level.path, p);
-    let (vertices, indices) = weld(&sources).map_err(|e| fail(Problem::Compact(e.to_string())))?;
+    let skipped = skipped(&sources);
+    let (vertices, indices) = shared(&sources, &skipped).map_err(|e| fail(Problem::Mesh(e)))?;
     let small = vertices.len().max(sources.len()) <= u16::MAX as usize + 1;
     let welded = (vertices.as_slice(), indices.as_slice());
     with_mesh(level, &sources, LeafSize::Four, |mesh| {
-        let skipped = skipped(&sources);
         if small {
             write::<S, u16>(level, mesh, welded, skipped, "u16")
         } else {
             write::<S, u32>(level, mesh, welded, skipped, "u32")
         }
     })?
-    .map_err(|e| fail(Problem::Compact(e.to_string())))
+    .map_err(|e| fail(Problem::Compact(e)))
+}
+
+/// The vertices of the triangles kept (those not `skipped`), shared by [`weld`], in order of
+/// first use, and each triangle's indices (`[0; 3]` for a skipped one, which no query reads).
+fn shared<S: Scalar>(sources: &[Triangle<S>], skipped: &[usize]) -> Result<Welded<S>, MeshError> {
+    let (all, mut indices) = weld(sources).map_err(|e| match e {
+        Error::Full { .. } => MeshError::TooMany,
+        error => MeshError::Triangle {
+            index: error.triangle().unwrap_or(0),
+            error,
+        },
+    })?;
+    for &k in skipped {
+        indices[k] = [u32::MAX; 3];
+    }
+    let mut number = vec![u32::MAX; all.len()];
+    let mut vertices = Vec::new();
+    for corner in indices.iter_mut().flatten().filter(|c| **c != u32::MAX) {
+        let n = &mut number[*corner as usize];
+        if *n == u32::MAX {
+            *n = vertices.len() as u32;
+            vertices.push(all[*corner as usize]);
+        }
+        *corner = *n;
+    }
+    for &k in skipped {
+        indices[k] = [0; 3];
+    }
+    Ok((vertices, indices))
 }
 
 /// The compact form of `mesh` with indices `I` (named `index`), as source.

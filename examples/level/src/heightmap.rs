@@ -11,7 +11,7 @@
 
 use super::bake::{Baked, Emit, Form, Stats};
 use super::source::{self, point};
-use super::{LevelError, Problem};
+use super::{LevelError, Problem, Reason};
 use ballcast::heightfield::{HOLE, MAX_TRIANGLES};
 use ballcast::{Heightfield, HeightfieldShape, Scalar, Vec3};
 use std::fmt::Write;
@@ -45,34 +45,44 @@ pub struct Placement {
     pub height: f64,
 }
 
-/// Loads a grey PNG heightmap (8 or 16 bits a sample; colour images whose pixels are all grey
-/// are taken too, palettes expanded).
+/// The most pixels a heightmap may have: 4096 × 4096. A larger terrain's baked source would
+/// run to hundreds of megabytes; refusing it before decoding also keeps a small file that
+/// declares a huge image from taking the memory it asks for.
+pub const MAX_PIXELS: u64 = 1 << 24;
+
+/// Loads a grey PNG heightmap (1, 2, 4, 8 or 16 bits a sample, widened to 16; colour images
+/// whose pixels are all grey are taken too, palettes expanded; a fully transparent pixel's
+/// colour does not matter).
 ///
 /// Errors: [`Problem::Io`], [`Problem::Malformed`] (not a PNG, or a broken one),
-/// [`Problem::Colour`] naming the first coloured pixel, [`Problem::Heightfield`] for an image
-/// narrower or lower than two pixels.
+/// [`Problem::TooLarge`] beyond [`MAX_PIXELS`], [`Problem::Colour`] naming the first coloured
+/// pixel, [`Problem::Heightfield`] for an image narrower or lower than two pixels.
 pub fn load_heightmap(path: impl AsRef<Path>) -> Result<Heightmap, LevelError> {
     let path = path.as_ref();
     let fail = |p| LevelError::new(path, p);
     let file = std::fs::File::open(path).map_err(|e| fail(Problem::Io(e)))?;
-    // Room for the largest grid a heightfield takes: 2^30 cells of 16-bit grey and alpha.
-    let limits = png::Limits { bytes: 1 << 32 };
+    // Room for MAX_PIXELS of 16-bit colour and alpha.
+    let limits = png::Limits { bytes: 1 << 27 };
     let mut decoder = png::Decoder::new_with_limits(std::io::BufReader::new(file), limits);
     decoder.set_transformations(png::Transformations::EXPAND);
     let malformed = |e: png::DecodingError| fail(Problem::Malformed(e.to_string()));
     let mut reader = decoder.read_info().map_err(malformed)?;
-    let size = reader
-        .output_buffer_size()
-        .ok_or_else(|| fail(Problem::Malformed("image too large".into())))?;
-    let mut buf = vec![0; size];
-    let info = reader.next_frame(&mut buf).map_err(malformed)?;
-    let (width, height) = (info.width, info.height);
+    let (width, height) = (reader.info().width, reader.info().height);
+    let pixels = u64::from(width) * u64::from(height);
+    if pixels > MAX_PIXELS {
+        return Err(fail(Problem::TooLarge { width, height }));
+    }
     if width < 2 || height < 2 {
         let (columns, rows) = (width.saturating_sub(1), height.saturating_sub(1));
         return Err(fail(Problem::Heightfield(
             ballcast::HeightfieldError::Empty { columns, rows },
         )));
     }
+    let size = reader
+        .output_buffer_size()
+        .ok_or_else(|| fail(Problem::TooLarge { width, height }))?;
+    let mut buf = vec![0; size];
+    let info = reader.next_frame(&mut buf).map_err(malformed)?;
     let channels = info.color_type.samples();
     let wide = info.bit_depth == png::BitDepth::Sixteen;
     let sample = |k: usize| -> u16 {
@@ -87,18 +97,19 @@ pub fn load_heightmap(path: impl AsRef<Path>) -> Result<Heightmap, LevelError> {
         png::ColorType::GrayscaleAlpha | png::ColorType::Rgba
     );
     let colours = if channels >= 3 { 3 } else { 1 };
-    let pixels = width as usize * height as usize;
+    let pixels = pixels as usize;
     let mut samples = Vec::with_capacity(pixels);
     let mut clear = Vec::with_capacity(pixels);
     for p in 0..pixels {
         let first = p * channels;
         let grey = sample(first);
-        if (1..colours).any(|c| sample(first + c) != grey) {
+        let hole = alpha && sample(first + channels - 1) == 0;
+        if !hole && (1..colours).any(|c| sample(first + c) != grey) {
             let (x, y) = ((p % width as usize) as u32, (p / width as usize) as u32);
             return Err(fail(Problem::Colour { x, y }));
         }
         samples.push(grey);
-        clear.push(alpha && sample(first + channels - 1) == 0);
+        clear.push(hole);
     }
     let (columns, rows) = (width - 1, height - 1);
     let w = width as usize;
@@ -118,15 +129,18 @@ pub fn load_heightmap(path: impl AsRef<Path>) -> Result<Heightmap, LevelError> {
 
 impl Heightmap {
     /// The grid in `S`: its shape and its heights. The height step is the scalar's nearest
-    /// value to `height / 65 535` (the next one up where that would put white beyond the 16
-    /// bits, and one step of the scalar where it rounds to zero), and a sample `k` lies
-    /// `k × height / 65 535` above black, rounded to the nearest step: exact to the step in
-    /// floating point, to half of it in fixed point (in I16F16, whose step is 1/65 536, a
-    /// heightmap under 1.0 tall is rounded to I16F16's resolution).
+    /// value to `height / 65 535`; in fixed point, where that one lies below it (white would
+    /// not fit in 16 bits of steps), the next one up, and one step of the scalar where it
+    /// rounds to zero. A sample `k` lies `k × height / 65 535` above black, rounded to the
+    /// nearest step: within half a height step (plus the rounding of the origin's height to
+    /// the scalar).
     ///
-    /// Errors: [`Problem::Height`] for a height that is not positive and finite.
+    /// Errors: [`Problem::Placement`] naming the value as given: a height or spacing that is
+    /// not positive and finite, or an origin coordinate that is not finite; a spacing or (in
+    /// floating point) a height step that rounds to zero in the scalar; a corner of the grid,
+    /// black's or white's height beyond the scalar's range.
     #[allow(clippy::type_complexity)]
-    pub fn grid<S: Scalar>(
+    pub fn grid<S: Scalar + Emit>(
         &self,
         placement: &Placement,
     ) -> Result<(HeightfieldShape<S>, Vec<i16>), LevelError> {
@@ -135,18 +149,51 @@ impl Heightmap {
             spacing,
             height,
         } = *placement;
-        if !(height > 0.0 && height.is_finite()) {
-            return Err(LevelError::new(
-                &self.path,
-                Problem::Height { value: height },
-            ));
+        let fail = |what, value, reason| {
+            let problem = Problem::Placement {
+                what,
+                value,
+                scalar: S::NAME,
+                reason,
+            };
+            Err(LevelError::new(&self.path, problem))
+        };
+        for (what, value) in [("height", height), ("spacing", spacing)] {
+            if !(value > 0.0 && value.is_finite()) {
+                return fail(what, value, Reason::NotPositive);
+            }
+        }
+        for value in [x, y, z] {
+            if !value.is_finite() {
+                return fail("origin", value, Reason::NotFinite);
+            }
+        }
+        let limit = S::LIMIT.to_f64();
+        let far = |o: f64, n: u32| o.abs().max((o + f64::from(n) * spacing).abs());
+        let corners = [(x, self.columns), (z, self.rows)];
+        if let Some(value) = corners
+            .map(|(o, n)| far(o, n))
+            .into_iter()
+            .find(|&v| v > limit)
+        {
+            return fail("grid's far corner", value, Reason::Beyond { limit });
+        }
+        if let Some(value) = [y, y + height].into_iter().find(|v| v.abs() > limit) {
+            return fail("terrain's height", value, Reason::Beyond { limit });
+        }
+        if S::from_f64(spacing) == S::ZERO {
+            return fail("spacing", spacing, Reason::Zero);
         }
         let step = height / 65535.0;
         let ratio = |unit: S| step / unit.to_f64();
         let mut unit = S::from_f64(step);
-        if unit == S::ZERO || (65535.0 * ratio(unit)).round() > 65535.0 {
-            // Fixed point only: a float's nearest step is within a part in 2^24.
+        let fixed = !S::PRECISION.relative;
+        if fixed && (unit == S::ZERO || (65535.0 * ratio(unit)).round() > 65535.0) {
+            // Within range (`height` is), so one step more is too.
             unit = unit + S::EPSILON;
+        }
+        if unit == S::ZERO {
+            return fail("height step", step, Reason::Zero);
         }
         let r = ratio(unit);
         // White's height in steps, and the offset that centres the range on zero.

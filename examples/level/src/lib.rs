@@ -1,7 +1,10 @@
 //! Levels from modelling tools for ballcast: loads Wavefront OBJ ([`tobj`]) and glTF 2.0 / GLB
 //! ([`gltf`]) files into plain triangles, and bakes them into Rust source for a `static`
 //! [`ballcast::Mesh`] (nodes, prepared triangles and order through the crate's `const`
-//! constructors), so firmware keeps a level in flash and does no work at start-up.
+//! constructors) or [`ballcast::CompactMesh`] ([`bake_compact`]); loads grey PNG heightmaps
+//! ([`png`]) and bakes them, or heights of the caller's own, for a `static`
+//! [`ballcast::Heightfield`] ([`load_heightmap`], [`bake_heightfield`]). Firmware keeps a level
+//! in flash and does no work at start-up.
 //!
 //! Shared by `cargo run --release --example bake -- LEVEL` and the firmware's build script.
 //!
@@ -21,7 +24,7 @@ mod source;
 
 pub use bake::{Baked, Emit, Form, Stats, bake, bake_with, triangles, verdicts};
 pub use compact::bake_compact;
-pub use heightmap::{Heightmap, Placement, bake_heightfield, load_heightmap};
+pub use heightmap::{Heightmap, MAX_PIXELS, Placement, bake_heightfield, load_heightmap};
 
 use std::fmt;
 use std::path::{Path, PathBuf};
@@ -121,8 +124,8 @@ pub enum Problem {
     },
     /// The mesh build refused it.
     Mesh(ballcast::MeshError),
-    /// Its compact form could not be made (the message).
-    Compact(String),
+    /// Its compact form could not be made.
+    Compact(ballcast::CompactError),
     /// A heightmap image that is not grey: a colour pixel at column `x`, row `y`.
     Colour {
         /// The pixel's column.
@@ -132,10 +135,40 @@ pub enum Problem {
     },
     /// The heightfield build refused it.
     Heightfield(ballcast::HeightfieldError),
-    /// A heightmap's height (of white above black) that is not positive and finite.
-    Height {
-        /// The height given.
+    /// A heightmap image of more than [`MAX_PIXELS`] pixels.
+    TooLarge {
+        /// Its width in pixels.
+        width: u32,
+        /// Its height in pixels.
+        height: u32,
+    },
+    /// A heightmap's placement that the scalar cannot hold: `what` (the height, the spacing,
+    /// the origin, the grid's far corner, the terrain's height) is `value` as given.
+    Placement {
+        /// What.
+        what: &'static str,
+        /// Its value as given (or, for a corner, as the placement puts it).
         value: f64,
+        /// The scalar's name.
+        scalar: &'static str,
+        /// Why it does not do.
+        reason: Reason,
+    },
+}
+
+/// Why a heightmap's placement does not do ([`Problem::Placement`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Reason {
+    /// It must be positive and finite.
+    NotPositive,
+    /// It must be finite.
+    NotFinite,
+    /// It rounds to zero in the scalar.
+    Zero,
+    /// It lies beyond the scalar's range `±limit`.
+    Beyond {
+        /// The scalar's limit.
+        limit: f64,
     },
 }
 
@@ -144,7 +177,10 @@ impl fmt::Display for LevelError {
         write!(f, "{}: ", self.path.display())?;
         match &self.problem {
             Problem::Io(e) => write!(f, "cannot read: {e}"),
-            Problem::UnknownFormat => f.write_str("unknown format (expected .obj, .gltf or .glb)"),
+            Problem::UnknownFormat => f.write_str(
+                "unknown format (expected .obj, .gltf or .glb; a .png heightmap is loaded by \
+                 load_heightmap)",
+            ),
             Problem::Malformed(m) => write!(f, "malformed: {m}"),
             Problem::NoTriangles => f.write_str("no triangles"),
             Problem::AllDegenerate { count } => {
@@ -178,10 +214,34 @@ impl fmt::Display for LevelError {
                  pixels are grey (red, green and blue equal)"
             ),
             Problem::Heightfield(e) => write!(f, "heightfield build refused: {e}"),
-            Problem::Height { value } => write!(
+            Problem::TooLarge { width, height } => write!(
                 f,
-                "the height of white above black must be positive and finite, not {value}"
+                "a heightmap of {width} x {height} pixels: more than {MAX_PIXELS} (4096 x 4096)"
             ),
+            Problem::Placement {
+                what,
+                value,
+                scalar,
+                reason,
+            } => {
+                // Plain digits for everyday values, an exponent for the others.
+                let v = if *value != 0.0 && !(1e-4..1e6).contains(&value.abs()) {
+                    format!("{value:e}")
+                } else {
+                    value.to_string()
+                };
+                match reason {
+                    Reason::NotPositive => {
+                        write!(f, "the {what} must be positive and finite, not {v}")
+                    }
+                    Reason::NotFinite => write!(f, "the {what} must be finite, not {v}"),
+                    Reason::Zero => write!(f, "the {what} {v} rounds to zero in {scalar}"),
+                    Reason::Beyond { limit } => write!(
+                        f,
+                        "the {what} reaches {v}, beyond {scalar}'s range [-{limit}, {limit}]"
+                    ),
+                }
+            }
         }
     }
 }

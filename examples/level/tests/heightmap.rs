@@ -3,19 +3,40 @@
 
 use ballcast::HeightfieldError;
 use ballcast::fixed::types::I16F16;
-use ballcast_level::{LevelError, Placement, Problem, load_heightmap};
-use std::path::PathBuf;
+use ballcast_level::{LevelError, Placement, Problem, Reason, load_heightmap};
+use std::path::{Path, PathBuf};
+
+/// A file in the temporary directory, removed when dropped.
+struct Temp(PathBuf);
+
+impl Temp {
+    fn new(name: &str) -> Self {
+        Temp(std::env::temp_dir().join(format!("ballcast-level-{}-{name}", std::process::id())))
+    }
+}
+
+impl AsRef<Path> for Temp {
+    fn as_ref(&self) -> &Path {
+        &self.0
+    }
+}
+
+impl Drop for Temp {
+    fn drop(&mut self) {
+        let _ = std::fs::remove_file(&self.0);
+    }
+}
 
 /// Writes a PNG of `width` × `height` pixels of `samples` (big-endian for 16 bits) into the
-/// temporary directory and returns its path.
+/// temporary directory.
 fn png(
     name: &str,
     (width, height): (u32, u32),
     color: png::ColorType,
     depth: png::BitDepth,
     samples: &[u8],
-) -> PathBuf {
-    let path = std::env::temp_dir().join(format!("ballcast-level-{}-{name}", std::process::id()));
+) -> Temp {
+    let path = Temp::new(name);
     let file = std::io::BufWriter::new(std::fs::File::create(&path).unwrap());
     let mut e = png::Encoder::new(file, width, height);
     e.set_color(color);
@@ -117,14 +138,23 @@ fn a_grey_colour_image_is_taken_a_coloured_one_refused_at_its_pixel() {
     let e = load_heightmap(&coloured).unwrap_err();
     assert!(matches!(e.problem, Problem::Colour { x: 2, y: 1 }), "{e}");
     assert!(
-        e.to_string().starts_with(&coloured.display().to_string()),
+        e.to_string().starts_with(&coloured.0.display().to_string()),
         "{e}"
     );
+    // A fully transparent pixel is a hole: its colour does not matter.
+    let rgba: Vec<u8> = [10u8, 20, 30, 40]
+        .iter()
+        .flat_map(|&k| [k, k, k, 255])
+        .collect();
+    let mut rgba = rgba;
+    rgba[4..8].copy_from_slice(&[200, 0, 0, 0]);
+    let clear = png("clear.png", (2, 2), png::ColorType::Rgba, EIGHT, &rgba);
+    assert_eq!(load_heightmap(clear).unwrap().holes, [true]);
 }
 
 #[test]
 fn broken_and_missing_files_are_errors_not_panics() {
-    let garbage = std::env::temp_dir().join(format!("ballcast-level-{}-x.png", std::process::id()));
+    let garbage = Temp::new("x.png");
     std::fs::write(&garbage, b"not a png at all").unwrap();
     assert!(matches!(
         problem(load_heightmap(&garbage)),
@@ -138,7 +168,7 @@ fn broken_and_missing_files_are_errors_not_panics() {
         Problem::Malformed(_)
     ));
     assert!(matches!(
-        problem(load_heightmap(garbage.with_extension("none.png"))),
+        problem(load_heightmap(garbage.0.with_extension("none.png"))),
         Problem::Io(_)
     ));
 }
@@ -185,28 +215,76 @@ fn a_short_heightmap_in_i16f16_is_as_tall_as_asked() {
     }
 }
 
-/// A height that is not positive and finite, and cells of 300 over 32 cells, which reach past
-/// I16F16's range: refused, named in the error.
+/// A placement the scalar cannot hold, each error naming the value as given: a height that is
+/// not positive and finite, a spacing that rounds to zero, cells of 300 over 32 cells (past
+/// I16F16's range), a white 2.2e9 high (a debug build's overflow, once), an origin that is
+/// not finite.
 #[test]
 fn a_placement_the_scalar_cannot_hold_is_refused() {
     let map = load_heightmap(format!("{}/../data/hills.png", env!("CARGO_MANIFEST_DIR"))).unwrap();
     let flat = Placement {
         origin: [0.0; 3],
         spacing: 1.0,
-        height: 0.0,
-    };
-    for height in [0.0, -1.0, f64::NAN, f64::INFINITY] {
-        let p = problem(map.bake::<f32>(&Placement { height, ..flat }));
-        assert!(matches!(p, Problem::Height { .. }), "{p:?}");
-    }
-    let wide = Placement {
-        spacing: 300.0,
         height: 4.0,
+    };
+    let refused = |p: Placement| match problem(map.bake::<I16F16>(&p)) {
+        Problem::Placement {
+            what,
+            value,
+            reason,
+            ..
+        } => (what, value, reason),
+        other => panic!("{other:?}"),
+    };
+    for height in [0.0, -1.0, f64::INFINITY] {
+        let p = Placement { height, ..flat };
+        assert_eq!(refused(p), ("height", height, Reason::NotPositive));
+    }
+    let limit = Reason::Beyond { limit: 4096.0 };
+    let tall = Placement {
+        height: 2.2e9,
         ..flat
     };
-    let p = problem(map.bake::<I16F16>(&wide));
+    assert_eq!(refused(tall), ("terrain's height", 2.2e9, limit));
+    let fine = Placement {
+        spacing: 1e-9,
+        ..flat
+    };
+    assert_eq!(refused(fine), ("spacing", 1e-9, Reason::Zero));
+    let wide = Placement {
+        spacing: 300.0,
+        ..flat
+    };
+    assert_eq!(refused(wide), ("grid's far corner", 9600.0, limit));
+    let lost = Placement {
+        origin: [0.0, f64::NAN, 0.0],
+        ..flat
+    };
+    assert!(matches!(refused(lost), ("origin", _, Reason::NotFinite)));
+}
+
+/// An image that declares more than `MAX_PIXELS` is refused from its header, before any of it
+/// is decoded or allocated (here a header alone declaring 30 000 × 30 000).
+#[test]
+fn a_huge_image_is_refused_from_its_header() {
+    let path = Temp::new("huge.png");
+    let file = std::io::BufWriter::new(std::fs::File::create(&path).unwrap());
+    let mut e = png::Encoder::new(file, 30_000, 30_000);
+    e.set_color(GREY);
+    e.set_depth(EIGHT);
+    let mut w = e.write_header().unwrap();
+    // The start of a data chunk, which the decoder reads up to before it reports the header.
+    w.write_chunk(png::chunk::IDAT, &[0x78, 0x9c]).unwrap();
+    drop(w);
+    let p = problem(load_heightmap(&path));
     assert!(
-        matches!(p, Problem::Heightfield(HeightfieldError::OutOfRange { .. })),
+        matches!(
+            p,
+            Problem::TooLarge {
+                width: 30_000,
+                height: 30_000
+            }
+        ),
         "{p:?}"
     );
 }

@@ -210,6 +210,28 @@ fn coordinates_beyond_the_scalar_range() {
     assert!(bake::<f32>(&level).is_ok());
 }
 
+/// A compact bake keeps only the vertices of the triangles it keeps: a degenerate triangle
+/// on three vertices of its own (far off the floor) adds none to flash.
+#[test]
+fn a_compact_bake_keeps_no_vertex_of_a_skipped_triangle() {
+    let mut level = load(data("quads.obj")).unwrap();
+    let plain = ballcast_level::bake_compact::<f32>(&level).unwrap();
+    level
+        .triangles
+        .insert(1, [[9.0, 9.0, 9.0], [9.0, 9.0, 9.0], [10.0, 9.0, 9.0]]);
+    let baked = ballcast_level::bake_compact::<f32>(&level).unwrap();
+    assert_eq!(baked.stats.skipped, [1]);
+    let vertices = |b: &ballcast_level::Baked| match b.stats.form {
+        ballcast_level::Form::Compact { vertices, .. } => vertices,
+        _ => unreachable!(),
+    };
+    assert_eq!(vertices(&baked), vertices(&plain));
+    assert!(
+        !baked.source.contains("v([1092616192, 1091567616"),
+        "the (10, 9, .) corner"
+    );
+}
+
 #[test]
 fn degenerate_triangles_are_skipped_and_named() {
     // The two floor triangles of quads.obj, and a third with coincident vertices between them.
