@@ -164,14 +164,14 @@ pub(crate) fn same_plane<S: Scalar>(a: Vec3<S>, b: Vec3<S>) -> bool {
 /// `visit` runs once, or twice when more than [`TIES`] contacts tied and the first run could
 /// not keep the right ones.
 pub(crate) fn earliest<S: Scalar>(mut visit: impl FnMut(&mut Earliest<S>)) -> Option<SceneHit<S>> {
-    let mut first = Earliest::new(None);
-    visit(&mut first);
-    if !first.lossy {
-        return first.finish();
+    let mut acc = Earliest::new(None);
+    visit(&mut acc);
+    if acc.lossy {
+        // The second run in the first's place: one accumulator on the stack.
+        acc = Earliest::new(Some(acc.reach()));
+        visit(&mut acc);
     }
-    let mut second = Earliest::new(Some(first.reach()));
-    visit(&mut second);
-    second.finish()
+    acc.finish()
 }
 
 /// [`earliest`] over the contacts `offer(acc, scan)` gives: by its quick path (`scan` false),
