@@ -215,6 +215,27 @@ fn a_short_heightmap_in_i16f16_is_as_tall_as_asked() {
     }
 }
 
+/// In `f32` every height is the image's to a few parts in 10^7 of the terrain's height: the
+/// step is `H / 65 535` to `f32`'s precision and each sample a whole number of steps.
+#[test]
+fn an_f32_heightmap_keeps_every_grey_level() {
+    let samples: Vec<u8> = (0..=255).collect();
+    let map = load_heightmap(png("levels.png", (16, 16), GREY, EIGHT, &samples)).unwrap();
+    let placement = Placement {
+        origin: [0.0, -3.0, 0.0],
+        spacing: 1.0,
+        height: 4.0,
+    };
+    let (shape, heights) = map.grid::<f32>(&placement).unwrap();
+    let mut cells = [0u8; 225];
+    let field = ballcast::Heightfield::build(shape, &heights, |_, _| false, &mut cells).unwrap();
+    for (k, &sample) in map.samples.iter().enumerate() {
+        let y = field.vertex(k as u32 % 16, k as u32 / 16).unwrap().y;
+        let asked = -3.0 + f64::from(sample) / 65535.0 * 4.0;
+        assert!((f64::from(y) - asked).abs() < 1.2e-6, "{k}: {y} {asked}");
+    }
+}
+
 /// A placement the scalar cannot hold, each error naming the value as given: a height that is
 /// not positive and finite, a spacing that rounds to zero, cells of 300 over 32 cells (past
 /// I16F16's range), a white 2.2e9 high (a debug build's overflow, once), an origin that is
