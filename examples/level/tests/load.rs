@@ -284,6 +284,9 @@ fn gltf_double_sided_material_bakes_two_sided() {
         "{}",
         baked.stats
     );
+    // The compact bake keeps the mark in each triangle's byte.
+    let compact = ballcast_level::bake_compact::<f32>(&level).unwrap();
+    assert_eq!(compact.stats.two_sided, 1);
     // An OBJ file has no such mark.
     let obj = load(data("quads.obj")).unwrap();
     assert!(obj.two_sided.iter().all(|&s| !s) && obj.two_sided.len() == obj.triangles.len());
