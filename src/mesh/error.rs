@@ -33,8 +33,9 @@ impl fmt::Display for Buffer {
 #[non_exhaustive]
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum MeshError {
-    /// Input triangle `index` was refused by [`StandardTriangle::new`] for `error` (a degenerate
-    /// one only under [`Degenerates::Refuse`]).
+    /// Input triangle `index` was refused by
+    /// [`StandardTriangle::new`](crate::StandardTriangle::new) for `error` (a degenerate one
+    /// only under [`Degenerates::Refuse`](super::Degenerates::Refuse)).
     Triangle {
         /// Its index in the input.
         index: usize,
