@@ -103,7 +103,6 @@ impl UnitGrid {
 
     /// Offers the contacts the `f64` walk would offer; false, offering none (take that walk),
     /// where the box spans more than [`MAX_CELLS`] cells.
-    #[inline(never)]
     pub(super) fn offer<S: Scalar, K: Keep<S>>(
         &self,
         field: &Heightfield<'_, S>,
