@@ -68,9 +68,10 @@ impl<S: Scalar> Heightfield<'_, S> {
 
     /// Visits the cells the grown path crosses within the terrain's box, row by row in the
     /// direction of travel, and casts the triangles whose boxes (and planes, and halves of the
-    /// cell) the path comes near before the current reach. Out of line: its frame is not
-    /// added to the integer path's, which microcontrollers take.
-    #[inline(never)]
+    /// cell) the path comes near before the current reach. Where `f64` is software (see
+    /// [`offer`](Self::offer)) out of line, so that its frame is not added to the integer
+    /// walk's; inline elsewhere, where it is the only walk.
+    #[cfg_attr(all(target_arch = "arm", target_os = "none"), inline(never))]
     fn walk<K: Keep<S>>(
         &self,
         sweep: &Sweep<S>,
