@@ -1,6 +1,7 @@
 //! Stack headroom for the bare-metal programs: the RAM between the end of static data and (a
 //! margin below) the stack pointer is painted before a run; afterwards, the painted words still
-//! intact from the bottom up are RAM the run never touched.
+//! intact from the bottom up are RAM the run never touched. [`used_by`] gives the stack a call
+//! takes, its own frames included.
 
 const PAINT: u32 = 0xDEAD_BEEF;
 
@@ -36,4 +37,22 @@ impl Painted {
             .count();
         intact * 4
     }
+}
+
+/// `f()` and the bytes of stack it took: from the stack pointer it was called at down to the
+/// deepest word it wrote, every frame of it counted (the call runs out of line, below this
+/// function's frame). Exact for a call that takes more than the painting's margin (256 bytes).
+#[inline(never)]
+pub fn used_by<R>(f: impl FnOnce() -> R) -> (R, usize) {
+    let painted = paint();
+    let top = cortex_m::register::msp::read() as usize;
+    let r = out_of_line(f);
+    let deepest = painted.start as usize + painted.untouched();
+    (r, top - deepest)
+}
+
+/// `f()` in a frame of its own.
+#[inline(never)]
+fn out_of_line<R>(f: impl FnOnce() -> R) -> R {
+    f()
 }

@@ -307,15 +307,16 @@ impl<S: Scalar> Character<S> {
                     Some(ball.slide(level, me.position, Vec3::ZERO - n * depth)?)
                 };
                 let on = (up, min_cos);
-                let from = pressed.as_ref().map_or(me.position, |p| p.position);
+                // Where the press left the ball, and the floor it found (its slide is not kept
+                // through the walk: a firmware's stack pays for one slide less).
+                let (from, held) = match pressed {
+                    Some(p) => (p.position, p.ground_floor(up, min_cos)?),
+                    None => (me.position, None),
+                };
                 start = from;
                 let out = ball.walk(level, from, walk, Some(n), on, me.step)?;
                 let floor = out.ground_floor(up, min_cos)?;
                 // The press's floor holds the ball unless the walk leaves it (`walks_off`).
-                let held = match &pressed {
-                    Some(p) => p.ground_floor(up, min_cos)?,
-                    None => None,
-                };
                 let held = held.filter(|f| !walks_off(f, walk, me.unit_up()));
                 me.floor = floor.or(held);
                 out

@@ -132,6 +132,7 @@ impl<S: Scalar> Slider<S> {
     /// [`Error::ZeroVector`] for a `floor` that is NaN, beyond `±`[`Scalar::LIMIT`] or zero;
     /// [`Error::OutOfRange`] with [`Input::FloorFacing`](crate::Input::FloorFacing) for one
     /// that faces down (its cosine with `up` negative: a ceiling is no floor).
+    #[inline(never)]
     pub fn walk<G: Geometry<S> + ?Sized>(
         &self,
         scene: &G,
@@ -238,11 +239,12 @@ impl<S: Scalar> Slider<S> {
             // lowered from there the ball came down on the first step's nosing, too steep to
             // stand on; dropped every frame, the step held the ball at the foot of the stairs.
             let carry = landing(self.radius, lift, cos) + skin + skin;
-            let least = || (S::dot(displacement, into) > carry).then(|| step(Vec3::ZERO));
-            if let Some(out) = step(displacement)
-                .filter(past)
-                .or_else(|| least().flatten().filter(past))
-            {
+            // The second try in the first's place: one slide on the stack, not two.
+            let mut out = step(displacement).filter(past);
+            if out.is_none() && S::dot(displacement, into) > carry {
+                out = step(Vec3::ZERO).filter(past);
+            }
+            if let Some(out) = out {
                 return Ok(Slide {
                     pushed_out: plain.pushed_out,
                     ..out

@@ -55,16 +55,11 @@ fn main() -> ! {
         Err(e) => hprintln!("compound I16F16 refused: {}", e),
     }
     let untouched = painted.untouched();
-    // The walk's own stack: RAM painted anew, then what of it the walk wrote.
-    let again = stack::paint();
-    let free = again.untouched();
-    let (walked, grounded) = walker::walk::<I16F16, _>(&terrain::HEIGHTFIELD);
-    let used = free - again.untouched();
+    // The walk's own stack, every frame of it (`Character::update` and all below it).
+    let walk = || walker::walk::<I16F16, _>(&terrain::HEIGHTFIELD);
+    let ((walked, grounded), used) = stack::used_by(walk);
     hprintln!("character I16F16 {:016x}", walked);
-    let again = stack::paint();
-    let free = again.untouched();
-    let (walked, _) = walker::walk::<I16F16, _>(cached);
-    let used_cached = free - again.untouched();
+    let ((walked, _), used_cached) = stack::used_by(|| walker::walk::<I16F16, _>(cached));
     hprintln!("character cached I16F16 {:016x}", walked);
     use core::mem::size_of_val as size;
     let compact_bytes = size(&compact::NODES)
