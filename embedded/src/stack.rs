@@ -2,6 +2,8 @@
 //! margin below) the stack pointer is painted before a run; afterwards, the painted words still
 //! intact from the bottom up are RAM the run never touched. [`used_by`] gives the stack a call
 //! takes, its own frames included.
+// Shared by several programs, each of which uses part of it.
+#![allow(dead_code)]
 
 const PAINT: u32 = 0xDEAD_BEEF;
 
