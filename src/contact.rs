@@ -9,6 +9,7 @@
 //! Only distances are formed, never squares of coordinates, so fixed-point stays in range.
 
 use crate::face::{contains, face_point};
+use crate::reject::Cut;
 use crate::scalar::{largest, tie};
 use crate::{Contact, Hit, Scalar, StandardSweep, StandardTriangle, Sweep, Vec3};
 
@@ -67,7 +68,7 @@ impl<S: Scalar> StandardTriangle<S> {
     pub fn cast(&self, sweep: &Sweep<S>) -> Option<Hit<S>> {
         let (y0, y1) = self.heights(sweep);
         let (back, ..) = facing(sweep, (y0, y1), self.two_sided)?;
-        self.cast_facing(sweep, (y0, y1), back)
+        self.cast_facing(sweep, (y0, y1), back, S::ONE)
     }
 
     /// [`cast`](Self::cast) where only contacts at alpha `reach` or earlier matter: the same
@@ -80,7 +81,7 @@ impl<S: Scalar> StandardTriangle<S> {
         if above_at(sweep, (start, end), reach) {
             return None;
         }
-        self.cast_facing(sweep, (y0, y1), back)
+        self.cast_facing(sweep, (y0, y1), back, reach)
     }
 
     /// [`cast_within`](Self::cast_within) given the [`heights`](Self::heights) already found
@@ -92,19 +93,26 @@ impl<S: Scalar> StandardTriangle<S> {
         reach: S,
     ) -> Option<Hit<S>> {
         let back = within_reach(sweep, heights, self.two_sided, reach)?;
-        self.cast_facing(sweep, heights, back)
+        self.cast_facing(sweep, heights, back, reach)
     }
 
     /// The rest of [`cast`](Self::cast) for a sweep that may touch the triangle from the side
-    /// `back` says, its ends at heights `y0` and `y1` above the plane.
+    /// `back` says, its ends at heights `y0` and `y1` above the plane; edges and vertices
+    /// met after alpha `reach` may be passed over ([`Cut`]).
     #[inline]
-    fn cast_facing(&self, sweep: &Sweep<S>, (y0, y1): (S, S), back: bool) -> Option<Hit<S>> {
+    fn cast_facing(
+        &self,
+        sweep: &Sweep<S>,
+        (y0, y1): (S, S),
+        back: bool,
+        reach: S,
+    ) -> Option<Hit<S>> {
         let mut s = self.standardize_from(sweep, (y0, y1));
         if back {
             s.p0.y = -s.p0.y;
             s.p1.y = -s.p1.y;
         }
-        let (alpha, offset, contact, (num, den)) = self.cast_front(&s)?;
+        let (alpha, offset, contact, (num, den)) = self.cast_front(&s, reach)?;
         // The centre at contact from the unrounded fraction: a few steps of `S` off, where
         // `p0 + alpha (p1 - p0)` would carry alpha's rounding times the path's length.
         let (p0, d) = (sweep.p0(), sweep.p1() - sweep.p0());
@@ -134,8 +142,9 @@ impl<S: Scalar> StandardTriangle<S> {
         })
     }
 
-    /// `cast` for a sweep whose centre starts in front of the plane (or in it).
-    fn cast_front(&self, s: &StandardSweep<S>) -> Option<Touch<S>> {
+    /// `cast` for a sweep whose centre starts in front of the plane (or in it); edges and
+    /// vertices met after alpha `reach` may be passed over.
+    fn cast_front(&self, s: &StandardSweep<S>, reach: S) -> Option<Touch<S>> {
         let (p0, p1, r) = (s.p0, s.p1, s.radius);
         let d = p1 - p0;
         // Moving away, starting behind the plane, or never within r of it: only a ball rising
@@ -144,7 +153,7 @@ impl<S: Scalar> StandardTriangle<S> {
         if d.y > S::ZERO || p0.y < S::ZERO || p1.y >= r {
             let rising = d.y > S::ZERO && p0.y >= S::ZERO && p0.y < r;
             return if rising {
-                self.cast_rising(p0, p1, r)
+                self.cast_rising(p0, p1, r, self.cut(reach, p0, p1, r))
             } else {
                 None
             };
@@ -166,7 +175,7 @@ impl<S: Scalar> StandardTriangle<S> {
         if r == S::ZERO || !self.near_path(band, p1, r) || self.beyond_an_edge(band, p1, r) {
             return None;
         }
-        let edge = self.edges_and_vertices(p0, d, r);
+        let edge = self.edges_and_vertices(p0, d, r, self.cut(reach, p0, p1, r));
         let from = face.map_or(S::ZERO, |f| f.0);
         match self.seam_entry(p0, d, r, from) {
             Some((alpha, key)) if edge.is_none_or(|e| alpha < e.0) => {
@@ -183,13 +192,13 @@ impl<S: Scalar> StandardTriangle<S> {
     /// one of them first.
     #[cold]
     #[inline(never)]
-    fn cast_rising(&self, p0: Vec3<S>, p1: Vec3<S>, r: S) -> Option<Touch<S>> {
+    fn cast_rising(&self, p0: Vec3<S>, p1: Vec3<S>, r: S, cut: Cut<S>) -> Option<Touch<S>> {
         let over_face = contains(self, p0.x, p0.z) || self.within_seams(p0.x, p0.z, r);
         if over_face || r == S::ZERO || !self.near_path(p0, p1, r) || self.beyond_an_edge(p0, p1, r)
         {
             return None;
         }
-        self.edges_and_vertices(p0, p1 - p0, r)
+        self.edges_and_vertices(p0, p1 - p0, r, cut)
     }
 }
 

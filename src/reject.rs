@@ -56,6 +56,66 @@ impl<S: Scalar> StandardTriangle<S> {
     }
 }
 
+/// Where the edge and vertex tests may stop looking. When a scene already holds a contact,
+/// those after its reach (the earliest alpha plus the tie window) can neither come first nor
+/// tie, so a feature the ball cannot meet by then need not be solved: a feature whose distance
+/// from the centre is still falling at `alpha`, four tie windows past the reach (a contact
+/// within the reach shadows only contacts within one more tie window, and alpha is rounded by
+/// half a step), and still exceeds `r` grown by the rounding [`StandardTriangle::cut`] allows,
+/// is met later if at all ([`Cut::short_of`]). That test only ever follows the whole path's
+/// rejections, never replaces them (the path's box, the edge's slab and line): grown by the
+/// margin, a replacement could pass a feature those reject by a hair of rounding, and the
+/// answer would no longer be the single [`cast`](crate::StandardTriangle::cast)'s. The whole
+/// path (`alpha` one), what a single `cast` looks at, stops nowhere.
+#[derive(Clone, Copy)]
+pub(crate) struct Cut<S> {
+    alpha: S,
+    /// How far every distance `r` is compared with is grown; zero for the whole path.
+    grow: S,
+}
+
+impl<S: Scalar> StandardTriangle<S> {
+    /// The cut for contacts at alpha `reach` or earlier on the path from `p0` to `p1` (this
+    /// triangle's frame) of a ball of radius `r`: four times the heights' rounding bound
+    /// (as `cast_within`'s plane test allows for the edge and vertex tests) at the largest of
+    /// the coordinates, the triangle's size and `r`.
+    #[inline]
+    pub(crate) fn cut(&self, reach: S, p0: Vec3<S>, p1: Vec3<S>, r: S) -> Cut<S> {
+        let t = crate::scalar::tie::<S>();
+        let alpha = reach + t + t + t + t;
+        if alpha >= S::ONE {
+            return Cut {
+                alpha: S::ONE,
+                grow: S::ZERO,
+            };
+        }
+        let (x1, z1, x2) = self.shape();
+        let size = largest(x1.abs(), x2.abs(), z1);
+        let ends = largest(p0.abs().max_element(), p1.abs().max_element(), r);
+        let h = S::height_error(largest(ends, size, S::ZERO));
+        Cut {
+            alpha,
+            grow: h + h + h + h,
+        }
+    }
+}
+
+impl<S: Scalar> Cut<S> {
+    /// Whether a centre at offset `q(alpha)` from a feature at the cut, moving by `dq` over
+    /// the path, is still farther than `r` (grown) from it there and still approaching it: its
+    /// distance then falls all the way to the cut, so it comes within `r` no earlier (false for
+    /// the whole path). Offsets within `7 LIMIT` per component and a path within `3.5 LIMIT`
+    /// (a frame's rotation of one within `2 LIMIT`), so the exact `q · dq` of fixed point
+    /// stays below `74 LIMIT²`, within the wide type (`128 LIMIT²`).
+    #[inline]
+    pub(crate) fn short_of(self, q: impl FnOnce(S) -> Vec3<S>, dq: Vec3<S>, r: S) -> bool {
+        self.alpha < S::ONE && {
+            let q = q(self.alpha);
+            S::beyond(r + self.grow, q) && S::dot_sign(q, dq).is_lt()
+        }
+    }
+}
+
 /// Whether the point where the segment from `a` (height `r`) to `b` (height `b.y < 0`) crosses
 /// the plane lies more than `r` plus a margin outside an edge's line, given both ends' distances
 /// `wa`, `wb` outside it: then so does the whole part at heights `0..=r`. The crossing is

@@ -2,6 +2,7 @@
 //! edge or vertex, solved by closest approach (see the [module docs](super)).
 
 use super::Touch;
+use crate::reject::Cut;
 use crate::scalar::{largest, tie};
 use crate::{Contact, Scalar, StandardTriangle, Vec3};
 
@@ -14,11 +15,17 @@ impl<S: Scalar> StandardTriangle<S> {
     /// [`cast_front`](Self::cast_front) that most sweeps never reach, kept out of line so that
     /// the face path does not pay for its registers.
     #[inline(never)]
-    pub(super) fn edges_and_vertices(&self, p0: Vec3<S>, d: Vec3<S>, r: S) -> Option<Touch<S>> {
+    pub(super) fn edges_and_vertices(
+        &self,
+        p0: Vec3<S>,
+        d: Vec3<S>,
+        r: S,
+        cut: Cut<S>,
+    ) -> Option<Touch<S>> {
         let mut from = S::ZERO;
         // A second pass only for a ball let go from a starting overlap: from where it is clear.
         for _ in 0..2 {
-            let best = self.earliest(p0, d, r, from)?;
+            let best = self.earliest(p0, d, r, from, cut)?;
             // Only a centre within r of the plane can start overlapping an edge or vertex.
             match (from == S::ZERO && p0.y < r).then(|| self.clear_after(p0, d, r, best.0)) {
                 Some(Some(end)) => from = end,
@@ -28,16 +35,17 @@ impl<S: Scalar> StandardTriangle<S> {
         None
     }
 
-    /// The earliest contact with an active edge or vertex at alpha `from` or later.
+    /// The earliest contact with an active edge or vertex at alpha `from` or later, passing
+    /// over those met after the `cut`.
     #[inline(always)]
-    fn earliest(&self, p0: Vec3<S>, d: Vec3<S>, r: S, from: S) -> Option<Touch<S>> {
+    fn earliest(&self, p0: Vec3<S>, d: Vec3<S>, r: S, from: S, cut: Cut<S>) -> Option<Touch<S>> {
         let after = |c: &Timed<S>| c.0.0 >= from;
         let mut best: Option<Timed<S>> = None;
         // Each edge's rounded alpha, for the vertices at its ends.
         let mut edges: [Option<S>; 3] = [None; 3];
         for (i, at) in edges.iter_mut().enumerate() {
             if self.features.edge(i) {
-                let e = self.edge_contact(i, p0, d, r).filter(after);
+                let e = self.edge_contact(i, p0, d, r, cut).filter(after);
                 *at = e.map(|e| e.0.0);
                 best = earlier(best, e);
             }
@@ -53,6 +61,7 @@ impl<S: Scalar> StandardTriangle<S> {
             if !self.features.vertex(i)
                 || self.vertex_out_of_reach(i, p0, d, r)
                 || self.vertex_line_misses(i, p0, d, r)
+                || cut.short_of(|a| p0 - self.corner(i) + d.scale(a), d, r)
             {
                 continue;
             }
@@ -98,8 +107,16 @@ impl<S: Scalar> StandardTriangle<S> {
         }
     }
 
-    /// First contact with the interior of edge `i`, from vertex `i` to vertex `i + 1`.
-    fn edge_contact(&self, i: usize, p0: Vec3<S>, d: Vec3<S>, r: S) -> Option<Timed<S>> {
+    /// First contact with the interior of edge `i`, from vertex `i` to vertex `i + 1`, if
+    /// before the `cut`.
+    fn edge_contact(
+        &self,
+        i: usize,
+        p0: Vec3<S>,
+        d: Vec3<S>,
+        r: S,
+        cut: Cut<S>,
+    ) -> Option<Timed<S>> {
         let e = &self.edge(i);
         let rel = p0 - self.corner(i);
         // Along the edge (u) and away from the triangle in its plane (w).
@@ -115,6 +132,15 @@ impl<S: Scalar> StandardTriangle<S> {
         // Across the edge, the line of motion passes too far from it: no square root needed.
         let reach = largest(w0.abs(), p0.y.abs(), S::ZERO);
         if S::line_misses([w0, p0.y], [dw, d.y], r, reach) {
+            return None;
+        }
+        // Still approaching the edge's line at the cut, and not yet within r of it.
+        let across = Vec3::new(dw, d.y, S::ZERO);
+        if cut.short_of(
+            |a| Vec3::new(w0 + dw.mul(a), p0.y + d.y.mul(a), S::ZERO),
+            across,
+            r,
+        ) {
             return None;
         }
         // Across the edge the problem is planar: the centre moves from (w0, y0) along (dw, dy).

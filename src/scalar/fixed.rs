@@ -284,6 +284,15 @@ macro_rules! fixed_scalar {
                 (k2 >= 0).then(|| <$t>::from_bits($isqrt(k2.unsigned_abs()) as $bits))
             }
             #[inline]
+            fn beyond(r: Self, c: Vec3<Self>) -> bool {
+                if c.x.abs() > r || c.y.abs() > r || c.z.abs() > r {
+                    return true;
+                }
+                // As in `chord`: every square below r² <= 4 LIMIT², exact.
+                let sq = |a: $t| $wmul(a.to_bits(), a.to_bits());
+                sq(c.x) + sq(c.y) + sq(c.z) > sq(r)
+            }
+            #[inline]
             fn line_misses(q: [Self; 2], d: [Self; 2], r: Self, extent: Self) -> bool {
                 let (a, b) = (d[0].to_bits().unsigned_abs(), d[1].to_bits().unsigned_abs());
                 let (big, small) = if a < b { (b, a) } else { (a, b) };

@@ -160,6 +160,10 @@ macro_rules! float_scalar {
                 (k2 >= 0.0).then(|| $sqrt(k2))
             }
             #[inline]
+            fn beyond(r: Self, c: Vec3<Self>) -> bool {
+                crate::vec3::dot3(c, c) > r * r
+            }
+            #[inline]
             fn line_misses(q: [Self; 2], d: [Self; 2], r: Self, extent: Self) -> bool {
                 let (a, b) = (d[0].abs(), d[1].abs());
                 let (big, small) = if a < b { (b, a) } else { (a, b) };

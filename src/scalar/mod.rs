@@ -178,6 +178,9 @@ pub(crate) mod sealed {
         /// when `|c| > r`. Needs `r` within `LIMIT` and `c` within `8 * LIMIT`; fixed-point
         /// forms the squares exactly in the wide type.
         fn chord(r: Self, c: Vec3<Self>) -> Option<Self>;
+        /// Whether `|c| > r`, with no square root: exactly for fixed-point (the squares in the
+        /// wide type), by the rounded squares for floats. Needs `r` within `2 * LIMIT`.
+        fn beyond(r: Self, c: Vec3<Self>) -> bool;
         /// Whether the line through `q` along `d` certainly passes farther than `r` from the
         /// origin: `|q × d| > (r + margin) |d|`, decided with a few products and no square root,
         /// `|d|` bounded above by `max + min / 2` of its components. `q` and `d` are two
