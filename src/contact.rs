@@ -72,9 +72,13 @@ impl<S: Scalar> StandardTriangle<S> {
     }
 
     /// [`cast`](Self::cast) where only contacts at alpha `reach` or earlier matter: the same
-    /// answer when it is one of those, possibly `None` when `cast`'s contact would come later.
-    /// A scene passes the reach of the contacts it has so far, which rejects a triangle whose
-    /// plane the ball is still too high above at that alpha before any of the transform.
+    /// answer when it is one of those; when `cast`'s contact would come later, `None` or
+    /// another contact after `reach` (edges and vertices met later are passed by, so the
+    /// earliest of the rest may be another feature's). A scene passes the reach of the
+    /// contacts it has so far (or where the path leaves a leaf's box, which holds every contact
+    /// with the leaf's triangles), which rejects a triangle whose plane the ball is still too
+    /// high above at that alpha before any of the transform; callers offer what it returns to
+    /// an accumulator that drops contacts after its own reach.
     pub(crate) fn cast_within(&self, sweep: &Sweep<S>, reach: S) -> Option<Hit<S>> {
         let (y0, y1) = self.heights(sweep);
         let (back, start, end) = facing(sweep, (y0, y1), self.two_sided)?;

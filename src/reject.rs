@@ -56,13 +56,15 @@ impl<S: Scalar> StandardTriangle<S> {
     }
 }
 
-/// Where the edge and vertex tests may stop looking. When a scene already holds a contact,
-/// those after its reach (the earliest alpha plus the tie window) can neither come first nor
-/// tie, so a feature the ball cannot meet by then need not be solved: a feature whose distance
-/// from the centre is still falling at `alpha`, four tie windows past the reach (a contact
-/// within the reach shadows only contacts within one more tie window, and alpha is rounded by
-/// half a step), and still exceeds `r` grown by the rounding [`StandardTriangle::cut`] allows,
-/// is met later if at all ([`Cut::short_of`]). That test only ever follows the whole path's
+/// Where the edge and vertex tests may stop looking. When only contacts by some reach matter
+/// (a scene's earliest alpha so far plus the tie window, or where the path leaves the box of a
+/// leaf of a tree), those after it can neither come first nor tie, so a feature the ball
+/// cannot meet by then need not be solved: a feature whose distance from the centre (for an
+/// edge, from its line, in the plane across it) is still falling at `alpha`, four tie windows
+/// past the reach (a contact within the reach shadows only contacts within one more tie
+/// window, and alpha is rounded by half a step), and still exceeds `r` grown by the rounding
+/// [`StandardTriangle::cut`] allows, is met later if at all ([`Cut::short_of`]): along a
+/// straight path that distance is convex in alpha. That test only ever follows the whole path's
 /// rejections, never replaces them (the path's box, the edge's slab and line): grown by the
 /// margin, a replacement could pass a feature those reject by a hair of rounding, and the
 /// answer would no longer be the single [`cast`](crate::StandardTriangle::cast)'s. The whole
@@ -101,19 +103,26 @@ impl<S: Scalar> StandardTriangle<S> {
 }
 
 impl<S: Scalar> Cut<S> {
-    /// Whether a centre at offset `q(alpha)` from a feature at the cut, moving by `dq` over
-    /// the path, is still farther than `r` (grown) from it there and still approaching it: its
-    /// distance then falls all the way to the cut, so it comes within `r` no earlier (false for
-    /// the whole path). Offsets within `7 LIMIT` per component and a path within `3.5 LIMIT`
-    /// (a frame's rotation of one within `2 LIMIT`), so the exact `q · dq` of fixed point
-    /// stays below `74 LIMIT²`, within the wide type (`128 LIMIT²`).
+    /// Whether a centre starting at offset `q0` from a feature and moving by `dq` over the
+    /// path is, at the cut, still farther than `r` (grown) from it and still approaching it:
+    /// its distance then falls all the way to the cut, so it comes within `r` no earlier
+    /// (false for the whole path). For a vertex the offset is from the vertex; for an edge, in
+    /// the plane across it, from the edge's line, whose distance is at most the edge's.
     #[inline]
-    pub(crate) fn short_of(self, q: impl FnOnce(S) -> Vec3<S>, dq: Vec3<S>, r: S) -> bool {
-        self.alpha < S::ONE && {
-            let q = q(self.alpha);
-            S::beyond(r + self.grow, q) && S::dot_sign(q, dq).is_lt()
-        }
+    pub(crate) fn short_of(self, q0: Vec3<S>, dq: Vec3<S>, r: S) -> bool {
+        self.alpha < S::ONE && farther_and_approaching(q0, dq, self.alpha, r + self.grow)
     }
+}
+
+/// [`Cut::short_of`]'s test at `alpha`: `|q| > r` and `q · dq < 0` for `q = q0 + alpha dq`. The
+/// offsets lie within `3.5 LIMIT` of the scalar per component (points of the path seen from a
+/// corner, in the triangle's frame), as does the path, so fixed point's exact `q · dq` stays
+/// within `37 LIMIT²`, far inside the wide type. Out of line on bare-metal Arm, where its wide
+/// products would otherwise be inlined at each feature's test; inline elsewhere.
+#[cfg_attr(all(target_arch = "arm", target_os = "none"), inline(never))]
+fn farther_and_approaching<S: Scalar>(q0: Vec3<S>, dq: Vec3<S>, alpha: S, r: S) -> bool {
+    let q = q0 + dq.scale(alpha);
+    S::beyond(r, q) && S::dot_sign(q, dq).is_lt()
 }
 
 /// Whether the point where the segment from `a` (height `r`) to `b` (height `b.y < 0`) crosses
@@ -134,3 +143,6 @@ fn clipped_beyond<S: Scalar>(a: Vec3<S>, b: Vec3<S>, wa: S, wb: S, r: S) -> bool
     let big = r + h4 + h4;
     S::mul_cmp(wa - big, -b.y, r, big - wb).is_gt()
 }
+
+#[cfg(test)]
+mod tests;

@@ -61,7 +61,7 @@ impl<S: Scalar> StandardTriangle<S> {
             if !self.features.vertex(i)
                 || self.vertex_out_of_reach(i, p0, d, r)
                 || self.vertex_line_misses(i, p0, d, r)
-                || cut.short_of(|a| p0 - self.corner(i) + d.scale(a), d, r)
+                || cut.short_of(p0 - self.corner(i), d, r)
             {
                 continue;
             }
@@ -134,18 +134,12 @@ impl<S: Scalar> StandardTriangle<S> {
         if S::line_misses([w0, p0.y], [dw, d.y], r, reach) {
             return None;
         }
-        // Still approaching the edge's line at the cut, and not yet within r of it.
-        let across = Vec3::new(dw, d.y, S::ZERO);
-        if cut.short_of(
-            |a| Vec3::new(w0 + dw.mul(a), p0.y + d.y.mul(a), S::ZERO),
-            across,
-            r,
-        ) {
-            return None;
-        }
         // Across the edge the problem is planar: the centre moves from (w0, y0) along (dw, dy).
         let z = S::ZERO;
         let across = Vec3::new(dw, d.y, z);
+        if cut.short_of(Vec3::new(w0, p0.y, z), across, r) {
+            return None;
+        }
         let Some(motion) = S::direction(across) else {
             // No motion across the edge (none at all, or along it): only an overlap at the start.
             if !(u0 > z && u0 < e.len && resting(Vec3::new(w0, p0.y, z), r)) {

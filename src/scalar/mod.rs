@@ -149,8 +149,9 @@ pub(crate) mod sealed {
         fn dot(a: Vec3<Self>, b: Vec3<Self>) -> Self;
         /// The sign of `a · b`: exact for fixed-point (the sum of the exact products that
         /// [`dot`](Self::dot) rounds, so a product below half a step still counts), that of the
-        /// rounded dot product for floats. Needs each product of components within
-        /// `4 * LIMIT²` (both within `2 * LIMIT`, or one within `LIMIT` and the other `4 * LIMIT`).
+        /// rounded dot product for floats. Needs the products' magnitudes to sum to within
+        /// `128 * LIMIT²`, the wide type's room (e.g. each within `4 * LIMIT²`: both
+        /// components within `2 * LIMIT`, or one within `LIMIT` and the other `4 * LIMIT`).
         fn dot_sign(a: Vec3<Self>, b: Vec3<Self>) -> Ordering;
         /// A bound on the rounding of a height (a coordinate in a triangle's frame) for points
         /// within `±m`: four steps of the spacing at `m` for floats, eight steps for fixed-point
