@@ -96,22 +96,17 @@ fn within_reach_answers_as_cast<S: Scalar>() {
     );
 }
 
-#[test]
-fn within_reach_answers_as_cast_f32() {
-    within_reach_answers_as_cast::<f32>();
+macro_rules! per_scalar {
+    ($($name:ident: $s:ty),*) => {$(
+        #[test]
+        fn $name() {
+            within_reach_answers_as_cast::<$s>();
+        }
+    )*};
 }
-
-#[test]
-fn within_reach_answers_as_cast_f64() {
-    within_reach_answers_as_cast::<f64>();
-}
-
-#[test]
-fn within_reach_answers_as_cast_i16f16() {
-    within_reach_answers_as_cast::<I16F16>();
-}
-
-#[test]
-fn within_reach_answers_as_cast_i32f32() {
-    within_reach_answers_as_cast::<I32F32>();
-}
+per_scalar!(
+    within_reach_answers_as_cast_f32: f32,
+    within_reach_answers_as_cast_f64: f64,
+    within_reach_answers_as_cast_i16f16: I16F16,
+    within_reach_answers_as_cast_i32f32: I32F32
+);
