@@ -29,11 +29,8 @@ pub(crate) fn hides<S: Scalar>(
 
 /// Switches off `edge` of `tri`; a vertex stays active while either of its edges through it is.
 pub(crate) fn deactivate<S: Scalar>(tri: &mut StandardTriangle<S>, edge: usize) {
-    // Edge bits 0..3, vertex bits 3..6: vertex `v` is on while edge `v` or edge `v + 2` is.
     let off = if edge < 3 { 1 << edge } else { 0 };
-    let e = tri.features().bits() & 0b111 & !off;
-    let v = (e | e << 1 | e >> 2) & 0b111;
-    *tri = tri.with_features(Features::from_bits(e | v << 3));
+    tri.features = Features::of_edges(tri.features().bits() & !off);
 }
 
 /// Bits of a record holding `triangle * 3 + edge`: room for 2^28 triangles.

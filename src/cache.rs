@@ -140,7 +140,7 @@ pub(crate) trait Keep<S: Scalar>: Copy {
     /// Triangle `index`, if kept.
     fn get(&self, index: usize) -> Option<StandardTriangle<S>>;
     /// Keeps `triangle`, just prepared, as triangle `index`, in place of another if need be.
-    fn put(&self, index: usize, triangle: StandardTriangle<S>);
+    fn put(&self, index: usize, triangle: &StandardTriangle<S>);
 }
 
 impl<S: Scalar> Keep<S> for () {
@@ -148,7 +148,7 @@ impl<S: Scalar> Keep<S> for () {
     fn get(&self, _: usize) -> Option<StandardTriangle<S>> {
         None
     }
-    fn put(&self, _: usize, _: StandardTriangle<S>) {}
+    fn put(&self, _: usize, _: &StandardTriangle<S>) {}
 }
 
 /// Slots per set.
@@ -221,7 +221,7 @@ impl<S: Scalar> Keep<S> for Slots<'_, S> {
         Some(kept)
     }
 
-    fn put(&self, index: usize, triangle: StandardTriangle<S>) {
+    fn put(&self, index: usize, triangle: &StandardTriangle<S>) {
         let index = index.saturating_add(self.base);
         // An empty slot of the set, else the least recently used.
         let now = self.clock.get();
@@ -236,7 +236,7 @@ impl<S: Scalar> Keep<S> for Slots<'_, S> {
         if let (Some(key), Some(t)) = (self.keys.get(k), self.triangles.get(k)) {
             count(self.misses);
             key.set(index);
-            t.set(triangle);
+            t.set(*triangle);
             self.touch(k);
         }
     }
@@ -460,10 +460,10 @@ mod tests {
             cache.clock.set(clock);
             let slots = cache.slots();
             for i in 1..=4 {
-                slots.put(i, t(i as f32));
+                slots.put(i, &t(i as f32));
             }
             assert_eq!(slots.get(1), Some(t(1.0)));
-            slots.put(5, t(5.0));
+            slots.put(5, &t(5.0));
             assert_eq!(slots.get(2), None, "clock from {clock}");
             for i in [1, 3, 4, 5] {
                 assert_eq!(slots.get(i), Some(t(i as f32)), "clock from {clock}");

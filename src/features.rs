@@ -57,6 +57,13 @@ impl Features {
             self.with_bit(8 << i, on)
         }
     }
+    /// The edges of `edges`' bits 0..3 active, and each vertex with an active edge through
+    /// it: vertex `v` while edge `v` or edge `v + 2` is (the active edges of a triangle in a
+    /// mesh, or of a heightfield's cell byte).
+    pub(crate) const fn of_edges(edges: u8) -> Self {
+        let e = edges & 0b111;
+        Self(e | ((e | e << 1 | e >> 2) & 0b111) << 3)
+    }
     const fn with_bit(self, bit: u8, on: bool) -> Self {
         Self(if on { self.0 | bit } else { self.0 & !bit })
     }

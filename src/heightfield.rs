@@ -45,8 +45,7 @@ mod walk;
 #[cfg(feature = "alloc")]
 pub use buf::HeightfieldBuf;
 
-use crate::adjacency::deactivate;
-use crate::{Error, Scalar, StandardTriangle, Triangle, Vec3};
+use crate::{Error, Features, Scalar, StandardTriangle, Triangle, Vec3};
 use core::fmt;
 
 /// The hole bit of a cell byte: the cell has no triangles.
@@ -322,14 +321,8 @@ impl<'a, S: Scalar> Heightfield<'a, S> {
     /// Triangle `index`, as [`prepared`](Self::prepared) gives it, from its cell's
     /// [`corners`](Self::corners) and byte.
     fn prepare_from(corners: [Vec3<S>; 4], index: usize, byte: u8) -> Option<StandardTriangle<S>> {
-        let mut st = StandardTriangle::new(&half(corners, index % 2)).ok()?;
-        let bits = byte >> (3 * (index % 2));
-        for e in 0..3 {
-            if bits & (1 << e) == 0 {
-                deactivate(&mut st, e);
-            }
-        }
-        Some(st)
+        let st = StandardTriangle::new(&half(corners, index % 2)).ok()?;
+        Some(st.with_features(Features::of_edges(byte >> (3 * (index % 2)))))
     }
 
     /// Triangle `index` prepared with its active edges, as a mesh of the same triangles holds

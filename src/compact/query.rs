@@ -78,7 +78,7 @@ impl<S: Scalar, I: MeshIndex> CompactMesh<'_, S, I> {
                 cast_lazily(&t, byte, sweep, reach)
             } else {
                 let st = prepare(&t, byte)?;
-                cache.put(s, st);
+                cache.put(s, &st);
                 st.cast_within(sweep, reach)
             };
             Some((self.order.get(s)?.get(), hit?))

@@ -8,14 +8,13 @@
 //! whose box holds far more cells than its path crosses) takes that walk instead.
 
 use super::{HOLE, Heightfield, half};
-use crate::adjacency::deactivate;
 use crate::bvh;
 use crate::cache::Keep;
 use crate::contact::within_reach;
 use crate::cull::{UnitHeights, unit_bits};
 use crate::merge::Earliest;
 use crate::triangle::Frame;
-use crate::{Hit, Scalar, Sweep, Triangle};
+use crate::{Features, Hit, Scalar, Sweep, Triangle};
 
 /// The most cells a query's box may span for the integer query.
 pub(super) const MAX_CELLS: i64 = 64;
@@ -163,7 +162,7 @@ impl UnitGrid {
                     // With a cache the whole triangle is prepared and kept, for the next query.
                     let hit = if K::ON {
                         Heightfield::prepare_from(corners, t, byte).and_then(|st| {
-                            cache.put(t, st);
+                            cache.put(t, &st);
                             st.cast_within(sweep, reach)
                         })
                     } else {
@@ -235,14 +234,9 @@ fn cast_lazily<S: Scalar>(
     let frame = Frame::of(tri).ok()?;
     let heights = frame.heights(sweep);
     within_reach(sweep, heights, false, reach)?;
-    let mut st = frame.finish(tri).ok()?;
-    let bits = byte >> (3 * (t % 2));
-    for e in 0..3 {
-        if bits & (1 << e) == 0 {
-            deactivate(&mut st, e);
-        }
-    }
-    st.cast_within_heights(sweep, heights, reach)
+    let st = frame.finish(tri).ok()?;
+    st.with_features(Features::of_edges(byte >> (3 * (t % 2))))
+        .cast_within_heights(sweep, heights, reach)
 }
 
 #[cfg(test)]

@@ -202,13 +202,21 @@ impl<S: Scalar> Heightfield<'_, S> {
                     {
                         continue;
                     }
-                    let tri = kept.or_else(|| {
-                        let q = *corners.get_or_insert_with(|| self.corners(i as u32, k as u32));
-                        let tri = Self::prepare_from(q?, t, byte)?;
-                        cache.put(t, tri);
-                        Some(tri)
-                    });
-                    if let Some(hit) = tri.and_then(|tri| tri.cast_within(sweep, acc.reach())) {
+                    let fresh;
+                    let tri = match &kept {
+                        Some(tri) => tri,
+                        None => {
+                            let q =
+                                *corners.get_or_insert_with(|| self.corners(i as u32, k as u32));
+                            let Some(tri) = q.and_then(|q| Self::prepare_from(q, t, byte)) else {
+                                continue;
+                            };
+                            fresh = tri;
+                            cache.put(t, &fresh);
+                            &fresh
+                        }
+                    };
+                    if let Some(hit) = tri.cast_within(sweep, acc.reach()) {
                         acc.offer(t, hit);
                     }
                 }
