@@ -88,6 +88,15 @@ else
     echo "FAIL: forms on thumbv6m-none-eabi differ from the host's: $(cat "$work/forms-host.txt")" >&2
     exit 1
 fi
+# Its cache, a `static mut` made by `TriangleCache::new()`, is zero bytes: zero-initialised data
+# (`.bss`, symbol type b), nothing of it in flash.
+nm="$(rustc --print sysroot)/lib/rustlib/$(rustc -vV | sed -n 's/^host: //p')/bin/llvm-nm"
+cache="$("$nm" -C "${CARGO_TARGET_DIR:-embedded/target}/thumbv6m-none-eabi/release/forms" | grep -F '::CACHE::' || true)"
+echo "forms' cache: $cache"
+if [ "$(echo "$cache" | awk '{ print $2 }')" != "b" ]; then
+    echo "FAIL: the forms firmware's TriangleCache static is not zero-initialised (.bss)" >&2
+    exit 1
+fi
 # The mesh-count program's runs (its ramp mesh must agree with the ramp's linear scan); the
 # instruction counts themselves come from embedded/mesh_count.sh, run locally (slow).
 (cd embedded && timeout 120 cargo run --quiet --release --target thumbv6m-none-eabi --bin mesh_counts)

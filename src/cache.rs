@@ -31,18 +31,22 @@
 //! A [`Cached`] owns its cache, so it can live wherever the game keeps its level (a field of
 //! its state, one per character: each character's cache holds what it touches) and be kept
 //! for as long as the queries come back to the same place, across frames: that is where a cache
-//! pays. A new `Cached` starts empty. The geometry inside is only ever lent out shared, so the
-//! kept triangles are always its own. A cache is not `Sync` (its slots are `Cell`s): one per
-//! thread.
+//! pays; or it borrows one kept apart ([`Cached::with_cache`]: a firmware's zero-initialised
+//! `static mut`, in RAM and not in flash), exclusively for as long as it lives. A new `Cached`
+//! starts empty. The geometry inside is only ever lent out shared, so the kept triangles are
+//! always its own. A cache is not `Sync` (its slots are `Cell`s): one per thread.
 
 use crate::compound::{Compound, CompoundPart};
 use crate::merge::{Earliest, earliest_of};
 use crate::{Geometry, Mesh, Scalar, SceneHit, StandardTriangle, Sweep, Vec3};
+use core::borrow::Borrow;
 use core::cell::Cell;
+use core::marker::PhantomData;
 use core::ops::Range;
 
-/// No triangle: the key of an empty slot.
-const EMPTY: usize = usize::MAX;
+/// No triangle: the key of an empty slot. A slot holding triangle `index` has the key
+/// `index + 1`, so an empty cache is zero bytes throughout (see [`TriangleCache::new`]).
+const EMPTY: usize = 0;
 
 /// `N` prepared triangles of one geometry, by index (see the [module docs](self)): the cache a
 /// [`Cached`] geometry owns, for its size (`size_of::<TriangleCache<S, N>>()`) and its counts.
@@ -58,8 +62,10 @@ pub struct TriangleCache<S: Scalar, const N: usize> {
 }
 
 impl<S: Scalar, const N: usize> TriangleCache<S, N> {
-    /// An empty cache, made at compile time (for a `static mut`).
-    const fn empty() -> Self {
+    /// An empty cache. Every byte of it is zero, so a `static` (or `static mut`) one is
+    /// zero-initialised: on a microcontroller it takes RAM (`.bss`) and no flash. Lend it to
+    /// a geometry with [`Cached::with_cache`].
+    pub const fn new() -> Self {
         Self {
             keys: [const { Cell::new(EMPTY) }; N],
             triangles: [const { Cell::new(Mesh::<S>::filler()) }; N],
@@ -70,19 +76,17 @@ impl<S: Scalar, const N: usize> TriangleCache<S, N> {
         }
     }
 
-    /// An empty cache, built at run time.
-    pub(crate) fn new() -> Self {
-        Self {
-            keys: core::array::from_fn(|_| Cell::new(EMPTY)),
-            triangles: core::array::from_fn(|_| Cell::new(Mesh::<S>::filler())),
-            used: core::array::from_fn(|_| Cell::new(0)),
-            clock: Cell::new(0),
-            hits: Cell::new(0),
-            misses: Cell::new(0),
+    /// Empties the cache in place (its slots' triangles, never read from an empty slot, are
+    /// left as they are) and zeroes its counts.
+    fn clear(&self) {
+        self.keys.iter().for_each(|k| k.set(EMPTY));
+        self.used.iter().for_each(|u| u.set(0));
+        for c in [&self.clock, &self.hits, &self.misses] {
+            c.set(0);
         }
     }
 
-    /// Triangles found kept since the cache was made (saturating). Each is cast at once,
+    /// Triangles found kept since the cache was made or lent (saturating). Each is cast at once,
     /// sparing a preparation, or the culls that would have passed it by unprepared.
     pub fn hits(&self) -> u32 {
         self.hits.get()
@@ -104,6 +108,12 @@ impl<S: Scalar, const N: usize> TriangleCache<S, N> {
             misses: &self.misses,
             base: 0,
         }
+    }
+}
+
+impl<S: Scalar, const N: usize> Default for TriangleCache<S, N> {
+    fn default() -> Self {
+        Self::new()
     }
 }
 
@@ -161,6 +171,12 @@ impl<S: Scalar> Slots<'_, S> {
         Self { base, ..self }
     }
 
+    /// Triangle `index` of the part, as the whole cache's index, and its key.
+    fn key(&self, index: usize) -> (usize, usize) {
+        let index = index.saturating_add(self.base);
+        (index, index.wrapping_add(1))
+    }
+
     /// The slots of triangle `index`'s set.
     fn set(&self, index: usize) -> Range<usize> {
         let n = self.keys.len();
@@ -206,15 +222,16 @@ impl<S: Scalar> Keep<S> for Slots<'_, S> {
     const ON: bool = true;
 
     fn get(&self, index: usize) -> Option<StandardTriangle<S>> {
-        // (A compound's indices stay below `EMPTY`; were one to reach it, it is never found.)
-        let index = index.saturating_add(self.base);
-        if index == EMPTY {
+        let (index, key) = self.key(index);
+        // (A compound's indices stay below `usize::MAX`; were one to reach it, its key would
+        // be `EMPTY`, and it is never found.)
+        if key == EMPTY {
             return None;
         }
         let ways = self.set(index);
         let k = ways
             .clone()
-            .find(|&k| self.keys.get(k).is_some_and(|key| key.get() == index))?;
+            .find(|&k| self.keys.get(k).is_some_and(|k| k.get() == key))?;
         let kept = self.triangles.get(k).map(Cell::get)?;
         self.touch(k);
         count(self.hits);
@@ -222,20 +239,20 @@ impl<S: Scalar> Keep<S> for Slots<'_, S> {
     }
 
     fn put(&self, index: usize, triangle: &StandardTriangle<S>) {
-        let index = index.saturating_add(self.base);
+        let (index, key) = self.key(index);
         // An empty slot of the set, else the least recently used.
         let now = self.clock.get();
         let age = |k: &usize| match (self.keys.get(*k), self.used.get(*k)) {
-            (Some(key), _) if key.get() == EMPTY => u32::MAX,
+            (Some(slot), _) if slot.get() == EMPTY => u32::MAX,
             (_, Some(used)) => now.wrapping_sub(used.get()),
             _ => 0,
         };
         let Some(k) = self.set(index).max_by_key(age) else {
             return;
         };
-        if let (Some(key), Some(t)) = (self.keys.get(k), self.triangles.get(k)) {
+        if let (Some(slot), Some(t)) = (self.keys.get(k), self.triangles.get(k)) {
             count(self.misses);
-            key.set(index);
+            slot.set(key);
             t.set(*triangle);
             self.touch(k);
         }
@@ -330,9 +347,10 @@ impl<S: Scalar> Cacheable<S> for crate::MeshBuf<S> {
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
 #[derive(Clone, Debug)]
-pub struct Cached<G, S: Scalar, const N: usize> {
+pub struct Cached<G, S: Scalar, const N: usize, C = TriangleCache<S, N>> {
     geometry: G,
-    cache: TriangleCache<S, N>,
+    cache: C,
+    _scalar: PhantomData<S>,
 }
 
 impl<G: Cacheable<S>, S: Scalar, const N: usize> Cached<G, S, N> {
@@ -340,37 +358,59 @@ impl<G: Cacheable<S>, S: Scalar, const N: usize> Cached<G, S, N> {
     /// (`let level: Cached<_, _, 32> = Cached::new(terrain);`): 32 slots take 3.3 KB in `f32`
     /// (3.2 KB on a 32-bit core), 512 in `f64` about 100 KB. As a local, count on up to twice
     /// that on the stack (built, then moved: a Cortex-M0 build took 3 348 bytes of frame for a
-    /// 1 664-byte cache); on a microcontroller keep it in a `static mut` with
-    /// [`for_static`](Self::for_static).
+    /// 1 664-byte cache); on a microcontroller keep the cache in a `static mut` and lend it
+    /// with [`with_cache`](Cached::with_cache).
     pub fn new(geometry: G) -> Self {
-        Self {
-            geometry,
-            cache: TriangleCache::new(),
-        }
+        Self::owning(geometry, TriangleCache::new())
     }
 
-    /// [`new`](Self::new) at compile time, for a `static mut` (a `Cached` is not `Sync`, so
-    /// not a plain `static`): on a microcontroller, the cache in RAM instead of on the stack, as
-    /// a `static mut` of cortex-m-rt's `#[entry]` function (handed over as a `&'static mut`, no
-    /// `unsafe`) over a geometry baked as a `static`. Its empty keys are not zero, so the cache
-    /// is initialised data: it takes its size in flash too, copied to RAM at reset.
+    /// [`new`](Self::new) at compile time, for a `static mut` holding the geometry and its
+    /// cache together. The geometry's references make the whole `static` initialised data,
+    /// which takes its size in flash too (copied to RAM at reset): a cache kept apart, as
+    /// [`with_cache`](Cached::with_cache) borrows it, takes RAM alone.
+    pub const fn for_static(geometry: G) -> Self {
+        Self::owning(geometry, TriangleCache::new())
+    }
+
+    const fn owning(geometry: G, cache: TriangleCache<S, N>) -> Self {
+        Self {
+            geometry,
+            cache,
+            _scalar: PhantomData,
+        }
+    }
+}
+
+impl<'c, G: Cacheable<S>, S: Scalar, const N: usize> Cached<G, S, N, &'c TriangleCache<S, N>> {
+    /// `geometry` with `cache` lent to it, emptied first: the same as [`new`](Cached::new),
+    /// the cache kept wherever the caller likes. On a microcontroller, a `static mut` of
+    /// cortex-m-rt's `#[entry]` function (handed over as a `&'static mut`, no `unsafe`): an
+    /// empty [`TriangleCache`] is zero bytes, so it takes RAM (`.bss`) and no flash, and the
+    /// geometry can stay a `static` in flash. The borrow is exclusive for as long as the
+    /// `Cached` lives, and the cache starts empty: triangles are kept by index, and another
+    /// geometry's under the same indices are never found.
     ///
     /// ```ignore
     /// #[entry]
     /// fn main() -> ! {
-    ///     static mut LEVEL: Cached<Heightfield<'static, I16F16>, I16F16, 16> =
-    ///         Cached::for_static(terrain::HEIGHTFIELD);
-    ///     let level: &'static Cached<_, _, 16> = LEVEL;
-    ///     // ... `me.update(level, wish, gravity, dt)` every frame
+    ///     static mut CACHE: TriangleCache<I16F16, 16> = TriangleCache::new();
+    ///     let level = Cached::with_cache(terrain::HEIGHTFIELD, CACHE);
+    ///     // ... `me.update(&level, wish, gravity, dt)` every frame
     /// }
     /// ```
-    pub const fn for_static(geometry: G) -> Self {
+    pub fn with_cache(geometry: G, cache: &'c mut TriangleCache<S, N>) -> Self {
+        cache.clear();
         Self {
             geometry,
-            cache: TriangleCache::empty(),
+            cache,
+            _scalar: PhantomData,
         }
     }
+}
 
+impl<G: Cacheable<S>, S: Scalar, const N: usize, C: Borrow<TriangleCache<S, N>>>
+    Cached<G, S, N, C>
+{
     /// The earliest contact along the sweep: the geometry's own answer, bit for bit (the
     /// same as [`Geometry::cast`], without importing the trait).
     pub fn cast(&self, sweep: &Sweep<S>) -> Option<SceneHit<S>> {
@@ -384,16 +424,18 @@ impl<G: Cacheable<S>, S: Scalar, const N: usize> Cached<G, S, N> {
 
     /// The cache (for its [`hits`](TriangleCache::hits) and [`misses`](TriangleCache::misses)).
     pub fn cache(&self) -> &TriangleCache<S, N> {
-        &self.cache
+        self.cache.borrow()
     }
 
-    /// The geometry, the cache dropped.
+    /// The geometry, the cache dropped (or no longer borrowed).
     pub fn into_geometry(self) -> G {
         self.geometry
     }
 }
 
-impl<G: Cacheable<S>, S: Scalar, const N: usize> Geometry<S> for Cached<G, S, N> {
+impl<G: Cacheable<S>, S: Scalar, const N: usize, C: Borrow<TriangleCache<S, N>>> Geometry<S>
+    for Cached<G, S, N, C>
+{
     fn cast(&self, sweep: &Sweep<S>) -> Option<SceneHit<S>> {
         Cached::cast(self, sweep)
     }
@@ -403,7 +445,9 @@ impl<G: Cacheable<S>, S: Scalar, const N: usize> Geometry<S> for Cached<G, S, N>
     }
 }
 
-impl<G: Cacheable<S>, S: Scalar, const N: usize> CompoundPart<S> for Cached<G, S, N> {
+impl<G: Cacheable<S>, S: Scalar, const N: usize, C: Borrow<TriangleCache<S, N>>> CompoundPart<S>
+    for Cached<G, S, N, C>
+{
     fn index_bound(&self) -> usize {
         self.geometry.index_bound()
     }
@@ -412,7 +456,7 @@ impl<G: Cacheable<S>, S: Scalar, const N: usize> CompoundPart<S> for Cached<G, S
         if scan {
             self.geometry.offer_contacts(sweep, acc, true)
         } else {
-            self.geometry.offer_cached(sweep, acc, self.cache.slots())
+            self.geometry.offer_cached(sweep, acc, self.cache().slots())
         }
     }
 }

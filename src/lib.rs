@@ -78,9 +78,9 @@
 //! - [`heightfield`] holds [`Heightfield`], a terrain as a grid of 16-bit heights (about 1.5
 //!   bytes per triangle), answering exactly as the same triangles in a mesh; with the `alloc`
 //!   feature also `HeightfieldBuf`, one owning its heights and cell bytes.
-//! - [`cache`] holds [`Cached`], a heightfield or compact mesh owning a [`TriangleCache`] of
-//!   prepared triangles, for queries that come back to the same triangles (a character's,
-//!   frame after frame), answering exactly as without.
+//! - [`cache`] holds [`Cached`], a heightfield or compact mesh owning (or borrowing) a
+//!   [`TriangleCache`] of prepared triangles, for queries that come back to the same triangles
+//!   (a character's, frame after frame), answering exactly as without.
 //! - [`compound`] holds [`Compound`], two geometries (a heightfield and the meshes standing on
 //!   it) cast against as one, answering exactly as one mesh of the same prepared triangles
 //!   (each part keeps its own active edges), and [`CompoundPart`], what can be one of them.

@@ -115,7 +115,9 @@ impl<'a, S: Scalar> Mesh<'a, S> {
         }
     }
 
-    /// A placeholder to fill a buffer of prepared triangles with before [`build`](Self::build).
+    /// A placeholder to fill a buffer of prepared triangles with before [`build`](Self::build):
+    /// every byte zero (no active feature), so a `static` buffer of them is zero-initialised
+    /// (`.bss` on a microcontroller: RAM only, no copy in flash).
     pub const fn filler() -> StandardTriangle<S> {
         let z = Vec3::ZERO;
         let u = Vec3::new(S::UNIT_ZERO, S::UNIT_ZERO, S::UNIT_ZERO);
@@ -129,7 +131,7 @@ impl<'a, S: Scalar> Mesh<'a, S> {
             shape: [S::ZERO; 3],
             normal: z,
             edges: [edge; 3],
-            features: Features::ALL.bits(),
+            features: Features::FACE_ONLY.bits(),
             two_sided: false,
             world_heights: false,
         })

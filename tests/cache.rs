@@ -2,15 +2,15 @@
 //! without, bit for bit, for any cache size (one slot, a count that is no power of two, more
 //! than the triangles), alone, in a compound and in a walk of slides, with two-sided triangles
 //! and over a malformed tree (scanned); caches of several characters over one terrain, each
-//! through a reference; a cache kept across frames saves preparations. Every property in
-//! every scalar.
+//! through a reference; a cache kept across frames saves preparations; a cache lent to the
+//! geometry from elsewhere answers as one of its own. Every property in every scalar.
 
 mod common;
 mod meshes;
 
 use ballcast::{
     Cacheable, Cached, CompactMesh, Compound, Degenerates, Heightfield, HeightfieldShape, Mesh,
-    Scalar, Sweep, move_and_slide, slide::Character,
+    Scalar, Sweep, TriangleCache, move_and_slide, slide::Character,
 };
 use common::{Rng, v};
 use fixed::types::{I16F16, I32F32};
@@ -328,6 +328,43 @@ fn a_cache_made_at_compile_time_answers_as_without<S: Scalar>() {
     assert_eq!(nothing.cast(&fall), None);
 }
 
+/// `Cached::with_cache`, a geometry lent a cache kept apart (a firmware's zero-initialised
+/// `static mut`): the same answers and counts as a cache of its own; lent again, to another
+/// terrain whose triangles have the same indices, it starts empty and answers as that terrain
+/// (a triangle kept for the first would be a wrong answer for the second).
+fn a_lent_cache_answers_as_an_owned_one<S: Scalar>() {
+    let (mut heights, mut cells) = (Vec::new(), vec![0u8; (W * W) as usize]);
+    let field = terrain::<S>(0x1e47_ca5e, &mut heights, &mut cells);
+    let (mut other_heights, mut other_cells) = (Vec::new(), vec![0u8; (W * W) as usize]);
+    let other = terrain::<S>(0x07e4_0002, &mut other_heights, &mut other_cells);
+    let mut rng = Rng(0x5eed_0008);
+    let mut cache: TriangleCache<S, 9> = const { TriangleCache::new() };
+    let owned: Cached<_, S, 9> = Cached::new(field);
+    let sweeps = sweeps::<S>(&mut rng, 600);
+    let counts = |c: &TriangleCache<S, 9>| (c.hits(), c.misses());
+    {
+        let lent = Cached::with_cache(field, &mut cache);
+        for s in &sweeps {
+            let want = format!("{:?}", field.cast(s));
+            assert_eq!(format!("{:?}", lent.cast(s)), want);
+            assert_eq!(format!("{:?}", owned.cast(s)), want);
+        }
+        assert_eq!(counts(lent.cache()), counts(owned.cache()));
+        assert!(counts(lent.cache()).0 > 50, "{:?}", counts(lent.cache()));
+    }
+    // The same sweeps over the other terrain, the last first: where the first terrain's
+    // triangles were kept last.
+    let lent = Cached::with_cache(other, &mut cache);
+    assert_eq!(counts(lent.cache()), (0, 0));
+    let fresh: Cached<_, S, 9> = Cached::new(other);
+    for s in sweeps.iter().rev() {
+        let want = format!("{:?}", other.cast(s));
+        assert_eq!(format!("{:?}", lent.cast(s)), want);
+        assert_eq!(format!("{:?}", fresh.cast(s)), want);
+    }
+    assert_eq!(counts(lent.cache()), counts(fresh.cache()));
+}
+
 meshes::per_scalar!(
     heightfield_answers_as_without,
     compact_answers_as_without,
@@ -337,4 +374,5 @@ meshes::per_scalar!(
     a_cached_kept_across_frames_prepares_far_fewer,
     a_cached_compound_keeps_its_parts_apart,
     a_cache_made_at_compile_time_answers_as_without,
+    a_lent_cache_answers_as_an_owned_one,
 );

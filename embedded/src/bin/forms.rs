@@ -3,7 +3,8 @@
 //! `../forms.rs`), each alone and both as one `Compound` level. Prints `compact I16F16 hash`,
 //! `heightfield I16F16 hash`, `compound I16F16 hash` and, for a `Character` walking over the
 //! terrain (`../walker.rs`), `character I16F16 hash` and, over the terrain with a cache of 16
-//! triangles kept in a static (`Cached::for_static`), `character cached I16F16 hash`: the lines
+//! triangles kept in a zero-initialised static (`Cached::with_cache`), `character cached I16F16
+//! hash`: the lines
 //! the host's
 //! `cargo run --release --example forms` (the forms built at run time) prints; then each form's
 //! bytes in flash, the RAM the arena runs never touched and the stack the walk used (the
@@ -13,7 +14,7 @@
 #![no_std]
 #![no_main]
 
-use ballcast::{Cached, Compound, Heightfield};
+use ballcast::{Cached, Compound, TriangleCache};
 use cortex_m_rt::entry;
 use cortex_m_semihosting::{debug, hprintln};
 use fixed::types::I16F16;
@@ -36,11 +37,11 @@ mod terrain {
 
 #[entry]
 fn main() -> ! {
-    // A cache of 16 prepared triangles for the terrain, made at compile time in RAM (not on
-    // the stack): cortex-m-rt hands a `static mut` of the entry function over as `&'static mut`.
-    static mut CACHED: Cached<Heightfield<'static, I16F16>, I16F16, 16> =
-        Cached::for_static(terrain::HEIGHTFIELD);
-    let cached: &'static Cached<_, _, 16> = CACHED;
+    // A cache of 16 prepared triangles for the terrain, in RAM (not on the stack): cortex-m-rt
+    // hands a `static mut` of the entry function over as `&'static mut`. Empty, it is zero
+    // bytes: zero-initialised (`.bss`), nothing of it in flash.
+    static mut CACHE: TriangleCache<I16F16, 16> = TriangleCache::new();
+    let cached = Cached::with_cache(terrain::HEIGHTFIELD, CACHE);
     let painted = stack::paint();
     let (throws, steps) = (arena::THROWS, arena::STEPS_PER_THROW);
     let c = arena::simulate::<I16F16, _>(&compact::MESH, throws, steps);
@@ -59,7 +60,7 @@ fn main() -> ! {
     let walk = || walker::walk::<I16F16, _>(&terrain::HEIGHTFIELD);
     let ((walked, grounded), used) = stack::used_by(walk);
     hprintln!("character I16F16 {:016x}", walked);
-    let ((walked, _), used_cached) = stack::used_by(|| walker::walk::<I16F16, _>(cached));
+    let ((walked, _), used_cached) = stack::used_by(|| walker::walk::<I16F16, _>(&cached));
     hprintln!("character cached I16F16 {:016x}", walked);
     use core::mem::size_of_val as size;
     let compact_bytes = size(&compact::NODES)
