@@ -214,12 +214,14 @@ impl fmt::Display for Input {
 
 impl Error {
     /// The argument refused, for [`Error::NaN`], [`Error::OutOfRange`] and
-    /// [`Error::ZeroVector`].
+    /// [`Error::ZeroVector`]; [`Input::Radius`] for [`Error::NegativeRadius`] and
+    /// [`Error::RadiusTooSmall`] (too small for the coordinates where the ball is or goes).
     pub const fn input(&self) -> Option<Input> {
         match *self {
             Error::NaN { input, .. }
             | Error::OutOfRange { input, .. }
             | Error::ZeroVector { input } => Some(input),
+            Error::NegativeRadius { .. } | Error::RadiusTooSmall { .. } => Some(Input::Radius),
             _ => None,
         }
     }
@@ -338,7 +340,7 @@ impl fmt::Display for Error {
                 write!(
                     f,
                     "the radius {radius} is below {min}, the smallest the scalar resolves at \
-                     coordinates up to {extent}"
+                     coordinates up to {extent} (where the ball is or goes)"
                 )
             }
             Error::Mismatch { .. } => {

@@ -294,7 +294,9 @@ impl<'a, S: Scalar> Heightfield<'a, S> {
         o + self.spacing.mul(S::from_int(n.min(i32::MAX as u32) as i32))
     }
 
-    /// Triangle `index` (cell `index / 2`; see the [module docs](self)), holes included.
+    /// Triangle `index` (cell `index / 2`; see the [module docs](self)), holes included: the
+    /// triangles the heightfield answers with are those [`prepared`](Self::prepared) gives
+    /// (`None` for a hole), or the cell bytes without the [`HOLE`] bit.
     pub fn triangle(&self, index: usize) -> Option<Triangle<S>> {
         let c = index / 2;
         let w = self.columns.max(1) as usize;

@@ -381,6 +381,97 @@ fn standing_on_a_slope_at_960_hz_does_not_creep<S: Tolerance>() {
     }
 }
 
+/// A slope limit is the cosine of the steepest floor, in `[0, 1]`: a negative one (which would
+/// take ceilings for floors, and refuse to walk along them a frame later, naming the floor's
+/// facing, which the caller never gave) is refused where it is given, by the character, the
+/// slider and a slide's floor.
+fn a_negative_slope_cosine_is_refused_where_given<S: Tolerance>() {
+    let me = Character::new(v::<S>([0.0, 1.0, 0.0]), S::from_f64(0.5)).unwrap();
+    let minus = S::from_f64(-0.9);
+    let refused = |e: Result<(), Error>| {
+        matches!(
+            e,
+            Err(Error::OutOfRange {
+                input: Input::MaxSlope,
+                min: 0.0,
+                max: 1.0,
+                ..
+            })
+        )
+    };
+    assert!(
+        refused(me.with_slope(Vec3::Y, minus).map(|_| ())),
+        "{}",
+        S::NAME
+    );
+    let ball = ballcast::slide::Slider::new(S::from_f64(0.5)).unwrap();
+    assert!(
+        refused(ball.with_max_slope(Vec3::Y, minus).map(|_| ())),
+        "{}",
+        S::NAME
+    );
+    let out = ball.slide(&floor::<S>(), v([0.0, 0.6, 0.0]), v([0.0, -0.2, 0.0]));
+    let out = out.unwrap();
+    assert!(
+        refused(out.floor(Vec3::Y, minus).map(|_| ())),
+        "{}",
+        S::NAME
+    );
+    assert!(
+        out.floor(Vec3::Y, S::ZERO).unwrap().is_some(),
+        "{}",
+        S::NAME
+    );
+}
+
+/// With the slope limit at upright (cosine zero), a wall leaning out over the ball by a tie
+/// window (its normal's cosine with up just below zero, within the rounding the limit allows
+/// for) is a wall: a character falling against it is not grounded on it and every update goes
+/// through. (The allowance once took the limit below zero: grounded on the wall in every
+/// scalar, at the third frame.)
+fn an_upright_slope_limit_takes_no_leaning_wall_for_floor<S: Tolerance>() {
+    let lean = 4.0 * 4.0 * S::EPSILON.to_f64(); // a tie window over the wall's height of 4
+    let mut s: Scene<S, 2> = Scene::new();
+    // At x = 1, facing -x, its top leaning out over the ball by `lean`.
+    let (lo, hi) = ([1.0, -2.0], [1.0 - lean, 2.0]);
+    let wall = [
+        [lo[0], lo[1], -20.0],
+        [hi[0], hi[1], -20.0],
+        [hi[0], hi[1], 20.0],
+        [lo[0], lo[1], 20.0],
+    ];
+    for t in [[wall[0], wall[2], wall[1]], [wall[0], wall[3], wall[2]]] {
+        s.push(Triangle::new(v(t[0]), v(t[1]), v(t[2]))).unwrap();
+    }
+    let n = Triangle::new(v::<S>(wall[0]), v(wall[2]), v(wall[1]));
+    let facing = ballcast::StandardTriangle::new(&n)
+        .unwrap()
+        .normal()
+        .y
+        .to_f64();
+    assert!(facing < 0.0 && facing > -lean, "{}: {facing:e}", S::NAME);
+    let mut me = Character::new(v::<S>([0.4, 1.0, 0.0]), S::from_f64(0.5))
+        .unwrap()
+        .with_slope(Vec3::Y, S::ZERO)
+        .unwrap();
+    // Thrown at the wall.
+    me.velocity = v([2.0, 0.0, 0.0]);
+    let (wish, gravity, dt) = (
+        v([1.0, 0.0, 0.0]),
+        v([0.0, -1.0, 0.0]),
+        S::from_f64(1.0 / 64.0),
+    );
+    for frame in 0..64 {
+        let step = me.update(&s, wish, gravity, dt);
+        assert!(step.is_ok(), "{} frame {frame}: {step:?}", S::NAME);
+        assert!(
+            !me.is_grounded(),
+            "{} frame {frame}: grounded on the wall",
+            S::NAME
+        );
+    }
+}
+
 macro_rules! per_scalar {
     ($($m:ident: $t:ty),*) => {$(mod $m {
         #[allow(unused_imports)]
@@ -412,6 +503,14 @@ macro_rules! per_scalar {
         #[test]
         fn bad_settings_are_errors() {
             super::bad_settings_are_errors::<$t>();
+        }
+        #[test]
+        fn a_negative_slope_cosine_is_refused_where_given() {
+            super::a_negative_slope_cosine_is_refused_where_given::<$t>();
+        }
+        #[test]
+        fn an_upright_slope_limit_takes_no_leaning_wall_for_floor() {
+            super::an_upright_slope_limit_takes_no_leaning_wall_for_floor::<$t>();
         }
     })*};
 }

@@ -214,13 +214,17 @@ fn nan_is_its_own_cause<S: Scalar>() {
     assert_eq!(pushed.to_string(), "triangle 0: a coordinate of v1 is NaN");
 }
 
-/// Negative radius and a radius too small for the scalar give the value (and the limit).
+/// Negative radius and a radius too small for the scalar give the value (and the limit), and
+/// name the radius as the argument refused (`Error::input` once gave nothing for them).
 fn radius_errors_give_the_radius<S: Scalar>() {
     let scene: Scene<S, 1> = Scene::new();
     let z = v::<S>([0.0; 3]);
     let e = move_and_slide(&scene, z, z, S::from_f64(-1.0)).unwrap_err();
     assert_eq!(e, Error::NegativeRadius { value: -1.0 });
     assert_eq!(e.to_string(), "the radius -1 is negative");
+    assert_eq!(e.input(), Some(Input::Radius));
+    let e = Sweep::new(z, z, S::from_f64(-1.0)).unwrap_err();
+    assert_eq!(e.input(), Some(Input::Radius));
     let tiny = S::EPSILON;
     let e = move_and_slide(&scene, z, z, tiny).unwrap_err();
     let min = ballcast::slide::min_radius(S::ZERO).to_f64();
@@ -233,6 +237,7 @@ fn radius_errors_give_the_radius<S: Scalar>() {
         }
     );
     assert!(e.to_string().starts_with("the radius "), "{e}");
+    assert_eq!(e.input(), Some(Input::Radius));
 }
 
 /// An `f32` value reads as typed: a radius of -0.4 is -0.4 in the message, not the `f64` it
@@ -265,7 +270,7 @@ fn f32_values_read_as_typed() {
     assert_eq!(
         e.to_string(),
         "the radius 0.000000000000042632564 is below 0.00000000000004263256414560601, the \
-         smallest the scalar resolves at coordinates up to 3"
+         smallest the scalar resolves at coordinates up to 3 (where the ball is or goes)"
     );
     // A subnormal `f32` in its `f64` digits: as an `f32` it printed 1e-45, 40 % off.
     let tiny = -f64::from(f32::from_bits(1));

@@ -214,14 +214,19 @@ fn main() {
             run.name, run.contacts, run.speed
         );
     }
-    // The repository's `target/` (this package lives in `examples/demo/`).
+    // The repository's `target/` (this package lives in `examples/demo/`), made if a build
+    // directory elsewhere (`CARGO_TARGET_DIR`) left it out.
     let manifest = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
-    let file = manifest
+    let dir = manifest
         .ancestors()
         .nth(2)
         .unwrap_or(manifest)
-        .join("target/demo.svg");
-    match picture(&runs, &file) {
+        .join("target");
+    let file = dir.join("demo.svg");
+    let written = std::fs::create_dir_all(&dir)
+        .map_err(Into::into)
+        .and_then(|()| picture(&runs, &file));
+    match written {
         Ok(()) => println!("picture: {}", file.display()),
         Err(e) => {
             eprintln!("could not write {}: {e}", file.display());

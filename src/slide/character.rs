@@ -190,7 +190,7 @@ impl<S: Scalar> Character<S> {
     }
 
     /// A jump: where it stands on a floor, sets its velocity's part along `up` to `speed`
-    /// (keeping the rest), leaves the floor and returns true; in the air, does nothing and
+    /// (units per second, as the velocity; keeping the rest), leaves the floor and returns true; in the air, does nothing and
     /// returns false. Set, not added, as Quake III's `PM_CheckJump` does: walking along a
     /// tilted floor gives the velocity a part along `up` (up a ramp, over a stair's edge), and
     /// added to it the jump rose from a stair's edge nearly twice as high as from level ground.

@@ -163,7 +163,7 @@ impl<S: Scalar> Slide<S> {
     /// ```
     ///
     /// Errors: [`Error::NaN`]; [`Error::OutOfRange`] for a component of `up` beyond
-    /// `±`[`Scalar::LIMIT`] or `min_cos` outside `[-1, 1]`; [`Error::ZeroVector`] for an `up`
+    /// `±`[`Scalar::LIMIT`] or `min_cos` outside `[0, 1]`; [`Error::ZeroVector`] for an `up`
     /// of zero (in the scalar).
     pub fn floor(&self, up: Vec3<S>, min_cos: S) -> Result<Option<&SlideContact<S>>, Error> {
         Ok(self.ground(up, min_cos)?.map(|(c, _)| c))
@@ -219,17 +219,21 @@ impl<S: Scalar> Slide<S> {
 }
 
 /// A slope limit checked: `up` (components within `±LIMIT`, not zero in the scalar) as a unit
-/// vector, and `min_cos` within `[-1, 1]`, lowered by the rounding of a product of unit normals
-/// (eight steps, as [`constrain`](rules::constrain) allows): a face exactly at the limit counts
-/// as within it. (A 45° face's normal came out a unit in the last place either side of
-/// `FRAC_1_SQRT_2`, tile by tile, and a ball walking up a 45° slope was held back on some tiles
-/// as by a wall: in `f64` it slid back down.)
+/// vector, and `min_cos` within `[0, 1]` (a floor faces up: with a negative cosine a ceiling
+/// would count as floor, and a walk along it is refused), lowered by the rounding of a product
+/// of unit normals (eight steps, as [`constrain`](rules::constrain) allows): a face exactly at
+/// the limit counts as within it. (A 45° face's normal came out a unit in the last place either
+/// side of `FRAC_1_SQRT_2`, tile by tile, and a ball walking up a 45° slope was held back on
+/// some tiles as by a wall: in `f64` it slid back down.) Never lowered below zero: a wall
+/// leaning out by less than that rounding is still a wall, not a floor facing down.
 fn slope_limit<S: Scalar>(up: Vec3<S>, min_cos: S) -> Result<(Vec3<S>, S), Error> {
     let up = check::point(up, S::LIMIT, Input::Up)?;
-    let min_cos = check::within(min_cos, -S::ONE, S::ONE, Input::MaxSlope)?;
+    let min_cos = check::within(min_cos, S::ZERO, S::ONE, Input::MaxSlope)?;
     let zero = Error::ZeroVector { input: Input::Up };
     let tie = crate::scalar::tie::<S>();
-    Ok((unit(up).ok_or(zero)?, min_cos - (tie + tie)))
+    let lowered = min_cos - (tie + tie);
+    let lowered = if lowered > S::ZERO { lowered } else { S::ZERO };
+    Ok((unit(up).ok_or(zero)?, lowered))
 }
 
 /// The gap kept between a ball of `radius` and what it touched, for centres within `±extent`:

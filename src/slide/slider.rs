@@ -86,7 +86,7 @@ impl<S: Scalar> Slider<S> {
     /// ```
     ///
     /// Errors: [`Error::NaN`]; [`Error::OutOfRange`] for a component of `up` beyond
-    /// `±`[`Scalar::LIMIT`] or `min_cos` outside `[-1, 1]`; [`Error::ZeroVector`] for an `up`
+    /// `±`[`Scalar::LIMIT`] or `min_cos` outside `[0, 1]` (a floor faces up); [`Error::ZeroVector`] for an `up`
     /// of zero (in the scalar).
     pub fn with_max_slope(self, up: Vec3<S>, min_cos: S) -> Result<Self, Error> {
         Ok(Self {

@@ -182,7 +182,7 @@ pub struct Baked {
 /// The level's triangles in `S`.
 ///
 /// Errors: [`Problem::OutOfRange`] for a coordinate beyond `S::LIMIT`.
-pub fn triangles<S: Scalar + Emit>(level: &Level) -> Result<Vec<Triangle<S>>, LevelError> {
+pub fn triangles<S: Scalar>(level: &Level) -> Result<Vec<Triangle<S>>, LevelError> {
     let limit = S::LIMIT.to_f64();
     let mut out = Vec::with_capacity(level.triangles.len());
     for (triangle, t) in level.triangles.iter().enumerate() {
@@ -190,7 +190,7 @@ pub fn triangles<S: Scalar + Emit>(level: &Level) -> Result<Vec<Triangle<S>>, Le
             let problem = Problem::OutOfRange {
                 triangle,
                 value,
-                scalar: S::NAME,
+                scalar: S::PRECISION.scalar.name(),
                 limit,
             };
             return Err(LevelError::new(&level.path, problem));

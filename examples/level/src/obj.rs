@@ -2,7 +2,7 @@
 //! negative indices counted back from the last vertex, materials ignored (their `.mtl` files
 //! are not read). Before `tobj` reads it, the file is scanned for the faults a level must not
 //! pass over, so that the error names the line: a position that is not three numbers (or has a
-//! NaN or infinite one: `nan` and `inf` parse as numbers), a face
+//! NaN or infinite one: `nan` and `inf` parse as numbers, or a w of zero), a face
 //! with fewer than three corners (which `tobj` would drop without a word), a corner whose
 //! vertex, texture or normal index is not a nonzero integer or names one not defined before it.
 
@@ -74,6 +74,11 @@ fn first_fault(text: &str) -> Option<String> {
                     return Some(format!(
                         "line {at}: `{line}` has a NaN or infinite coordinate"
                     ));
+                }
+                // An optional fourth number, w, divides the position: zero leaves none.
+                let w = line.split_whitespace().nth(4).map(str::parse::<f64>);
+                if matches!(w, Some(Ok(w)) if w == 0.0) {
+                    return Some(format!("line {at}: `{line}` has w = 0 (no position)"));
                 }
                 defined[0] += 1;
             }

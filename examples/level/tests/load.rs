@@ -145,6 +145,11 @@ fn malformed_obj() {
         ),
         Problem::Malformed(_)
     ));
+    // A w of zero: named at its line (the parser's own error named none).
+    assert!(matches!(
+        refused("w_zero.obj", "line 4: `v 1 0 0 0` has w = 0"),
+        Problem::Malformed(_)
+    ));
 }
 
 #[test]
