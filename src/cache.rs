@@ -32,7 +32,7 @@
 //! its state, one per character: each character's cache holds what it touches) and be kept
 //! for as long as the queries come back to the same place, across frames: that is where a cache
 //! pays; or it borrows one kept apart ([`Cached::with_cache`]: a firmware's zero-initialised
-//! `static mut`, in RAM and not in flash), exclusively for as long as it lives. A new `Cached`
+//! `static mut`, in RAM and not in flash) for as long as it lives. A new `Cached`
 //! starts empty. The geometry inside is only ever lent out shared, so the kept triangles are
 //! always its own. A cache is not `Sync` (its slots are `Cell`s): one per thread.
 
@@ -41,6 +41,7 @@ use crate::merge::{Earliest, earliest_of};
 use crate::{Geometry, Mesh, Scalar, SceneHit, StandardTriangle, Sweep, Vec3};
 use core::borrow::Borrow;
 use core::cell::Cell;
+use core::fmt;
 use core::marker::PhantomData;
 use core::ops::Range;
 
@@ -117,8 +118,8 @@ impl<S: Scalar, const N: usize> Default for TriangleCache<S, N> {
     }
 }
 
-impl<S: Scalar, const N: usize> core::fmt::Debug for TriangleCache<S, N> {
-    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+impl<S: Scalar, const N: usize> fmt::Debug for TriangleCache<S, N> {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         f.debug_struct("TriangleCache")
             .field("slots", &N)
             .field("hits", &self.hits())
@@ -346,7 +347,7 @@ impl<S: Scalar> Cacheable<S> for crate::MeshBuf<S> {
 /// assert!(cache.hits() > cache.misses()); // the same few triangles, prepared once
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
-#[derive(Clone, Debug)]
+#[derive(Clone)]
 pub struct Cached<G, S: Scalar, const N: usize, C = TriangleCache<S, N>> {
     geometry: G,
     cache: C,
@@ -386,9 +387,11 @@ impl<'c, G: Cacheable<S>, S: Scalar, const N: usize> Cached<G, S, N, &'c Triangl
     /// the cache kept wherever the caller likes. On a microcontroller, a `static mut` of
     /// cortex-m-rt's `#[entry]` function (handed over as a `&'static mut`, no `unsafe`): an
     /// empty [`TriangleCache`] is zero bytes, so it takes RAM (`.bss`) and no flash, and the
-    /// geometry can stay a `static` in flash. The borrow is exclusive for as long as the
-    /// `Cached` lives, and the cache starts empty: triangles are kept by index, and another
-    /// geometry's under the same indices are never found.
+    /// geometry can stay a `static` in flash. The cache starts empty and stays borrowed for as
+    /// long as the `Cached` lives (clones share it, over the same geometry): triangles are
+    /// kept by index, and another geometry's under the same indices are never found. Its type
+    /// names the borrow (`Cached<_, _, 16, _>`: the last parameter defaults to an owned
+    /// cache), and it is not `Send` (a cache's slots are `Cell`s).
     ///
     /// ```ignore
     /// #[entry]
@@ -430,6 +433,17 @@ impl<G: Cacheable<S>, S: Scalar, const N: usize, C: Borrow<TriangleCache<S, N>>>
     /// The geometry, the cache dropped (or no longer borrowed).
     pub fn into_geometry(self) -> G {
         self.geometry
+    }
+}
+
+impl<G: fmt::Debug, S: Scalar, const N: usize, C: Borrow<TriangleCache<S, N>>> fmt::Debug
+    for Cached<G, S, N, C>
+{
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.debug_struct("Cached")
+            .field("geometry", &self.geometry)
+            .field("cache", self.cache.borrow())
+            .finish()
     }
 }
 

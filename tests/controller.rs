@@ -426,10 +426,10 @@ fn a_negative_slope_cosine_is_refused_where_given<S: Tolerance>() {
 
 /// With the slope limit at upright (cosine zero), a wall leaning out over the ball by a tie
 /// window (its normal's cosine with up just below zero, within the rounding the limit allows
-/// for) is a wall: a character falling against it is not grounded on it and every update goes
-/// through. (The allowance once took the limit below zero: grounded on the wall in every
+/// for at other limits) is a wall, as any face facing down: a character thrown against it is
+/// not grounded on it and every update goes through. (The allowance once took the limit below zero: grounded on the wall in every
 /// scalar, at the third frame.)
-fn an_upright_slope_limit_takes_no_leaning_wall_for_floor<S: Tolerance>() {
+fn an_upright_slope_limit_takes_no_wall_leaning_out_for_floor<S: Tolerance>() {
     let lean = 4.0 * 4.0 * S::EPSILON.to_f64(); // a tie window over the wall's height of 4
     let mut s: Scene<S, 2> = Scene::new();
     // At x = 1, facing -x, its top leaning out over the ball by `lean`.
@@ -509,8 +509,8 @@ macro_rules! per_scalar {
             super::a_negative_slope_cosine_is_refused_where_given::<$t>();
         }
         #[test]
-        fn an_upright_slope_limit_takes_no_leaning_wall_for_floor() {
-            super::an_upright_slope_limit_takes_no_leaning_wall_for_floor::<$t>();
+        fn an_upright_slope_limit_takes_no_wall_leaning_out_for_floor() {
+            super::an_upright_slope_limit_takes_no_wall_leaning_out_for_floor::<$t>();
         }
     })*};
 }

@@ -224,8 +224,9 @@ impl<S: Scalar> Slide<S> {
 /// of unit normals (eight steps, as [`constrain`](rules::constrain) allows): a face exactly at
 /// the limit counts as within it. (A 45° face's normal came out a unit in the last place either
 /// side of `FRAC_1_SQRT_2`, tile by tile, and a ball walking up a 45° slope was held back on
-/// some tiles as by a wall: in `f64` it slid back down.) Never lowered below zero: a wall
-/// leaning out by less than that rounding is still a wall, not a floor facing down.
+/// some tiles as by a wall: in `f64` it slid back down.) Never lowered below zero: a face
+/// facing down is no floor, however little (a walk along it is refused), so with a limit
+/// within that rounding of upright a wall counts only where its normal rounds level or up.
 fn slope_limit<S: Scalar>(up: Vec3<S>, min_cos: S) -> Result<(Vec3<S>, S), Error> {
     let up = check::point(up, S::LIMIT, Input::Up)?;
     let min_cos = check::within(min_cos, S::ZERO, S::ONE, Input::MaxSlope)?;

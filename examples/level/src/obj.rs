@@ -75,8 +75,10 @@ fn first_fault(text: &str) -> Option<String> {
                         "line {at}: `{line}` has a NaN or infinite coordinate"
                     ));
                 }
-                // An optional fourth number, w, divides the position: zero leaves none.
-                let w = line.split_whitespace().nth(4).map(str::parse::<f64>);
+                // A fourth number alone is w, which divides the position: zero leaves none.
+                // (Six are a position and a colour, as `tobj` reads them.)
+                let words: Vec<&str> = line.split_whitespace().skip(1).collect();
+                let w = (words.len() == 4).then(|| words[3].parse::<f64>());
                 if matches!(w, Some(Ok(w)) if w == 0.0) {
                     return Some(format!("line {at}: `{line}` has w = 0 (no position)"));
                 }

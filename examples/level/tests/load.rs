@@ -145,11 +145,13 @@ fn malformed_obj() {
         ),
         Problem::Malformed(_)
     ));
-    // A w of zero: named at its line (the parser's own error named none).
+    // A w of zero: named at its line (the parser's own error named none); six numbers are a
+    // position and a colour, a zero among them no w.
     assert!(matches!(
         refused("w_zero.obj", "line 4: `v 1 0 0 0` has w = 0"),
         Problem::Malformed(_)
     ));
+    assert_eq!(load(data("coloured.obj")).unwrap().triangles.len(), 1);
 }
 
 #[test]
