@@ -84,7 +84,12 @@ impl Options {
 }
 
 /// The options, or what makes no sense in the command line.
-fn parse(mut args: impl Iterator<Item = String>) -> Result<Options, String> {
+fn parse(args: impl Iterator<Item = String>) -> Result<Options, String> {
+    // `--flag=value` as `--flag value` (a value may start with a minus sign either way).
+    let mut args = args.flat_map(|a| match a.split_once('=') {
+        Some((flag, value)) if flag.starts_with("--") => vec![flag.to_string(), value.to_string()],
+        _ => vec![a],
+    });
     let mut o = Options {
         path: String::new(),
         scalar: "i16f16".into(),
