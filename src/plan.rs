@@ -215,18 +215,25 @@ impl Precision {
 pub struct Verdict {
     /// The scalar.
     pub precision: Precision,
-    /// Whether the scene fits the safe range.
+    /// Whether the scene fits the safe range. The radius is checked against the range only:
+    /// [`move_and_slide`](crate::move_and_slide) also refuses a ball below `min_radius` (as
+    /// [`choose`] does).
     pub fits: bool,
     /// Expected largest contact error along the normal (meaningful only if `fits`).
     pub distance_error: f64,
     /// Expected largest error of the contact's position along the normal.
     pub position_error: f64,
-    /// The smallest radius [`move_and_slide`](crate::move_and_slide) accepts at the extent.
+    /// The smallest radius [`move_and_slide`](crate::move_and_slide) (and the [`Slider`](crate::Slider)
+    /// and [`Character`](crate::slide::Character) built on it) accepts at the extent; a single
+    /// cast takes any radius.
     pub min_radius: f64,
 }
 
 /// Every scalar's verdict for a scene with coordinates within `±extent`, radii up to `radius`
-/// and sweeps up to `path` long, cheapest first (`I16F16`, `f32`, `I32F32`, `f64`).
+/// and sweeps up to `path` long, cheapest first on a core without a floating-point unit (a
+/// Cortex-M0): `I16F16`, `f32`, `I32F32`, `f64`. Elsewhere the order differs: on a PC or a
+/// Cortex-M4F an `f32` query costs less than an `I16F16` one, and on a PC `f64` less than
+/// `I32F32` (README, *Speed*); choose from these verdicts by your target's costs there.
 ///
 /// ```
 /// use ballcast::plan;
@@ -243,7 +250,8 @@ pub const fn plan(extent: f64, radius: f64, path: f64) -> [Verdict; 4] {
     ]
 }
 
-/// The cheapest scalar (in [`plan`]'s order) that fits a scene with coordinates within
+/// The first scalar in [`plan`]'s order (the cheapest on a core without a floating-point
+/// unit) that fits a scene with coordinates within
 /// `±extent`, radii up to `radius` and sweeps up to `path` long, accepts that radius in
 /// [`move_and_slide`](crate::move_and_slide), and keeps a contact's expected error along the
 /// normal within `tolerance`; `None` if no scalar does.
