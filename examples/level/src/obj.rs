@@ -4,7 +4,8 @@
 //! pass over, so that the error names the line: a position that is not three numbers (or has a
 //! NaN or infinite one: `nan` and `inf` parse as numbers, or a w of zero), a face
 //! with fewer than three corners (which `tobj` would drop without a word), a corner whose
-//! vertex, texture or normal index is not a nonzero integer or names one not defined before it.
+//! vertex, texture or normal index is not a nonzero integer or names one not defined before it,
+//! text without a single position (not an OBJ file).
 
 use super::{Problem, Tri};
 use std::path::Path;
@@ -116,5 +117,16 @@ fn first_fault(text: &str) -> Option<String> {
             _ => {}
         }
     }
-    None
+    // Text with no position at all and something other than comments: not an OBJ file.
+    let stray = text
+        .lines()
+        .map(str::trim)
+        .position(|l| !l.is_empty() && !l.starts_with('#'));
+    match (defined[0], stray) {
+        (0, Some(n)) => Some(format!(
+            "line {}: no position (`v`) in the whole file: is this an OBJ file?",
+            n + 1
+        )),
+        _ => None,
+    }
 }

@@ -152,6 +152,11 @@ fn malformed_obj() {
         Problem::Malformed(_)
     ));
     assert_eq!(load(data("coloured.obj")).unwrap().triangles.len(), 1);
+    // Text that is no OBJ at all: told so, not "no triangles".
+    assert!(matches!(
+        refused("not_obj.obj", "line 1: no position (`v`) in the whole file"),
+        Problem::Malformed(_)
+    ));
 }
 
 #[test]
