@@ -167,6 +167,9 @@ pub enum Input {
     TimeStep,
     /// A number converted to the scalar (read from a file, or from another scalar).
     Number,
+    /// A triangle's [`Features`](crate::Features) bits read back (six: three edges, three
+    /// vertices).
+    Features,
 }
 
 impl Input {
@@ -199,6 +202,7 @@ impl Input {
             Input::Gravity => ("gravity", true),
             Input::TimeStep => ("the time step", false),
             Input::Number => ("the number", false),
+            Input::Features => ("the feature bits", false),
         }
     }
 }

@@ -15,9 +15,34 @@ use crate::{Scalar, StandardTriangle};
 /// assert_eq!(Features::from_bits(f.bits()), f);
 /// ```
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(try_from = "u8", into = "u8"))]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub struct Features(u8);
+
+/// Read back (with `serde`) from [`Features::bits`]: bits beyond the six features are refused,
+/// not masked, so a value read is one `bits` can give.
+impl TryFrom<u8> for Features {
+    type Error = crate::Error;
+    fn try_from(bits: u8) -> Result<Self, crate::Error> {
+        if bits & !Self::ALL.0 != 0 {
+            return Err(crate::Error::OutOfRange {
+                input: crate::Input::Features,
+                value: bits as f64,
+                min: 0.0,
+                max: Self::ALL.0 as f64,
+                triangle: None,
+            });
+        }
+        Ok(Self(bits))
+    }
+}
+
+impl From<Features> for u8 {
+    fn from(f: Features) -> u8 {
+        f.0
+    }
+}
 
 impl Features {
     /// Every edge and vertex active: a lone triangle.

@@ -9,7 +9,10 @@
 //! float, or such a pair) reads into any scalar; one the scalar cannot hold within its safe
 //! range is refused with [`Error::OutOfRange`](crate::Error::OutOfRange) or
 //! [`Error::NaN`](crate::Error::NaN), never saturated. Binary formats (not human-readable, such
-//! as postcard) get every scalar as the pair, exact in every scalar. A [`Scene`](crate::Scene)
+//! as postcard) get every scalar as the pair, exact in every scalar. Bit for bit needs a reader
+//! that rounds decimal numbers correctly: `serde_json` does with its `float_roundtrip` feature,
+//! and without it reads some `f64` (and so some `I32F32`) values a step off, silently: a
+//! lockstep game that sends state as JSON must turn that feature on. A [`Scene`](crate::Scene)
 //! is its triangles in order, each with its sidedness; reading one pushes every triangle again
 //! (active edges are recomputed), and an error names the triangle's index.
 
