@@ -472,6 +472,74 @@ fn an_upright_slope_limit_takes_no_wall_leaning_out_for_floor<S: Tolerance>() {
     }
 }
 
+/// A character rebuilt from what a game saves of it (its settings, `position`, `velocity`
+/// and `floor`, put back with `set_floor`) walks on bit for bit as the original, on the floor
+/// (saved on the floor, before and after a jump); rebuilt without its floor it starts in the
+/// air, and most such copies go another way. A floor facing down is refused and changes
+/// nothing.
+fn a_character_rebuilt_from_its_state_walks_on_as_the_original<S: Tolerance>() {
+    let mut s: Scene<S, 4> = Scene::new();
+    for t in quad([-20.0, 0.0, -20.0], [0.0, 0.0, 40.0], [40.0, 0.0, 0.0]) {
+        s.push(Triangle::new(v(t[0]), v(t[1]), v(t[2]))).unwrap();
+    }
+    // A ramp up along +x from x = 2.
+    for t in quad([2.0, 0.0, -20.0], [0.0, 0.0, 40.0], [20.0, 6.0, 0.0]) {
+        s.push(Triangle::new(v(t[0]), v(t[1]), v(t[2]))).unwrap();
+    }
+    let settings = |p: Vec3<S>| {
+        Character::new(p, S::from_f64(0.5))
+            .unwrap()
+            .with_step(S::from_f64(0.2))
+            .unwrap()
+    };
+    let (wish, gravity, dt) = (
+        v([2.0, 0.0, 0.5]),
+        v([0.0, -9.75, 0.0]),
+        S::from_f64(1.0 / 64.0),
+    );
+    let mut me = settings(v([0.0, 1.0, 0.0]));
+    let bits = |c: &Character<S>| format!("{:?} {:?} {:?}", c.position, c.velocity, c.floor());
+    // Save points at which the copy rebuilt without its floor went another way.
+    let mut bare_differed = 0;
+    for frame in 0..160 {
+        if frame % 40 == 20 {
+            // Saved and rebuilt: with its floor, and without.
+            let (saved_floor, grounded) = (me.floor(), me.is_grounded());
+            let mut back = settings(me.position);
+            back.velocity = me.velocity;
+            back.set_floor(saved_floor).unwrap();
+            let mut bare = back;
+            bare.leave_floor();
+            let (mut a, mut b, mut c) = (me, back, bare);
+            let mut differed = false;
+            for _ in 0..30 {
+                for x in [&mut a, &mut b, &mut c] {
+                    x.update(&s, wish, gravity, dt).unwrap();
+                }
+                assert_eq!(bits(&b), bits(&a), "{} frame {frame}", S::NAME);
+                differed |= bits(&c) != bits(&a);
+            }
+            bare_differed += (grounded && differed) as usize;
+        }
+        me.update(&s, wish, gravity, dt).unwrap();
+        if frame == 100 {
+            assert!(me.jump(S::from_f64(3.0)).unwrap(), "{}", S::NAME);
+        }
+    }
+    // On the ramp, at least (the copies of frames 100 and 140; on the flat, one of two).
+    assert!(bare_differed >= 2, "{}: {bare_differed}", S::NAME);
+    let mut other = me;
+    let floor = ballcast::slide::Floor {
+        normal: v([0.0, -1.0, 0.0]),
+        position: me.position,
+        index: 0,
+        contact: ballcast::Contact::Face,
+    };
+    let e = other.set_floor(Some(floor)).unwrap_err();
+    assert_eq!(e.input(), Some(Input::FloorFacing), "{}", S::NAME);
+    assert_eq!(bits(&other), bits(&me), "{}", S::NAME);
+}
+
 macro_rules! per_scalar {
     ($($m:ident: $t:ty),*) => {$(mod $m {
         #[allow(unused_imports)]
@@ -503,6 +571,10 @@ macro_rules! per_scalar {
         #[test]
         fn bad_settings_are_errors() {
             super::bad_settings_are_errors::<$t>();
+        }
+        #[test]
+        fn a_character_rebuilt_from_its_state_walks_on_as_the_original() {
+            super::a_character_rebuilt_from_its_state_walks_on_as_the_original::<$t>();
         }
         #[test]
         fn a_negative_slope_cosine_is_refused_where_given() {

@@ -33,7 +33,10 @@ use crate::{Contact, Error, Geometry, Input, Scalar, Vec3, check};
 /// Defaults: `up` along +y, slopes up to 45° walkable, a step height and a snap depth of half
 /// the radius each, the default [`skin`](super::skin). The fields are the state a game keeps:
 /// [`position`](Self::position) and [`velocity`](Self::velocity) may be set between frames
-/// (a teleport; a knock-back, with [`leave_floor`](Self::leave_floor)).
+/// (a teleport; a knock-back, with [`leave_floor`](Self::leave_floor)). To save a character
+/// (a saved game, a lockstep peer joining late) keep them and its [`floor`](Self::floor), and
+/// rebuild it with the same settings and [`set_floor`](Self::set_floor): it walks on bit for
+/// bit.
 ///
 /// ```
 /// use ballcast::{Scene, Triangle, Vec3, slide::Character};
@@ -187,6 +190,25 @@ impl<S: Scalar> Character<S> {
     /// Leaves the floor (a knock-back, a launch): the next update moves it as in the air.
     pub fn leave_floor(&mut self) {
         self.floor = None;
+    }
+
+    /// Puts it back on a floor [`floor`](Self::floor) gave (or in the air, `None`): with
+    /// [`position`](Self::position) and [`velocity`](Self::velocity), all it keeps from one
+    /// frame to the next besides its settings, so a character rebuilt with the same settings
+    /// from a saved game or a lockstep peer's state walks on bit for bit. (A rebuilt character
+    /// without its floor starts in the air, and its next frames differ.) The floor's normal,
+    /// contact and index are taken; its position is the character's own.
+    ///
+    /// Errors: [`Error::NaN`], [`Error::OutOfRange`] or [`Error::ZeroVector`] for a normal that
+    /// is NaN, beyond `±`[`Scalar::LIMIT`] or zero ([`Input::Floor`]); [`Error::OutOfRange`]
+    /// with [`Input::FloorFacing`] for one facing down from `up`. The character is left as it
+    /// was.
+    pub fn set_floor(&mut self, floor: Option<Floor<S>>) -> Result<(), Error> {
+        if let Some(f) = floor {
+            super::floor_normal(f.normal, self.unit_up())?;
+        }
+        self.floor = floor;
+        Ok(())
     }
 
     /// A jump: where it stands on a floor, sets its velocity's part along `up` to `speed`

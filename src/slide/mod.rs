@@ -237,6 +237,27 @@ fn slope_limit<S: Scalar>(up: Vec3<S>, min_cos: S) -> Result<(Vec3<S>, S), Error
     Ok((unit(up).ok_or(zero)?, lowered))
 }
 
+/// A floor's normal `n` (any length) checked and as a unit vector: within `±LIMIT`, not zero,
+/// and not facing down from `up_unit` (a ceiling is no floor).
+fn floor_normal<S: Scalar>(n: Vec3<S>, up_unit: Vec3<S>) -> Result<Vec3<S>, Error> {
+    let n = check::point(n, S::LIMIT, Input::Floor)?;
+    let zero = Error::ZeroVector {
+        input: Input::Floor,
+    };
+    let n = crate::contact::unit(n).ok_or(zero)?;
+    let facing = S::dot(n, up_unit);
+    if facing < S::ZERO {
+        return Err(Error::OutOfRange {
+            input: Input::FloorFacing,
+            value: facing.to_f64(),
+            min: 0.0,
+            max: 1.0,
+            triangle: None,
+        });
+    }
+    Ok(n)
+}
+
 /// The gap kept between a ball of `radius` and what it touched, for centres within `±extent`:
 /// `radius / 1024` plus twice the rounding of a height there, so that the next sweep does not
 /// meet the same plane again at once through rounding.

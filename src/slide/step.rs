@@ -5,8 +5,7 @@
 
 use super::resolve::settle;
 use super::rules::{Walk, magnitude};
-use super::{MAX_SLIDES, Slide, SlideContact, Slider, run, slope_limit};
-use crate::contact::unit;
+use super::{MAX_SLIDES, Slide, SlideContact, Slider, floor_normal, run, slope_limit};
 use crate::{Error, Geometry, Input, Scalar, Sweep, Vec3, check};
 
 impl<S: Scalar> Slider<S> {
@@ -143,27 +142,7 @@ impl<S: Scalar> Slider<S> {
         height: S,
     ) -> Result<Slide<S>, Error> {
         let (up_unit, cos) = slope_limit(up, min_cos)?;
-        let floor = match floor {
-            Some(n) => {
-                let n = check::point(n, S::LIMIT, Input::Floor)?;
-                let zero = Error::ZeroVector {
-                    input: Input::Floor,
-                };
-                let n = unit(n).ok_or(zero)?;
-                let facing = S::dot(n, up_unit);
-                if facing < S::ZERO {
-                    return Err(Error::OutOfRange {
-                        input: Input::FloorFacing,
-                        value: facing.to_f64(),
-                        min: 0.0,
-                        max: 1.0,
-                        triangle: None,
-                    });
-                }
-                Some(n)
-            }
-            None => None,
-        };
+        let floor = floor.map(|n| floor_normal(n, up_unit)).transpose()?;
         let height = check::within(height, S::ZERO, S::LIMIT, Input::Step)?;
         // The walk climbs by itself what its own slope limit lets it (without one, anything
         // touched below the centre): the looser of that limit and `min_cos`.
