@@ -170,6 +170,8 @@ pub enum Input {
     /// A triangle's [`Features`](crate::Features) bits read back (six: three edges, three
     /// vertices).
     Features,
+    /// The number of the edge or vertex of a [`Contact`](crate::Contact) read back (0 to 2).
+    FeatureIndex,
 }
 
 impl Input {
@@ -203,6 +205,7 @@ impl Input {
             Input::TimeStep => ("the time step", false),
             Input::Number => ("the number", false),
             Input::Features => ("the feature bits", false),
+            Input::FeatureIndex => ("the edge or vertex number", false),
         }
     }
 }

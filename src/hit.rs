@@ -7,6 +7,7 @@ use crate::Vec3;
 /// Edge `i` runs from vertex `i` to vertex `i + 1` (mod 3): edge 0 is v0–v1, edge 1 is v1–v2,
 /// edge 2 is v2–v0.
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(try_from = "ContactRead"))]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Contact {
@@ -16,6 +17,39 @@ pub enum Contact {
     Edge(u8),
     /// Vertex `i`.
     Vertex(u8),
+}
+
+/// A [`Contact`] as read (with `serde`), before its edge or vertex number is checked.
+#[cfg(feature = "serde")]
+#[derive(serde::Deserialize)]
+#[serde(rename = "Contact")]
+enum ContactRead {
+    Face,
+    Edge(u8),
+    Vertex(u8),
+}
+
+/// An edge or vertex number beyond 2 is refused ([`Input::FeatureIndex`](crate::Input::FeatureIndex)).
+#[cfg(feature = "serde")]
+impl TryFrom<ContactRead> for Contact {
+    type Error = crate::Error;
+    fn try_from(c: ContactRead) -> Result<Self, crate::Error> {
+        let (contact, i) = match c {
+            ContactRead::Face => return Ok(Contact::Face),
+            ContactRead::Edge(i) => (Contact::Edge(i), i),
+            ContactRead::Vertex(i) => (Contact::Vertex(i), i),
+        };
+        if i > 2 {
+            return Err(crate::Error::OutOfRange {
+                input: crate::Input::FeatureIndex,
+                value: i as f64,
+                min: 0.0,
+                max: 2.0,
+                triangle: None,
+            });
+        }
+        Ok(contact)
+    }
 }
 
 /// A contact found along a sweep: a plain `Copy` struct.

@@ -299,6 +299,27 @@ mod serde_tests {
         );
     }
 
+    /// A contact's edge or vertex number read back is 0, 1 or 2 (an `Edge(9)` was taken as
+    /// it came); every real contact round-trips.
+    #[test]
+    fn contacts_beyond_the_third_edge_or_vertex_are_refused() {
+        use ballcast::Contact;
+        let real = [
+            Contact::Face,
+            Contact::Edge(0),
+            Contact::Edge(2),
+            Contact::Vertex(1),
+        ];
+        for c in real {
+            let json = serde_json::to_string(&c).unwrap();
+            assert_eq!(serde_json::from_str::<Contact>(&json).unwrap(), c, "{json}");
+        }
+        for bad in [r#"{"Edge":9}"#, r#"{"Vertex":3}"#] {
+            let err = serde_json::from_str::<Contact>(bad).unwrap_err();
+            assert!(err.to_string().contains("edge or vertex number"), "{err}");
+        }
+    }
+
     /// Feature bits read back are those `Features::bits` gives: more than the six features is
     /// refused (it read into a mask that compared unequal to every real one).
     #[test]
