@@ -47,10 +47,14 @@
 //! against a reference that uses the same rounded constants; `tests/plan.rs` checks the
 //! `speed × time × rounding of dt` figure against a run.
 
-use crate::bvh::{LeafSize, nodes_for_leaves};
-use crate::{Node, Scalar, StandardTriangle, Vec3};
-use core::mem::size_of;
+use crate::Scalar;
 use fixed::types::{I16F16, I32F32};
+
+mod memory;
+mod sizes;
+
+pub use memory::Memory;
+pub use sizes::Sizes;
 
 /// The four scalar types, as a value: what a [`Verdict`] selects.
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
@@ -152,7 +156,29 @@ impl Precision {
     /// assert!(e > 1e-4 && e < 3e-4);
     /// ```
     pub const fn distance_error(&self, extent: f64, path: f64) -> f64 {
-        self.epsilon / 2.0 * path + self.position_error(extent)
+        self.distance_error_within(extent, extent, path)
+    }
+
+    /// [`distance_error`](Self::distance_error) where a contact's points (the triangle and
+    /// the path's ends) lie within `span` of each other on every axis ([`Sizes::span`]): a
+    /// float rounds its contact tests at the offsets between those points, so the tests' share
+    /// is eight steps of the smaller of `span` and `extent`. Fixed point: as
+    /// `distance_error`.
+    ///
+    /// ```
+    /// use ballcast::Scalar;
+    /// // Triangles and moves a few units across, 5 000 units out: f32 rounds at their size.
+    /// let far = f32::PRECISION.distance_error(5000.0, 2.0);
+    /// let near = f32::PRECISION.distance_error_within(5000.0, 5.0, 2.0);
+    /// assert!(far > 4e-3 && near < 6e-6);
+    /// ```
+    pub const fn distance_error_within(&self, extent: f64, span: f64, path: f64) -> f64 {
+        let within = if self.relative && span < extent {
+            span
+        } else {
+            extent
+        };
+        self.epsilon / 2.0 * path + self.position_error(within)
     }
 
     /// The largest error expected of a contact's position (`Hit::position`) along the normal,
@@ -180,6 +206,23 @@ impl Precision {
         } else {
             self.height_error(extent)
         }
+    }
+
+    /// [`position_error`](Self::position_error) where a contact's points lie within `span` of
+    /// each other on every axis ([`Sizes::span`]): for floats the contact tests' eight steps
+    /// of the smaller of `span` and `extent`, plus the position's own rounding to the scalar
+    /// at `extent` (half a step per coordinate: along a unit normal at most one step of
+    /// `extent`), and never more than `position_error`. Fixed point: as `position_error`.
+    pub const fn position_error_within(&self, extent: f64, span: f64) -> f64 {
+        let whole = self.position_error(extent);
+        // A NaN span leaves the figure as it is.
+        if self.relative && span < extent {
+            let near = self.position_error(span) + self.epsilon * extent;
+            if near < whole {
+                return near;
+            }
+        }
+        whole
     }
 
     /// The rounding of a height (a coordinate in a triangle's frame) for coordinates within
@@ -235,6 +278,10 @@ pub struct Verdict {
 /// Cortex-M4F an `f32` query costs less than an `I16F16` one, and on a PC `f64` less than
 /// `I32F32` (README, *Speed*); choose from these verdicts by your target's costs there.
 ///
+/// The triangles are taken as large as the level: for floats, whose contact tests round at
+/// the size of a contact's offsets, [`Sizes::with_triangles`] gives far smaller figures on a
+/// level of small triangles far from the origin.
+///
 /// ```
 /// use ballcast::plan;
 /// // A 10 km world does not fit I16F16; f32 keeps contacts within ~1 cm there.
@@ -242,99 +289,42 @@ pub struct Verdict {
 /// assert!(!i16.fits && f32.fits && f32.distance_error < 1e-2);
 /// ```
 pub const fn plan(extent: f64, radius: f64, path: f64) -> [Verdict; 4] {
-    [
-        Verdict::of(I16F16::PRECISION, extent, radius, path),
-        Verdict::of(f32::PRECISION, extent, radius, path),
-        Verdict::of(I32F32::PRECISION, extent, radius, path),
-        Verdict::of(f64::PRECISION, extent, radius, path),
-    ]
+    Sizes::new(extent, radius, path).plan()
 }
 
 /// The first scalar in [`plan`]'s order (the cheapest on a core without a floating-point
 /// unit) that fits a scene with coordinates within
 /// `±extent`, radii up to `radius` and sweeps up to `path` long, accepts that radius in
 /// [`move_and_slide`](crate::move_and_slide), and keeps a contact's expected error along the
-/// normal within `tolerance`; `None` if no scalar does.
+/// normal within `tolerance`; `None` if no scalar does. [`Sizes::choose`] takes the
+/// triangles' size into account too.
 pub const fn choose(extent: f64, radius: f64, path: f64, tolerance: f64) -> Option<Verdict> {
-    let all = plan(extent, radius, path);
-    let mut i = 0;
-    while i < all.len() {
-        let v = all[i];
-        if v.fits && v.distance_error <= tolerance && radius >= v.min_radius {
-            return Some(v);
-        }
-        i += 1;
-    }
-    None
+    Sizes::new(extent, radius, path).choose(tolerance)
 }
 
 impl Verdict {
     /// The verdict on one scalar for a scene as in [`plan`]; it does not fit where `extent`,
     /// `radius` or `path` is negative or NaN (each is a magnitude).
     pub const fn of(precision: Precision, extent: f64, radius: f64, path: f64) -> Self {
+        Self::of_sizes(precision, Sizes::new(extent, radius, path))
+    }
+
+    /// The verdict on one scalar for a level of these [`Sizes`]; it does not fit where one of
+    /// them is negative or NaN.
+    pub const fn of_sizes(precision: Precision, sizes: Sizes) -> Self {
+        let Sizes {
+            extent,
+            radius,
+            path,
+            triangle,
+        } = sizes;
+        let span = sizes.span();
         Self {
             precision,
-            fits: precision.fits(extent, radius) && path >= 0.0,
-            distance_error: precision.distance_error(extent, path),
-            position_error: precision.position_error(extent),
+            fits: precision.fits(extent, radius) && path >= 0.0 && triangle >= 0.0,
+            distance_error: precision.distance_error_within(extent, span, path),
+            position_error: precision.position_error_within(extent, span),
             min_radius: precision.min_radius(extent),
-        }
-    }
-}
-
-/// Bytes a level takes in each form, for one scalar: what [`Memory::of`] counts.
-#[cfg_attr(feature = "serde", derive(serde::Serialize))]
-#[cfg_attr(feature = "defmt", derive(defmt::Format))]
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct Memory {
-    /// A [`Mesh`](crate::Mesh): prepared triangles, their input order and the tree's nodes
-    /// (leaves of up to two triangles, the default).
-    pub mesh: usize,
-    /// A [`CompactMesh`](crate::CompactMesh): the nodes of a tree with leaves of up to four
-    /// triangles, the shared vertices, and per
-    /// triangle three vertex indices, its input index and a byte (`u16` indices where vertices
-    /// and triangles number at most 65 536, else `u32`). A
-    /// [`CompactMeshBuf`](crate::CompactMeshBuf) always takes `u32` indices: 8 bytes more per
-    /// triangle than counted here for a level within 65 536.
-    pub compact: usize,
-    /// A [`Heightfield`](crate::Heightfield) of a grid with these vertices and triangles: two
-    /// bytes per vertex, one per cell (two triangles). Meaningful only for a grid.
-    pub heightfield: usize,
-}
-
-impl Memory {
-    /// The bytes of a level of `triangles` triangles over `vertices` distinct vertices in each
-    /// form, in `scalar`: the sizes the builds make, exactly (the build's scratch not counted);
-    /// `usize::MAX` where that does not fit a `usize`.
-    pub const fn of(scalar: ScalarType, triangles: usize, vertices: usize) -> Self {
-        let (prepared, vertex) = match scalar {
-            ScalarType::I16F16 => (
-                size_of::<StandardTriangle<I16F16>>(),
-                size_of::<Vec3<I16F16>>(),
-            ),
-            ScalarType::F32 => (size_of::<StandardTriangle<f32>>(), size_of::<Vec3<f32>>()),
-            ScalarType::I32F32 => (
-                size_of::<StandardTriangle<I32F32>>(),
-                size_of::<Vec3<I32F32>>(),
-            ),
-            ScalarType::F64 => (size_of::<StandardTriangle<f64>>(), size_of::<Vec3<f64>>()),
-        };
-        let node = size_of::<Node>();
-        let (tree, small_tree) = (
-            nodes_for_leaves(triangles, LeafSize::Two).saturating_mul(node),
-            nodes_for_leaves(triangles, LeafSize::Four).saturating_mul(node),
-        );
-        let index = if triangles <= 1 << 16 && vertices <= 1 << 16 {
-            2
-        } else {
-            4
-        };
-        Self {
-            mesh: tree.saturating_add(triangles.saturating_mul(prepared + 4)),
-            compact: small_tree
-                .saturating_add(vertices.saturating_mul(vertex))
-                .saturating_add(triangles.saturating_mul(4 * index + 1)),
-            heightfield: vertices.saturating_mul(2).saturating_add(triangles / 2),
         }
     }
 }

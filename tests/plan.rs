@@ -5,7 +5,9 @@
 
 mod common;
 
-use common::{Rng, Tolerance};
+use ballcast::plan::{Sizes, Verdict};
+use ballcast::{Contact, Scalar, StandardTriangle, Sweep, Triangle};
+use common::{P, Rng, Tolerance};
 use fixed::types::{I16F16, I32F32};
 
 /// The case's distance error along the normal as a share of the prediction for its extent and
@@ -72,6 +74,77 @@ fn long_paths_past_small_triangles<S: Tolerance>() {
     );
 }
 
+/// A cast of `c` in `S`: alpha, the position, the normal and the feature, in f64.
+fn hit<S: Scalar>(c: &common::Case) -> Option<(f64, P, P, Contact)> {
+    let [a, b, t] = c.tri.map(common::v::<S>);
+    let st = StandardTriangle::new(&Triangle::new(a, b, t)).ok()?;
+    let sweep = Sweep::new(common::v(c.p0), common::v(c.p1), S::from_f64(c.r)).ok()?;
+    let h = st.cast(&sweep)?;
+    let back = common::back;
+    Some((
+        h.alpha.to_f64(),
+        back(h.position),
+        back(h.normal),
+        h.contact,
+    ))
+}
+
+/// Small triangles far from the origin, as a level's are: every contact's error along the
+/// normal, and its position's, stay within the planner's figures for the case's sizes with
+/// the triangle's own size given (`Sizes::with_triangles`), which for floats are hundreds of
+/// times below the figures for triangles as large as the level.
+fn small_triangles_far_from_the_origin<S: Tolerance>() {
+    let mut rng = Rng(0xFA12);
+    let far = (0.9 * S::LIMIT.to_f64()).min(20_000.0);
+    let (mut distance, mut position) = (0.0f64, 0.0f64);
+    for i in 0..60_000 {
+        let (size, path) = ([0.05, 0.5, 5.0][i % 3], [0.2, 2.0, 20.0][i / 3 % 3]);
+        let mut c = rng.feature_case(far, size, path);
+        c.r = rng.range(0.02, 2.0);
+        let c = c.rounded::<S>();
+        let (Some((a, p, _, contact)), Some((b, q, m, want))) = (hit::<S>(&c), hit::<f64>(&c))
+        else {
+            continue;
+        };
+        let extent = c.tri.iter().chain([&c.p0, &c.p1]).flatten();
+        let extent = extent.fold(0.0f64, |m, x| m.max(x.abs()));
+        let side = |k: usize| {
+            let (lo, hi) = c.tri.iter().fold((f64::MAX, f64::MIN), |(lo, hi), v| {
+                (lo.min(v[k]), hi.max(v[k]))
+            });
+            hi - lo
+        };
+        let d = common::sub(c.p1, c.p0);
+        let sizes = Sizes::new(extent, c.r, common::norm(d))
+            .with_triangles(side(0).max(side(1)).max(side(2)));
+        let v = Verdict::of_sizes(S::PRECISION, sizes);
+        let err = (a - b).abs() * common::dot(d, m).abs();
+        assert!(
+            err <= v.distance_error,
+            "{}: error {err:e} > predicted {:e} on {c:?}",
+            S::NAME,
+            v.distance_error
+        );
+        distance = distance.max(err / v.distance_error);
+        if contact == want {
+            let along = common::dot(common::sub(p, q), m).abs();
+            assert!(
+                along <= v.position_error,
+                "{}: position error {along:e} > predicted {:e} on {c:?}",
+                S::NAME,
+                v.position_error
+            );
+            position = position.max(along / v.position_error);
+        }
+    }
+    println!(
+        "{}: largest errors {:.0}% (distance), {:.0}% (position) of the predictions",
+        S::NAME,
+        100.0 * distance,
+        100.0 * position
+    );
+}
+
 macro_rules! per_scalar {
     ($($m:ident: $t:ty),*) => {$(mod $m {
         use super::*;
@@ -82,6 +155,10 @@ macro_rules! per_scalar {
         #[test]
         fn long_paths_past_small_triangles() {
             super::long_paths_past_small_triangles::<$t>();
+        }
+        #[test]
+        fn small_triangles_far_from_the_origin() {
+            super::small_triangles_far_from_the_origin::<$t>();
         }
     })*};
 }
@@ -182,6 +259,21 @@ fn choose_picks_the_cheapest_that_meets_the_tolerance() {
     // A ball too small for I16F16's rounding (128 steps of 2^-16) is not given it.
     assert_eq!(pick(100.0, 0.001, 0.01, 1e-2), Some(ScalarType::F32));
     assert_eq!(pick(1e20, 1.0, 1.0, 1.0), None);
+    // Triangles at most 4 across, 10 km out: f32 rounds at their size and will do where
+    // triangles as large as the level need I32F32 (`small_triangles_far_from_the_origin`
+    // measures such contacts against these figures).
+    let level = Sizes::new(10_000.0, 0.5, 2.0);
+    let by = |s: Sizes, t| s.choose(t).map(|v| v.precision.scalar);
+    assert_eq!(by(level, 1e-4), Some(ScalarType::I32F32));
+    assert_eq!(by(level.with_triangles(4.0), 1e-4), Some(ScalarType::F32));
+    // Fixed point's figures do not depend on the triangles' size.
+    let room = Sizes::new(100.0, 0.5, 2.0);
+    assert_eq!(room.plan()[0], room.with_triangles(0.1).plan()[0]);
+    assert_eq!(room.plan(), ballcast::plan(100.0, 0.5, 2.0));
+    for bad in [-1.0, f64::NAN] {
+        assert!(room.with_triangles(bad).plan().iter().all(|v| !v.fits));
+        assert_eq!(by(room.with_triangles(bad), 1e9), None);
+    }
 }
 
 /// The constants' share of drift: a ball sliding at speed 3 on a floor for 10 s, stepped with
