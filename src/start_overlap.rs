@@ -15,7 +15,7 @@
 
 use crate::contact::off_line;
 use crate::seam::seam_margin;
-use crate::{Scalar, StandardTriangle, Vec3};
+use crate::{Contact, Scalar, StandardTriangle, Vec3};
 
 /// The part of the path, as alpha from `from` to `to`, over which the ball is within `r` of a
 /// feature, and whether it is there at the start (closer than `r`).
@@ -55,17 +55,27 @@ impl<S: Scalar> Feature<S> {
 
 impl<S: Scalar> StandardTriangle<S> {
     /// For a sweep whose centre starts within `r` of the plane (`p0`, `d` in the standard frame,
-    /// from the front) and whose earliest edge or vertex contact is at alpha `first`: the alpha
-    /// from which contacts count, if that contact is not one (the rule above).
+    /// from the front) and whose earliest edge or vertex contact is at alpha `first` with
+    /// `contact`: the alpha from which contacts count, if that contact is not one (the rule
+    /// above).
     #[cold]
     #[inline(never)]
-    pub(crate) fn clear_after(&self, p0: Vec3<S>, d: Vec3<S>, r: S, first: S) -> Option<S> {
-        // Held where the nearest feature it starts within r of gave its alpha-0 contact. A later
-        // first contact means that feature gave none (it moves away from it, as that test
-        // rounds the motion): the ball is let go.
+    pub(crate) fn clear_after(
+        &self,
+        p0: Vec3<S>,
+        d: Vec3<S>,
+        r: S,
+        (first, contact): (S, Contact),
+    ) -> Option<S> {
+        // Held where the nearest feature it starts within r of, and does not move away from,
+        // gave the contact: at alpha 0, or a little later where that feature's own test,
+        // rounding the start's distance otherwise, put the start just short of `r` (a ball
+        // grazing an edge, within a step of touching it: let go, it went on into the edge with
+        // no contact). Any other first contact means that feature gave none (it moves away
+        // from it, as that test rounds the motion): the ball is let go.
         match self.nearest_at_start(p0, d, r) {
             None => return None,
-            Some(true) if first == S::ZERO => return None,
+            Some((true, nearest)) if first == S::ZERO || nearest == contact => return None,
             Some(_) => {}
         }
         let end = self.clear_from(p0, d, r);
@@ -99,19 +109,25 @@ impl<S: Scalar> StandardTriangle<S> {
 
     /// `None` if the ball starts clear of every active edge and vertex, else whether it does not
     /// move away from the nearest of those it starts within `r` of (the first of equals, edges
-    /// first). No square root of the path and no division: most calls end here.
-    fn nearest_at_start(&self, p0: Vec3<S>, d: Vec3<S>, r: S) -> Option<bool> {
-        let mut nearest: Option<(S, bool)> = None;
-        for f in (0..6).filter_map(|k| self.feature(k, p0, d)) {
+    /// first), and which that is. No square root of the path and no division: most calls end here.
+    fn nearest_at_start(&self, p0: Vec3<S>, d: Vec3<S>, r: S) -> Option<(bool, Contact)> {
+        let mut nearest: Option<(S, bool, Contact)> = None;
+        for (k, f) in (0..6).filter_map(|k| Some((k, self.feature(k, p0, d)?))) {
             // The sign's products are those of `chord`'s bound (|q| < r) times the path's length.
-            if let Some(k) = S::chord(r, f.q).filter(|&k| k > S::ZERO)
+            if let Some(c) = S::chord(r, f.q).filter(|&c| c > S::ZERO)
                 && f.beside()
-                && nearest.is_none_or(|(n, _)| k > n)
+                && nearest.is_none_or(|(n, ..)| c > n)
             {
-                nearest = Some((k, S::dot_sign(f.q, f.m).is_le()));
+                let at = (k % 3) as u8;
+                let which = if k < 3 {
+                    Contact::Edge(at)
+                } else {
+                    Contact::Vertex(at)
+                };
+                nearest = Some((c, S::dot_sign(f.q, f.m).is_le(), which));
             }
         }
-        nearest.map(|(_, stays)| stays)
+        nearest.map(|(_, stays, which)| (stays, which))
     }
 
     /// The alpha from which a ball that starts overlapping is clear of the triangle: the end of

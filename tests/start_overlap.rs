@@ -158,6 +158,113 @@ fn a_fresh_contact_after_leaving_is_kept<S: Tolerance>() {
     assert!((a - want).abs() < 1e-3, "{}: alpha {a}", S::NAME);
 }
 
+/// A ball circling just outside an edge, within a step of touching it, and drifting in:
+/// the edge's own test may round the start to just outside (a contact a little later) while the
+/// start-overlap rule rounds it to just inside and approaching. The rule held the ball only for
+/// a contact at alpha 0, so it let it go, and the ball went on into the edge with no contact.
+/// Random edges of random triangles, one- and two-sided, starts from two steps inside to two
+/// outside: every path that ends clearly inside (eight steps) reports a contact.
+fn grazing_an_edge_within_a_step_is_met<S: Tolerance>() {
+    let mut rng = Rng(0xED6E);
+    let unit = |p: P| scale(p, 1.0 / norm(p));
+    let (mut met, mut ran) = (0, 0);
+    for i in 0..40_000 {
+        let t =
+            [rng.point(10.0), rng.point(10.0), rng.point(10.0)].map(|p| common::back(v::<S>(p)));
+        let n = common::cross(sub(t[1], t[0]), sub(t[2], t[0]));
+        if norm(n) < 1.0 {
+            continue;
+        }
+        let n = unit(n);
+        // Edge k, its direction, and away from the triangle in its plane.
+        let k = i % 3;
+        let (a, b) = (t[k], t[(k + 1) % 3]);
+        let along = unit(sub(b, a));
+        let out = common::cross(along, n);
+        let out = if dot(out, sub(t[(k + 2) % 3], a)) > 0.0 {
+            scale(out, -1.0)
+        } else {
+            out
+        };
+        // A start at distance `rho` from the edge's line, at angle `phi` from the plane (in
+        // front), moving mostly around the edge, partly along it, and in to `r - depth`.
+        let r = rng.range(0.2, 2.0);
+        let step = S::spacing(12.0);
+        let rho = r + rng.range(-2.0, 2.0) * step;
+        let phi = rng.range(0.1, 1.4);
+        let radial = add(scale(out, phi.cos()), scale(n, phi.sin()));
+        let tangent = add(scale(out, -phi.sin()), scale(n, phi.cos()));
+        let tangent = if i % 2 == 0 {
+            tangent
+        } else {
+            scale(tangent, -1.0)
+        };
+        let foot = add(a, scale(sub(b, a), rng.range(0.3, 0.7)));
+        let p0 = add(foot, scale(radial, rho));
+        let around = rng.range(0.002, 0.1) * r;
+        let depth = rng.range(8.0, 40.0) * step;
+        // Distance from the line after moving `around` along the tangent and `x` in: sqrt((rho -
+        // x)² + around²) = r - depth.
+        let x = rho - ((r - depth).powi(2) - around * around).max(0.0).sqrt();
+        let drift = scale(along, rng.range(-1.0, 1.0) * around);
+        let p1 = add(
+            add(p0, scale(tangent, around)),
+            add(scale(radial, -x), drift),
+        );
+        let c = common::Case { tri: t, p0, p1, r }.rounded::<S>();
+        // Clearly inside at the end, and nowhere near the face region or the edge's ends.
+        let line = |p: P| {
+            let q = sub(p, c.tri[k]);
+            let e = unit(sub(c.tri[(k + 1) % 3], c.tri[k]));
+            norm(sub(q, scale(e, dot(q, e))))
+        };
+        if line(c.p1) > c.r - 8.0 * step {
+            continue;
+        }
+        ran += 1;
+        let two = i % 4 < 2;
+        let hit = cast::<S>(c.tri, (c.p0, c.p1), c.r, Features::ALL, two);
+        assert!(
+            hit.is_some(),
+            "{}: no contact on {c:?} (two-sided {two})",
+            S::NAME
+        );
+        met += 1;
+    }
+    assert!(ran > 20_000, "{}: only {ran} paths ran", S::NAME);
+    assert_eq!(met, ran);
+}
+
+/// The trial's case: a ball of 0.5 circling an eight-sided pillar at 480 steps a second, its
+/// centre 1.4e-6 outside a corner edge (the vertices and path as `I16F16` holds them), moving
+/// 0.0043 around it and 2.7e-4 in. `I16F16` reported nothing and the ball sank 2.7e-4 (18
+/// steps) into the pillar; every scalar meets the corner edge now.
+fn circling_a_pillar_meets_its_corner_edge<S: Tolerance>() {
+    let c = 0.7071075439453125;
+    let (bottom, top) = ([c, 0.0, -c], [c, 3.0, -c]);
+    let walls = [
+        [[0.0, 0.0, -1.0], bottom, top],
+        [[0.0, 0.0, -1.0], top, [0.0, 3.0, -1.0]],
+        [bottom, [1.0, 0.0, 0.0], [1.0, 3.0, 0.0]],
+        [bottom, [1.0, 3.0, 0.0], top],
+    ];
+    let mut pillar: ballcast::Scene<S, 4> = ballcast::Scene::new();
+    for t in walls {
+        pillar
+            .push_two_sided(Triangle::new(v(t[0]), v(t[1]), v(t[2])))
+            .unwrap();
+    }
+    let p0 = [1.1229248046875, 0.500732421875, -0.984771728515625];
+    let p1 = [1.1250457763671875, 0.500732421875, -0.9810791015625];
+    let s = Sweep::new(v(p0), v(p1), S::from_f64(0.5)).unwrap();
+    let hit = pillar.cast(&s).expect("the corner edge is met");
+    assert!(
+        matches!(hit.contact, Contact::Edge(_)) && hit.alpha.to_f64() < 0.05,
+        "{}: {hit:?}",
+        S::NAME
+    );
+}
+
 macro_rules! per_scalar {
     ($($m:ident: $t:ty),*) => {$(mod $m {
         #[allow(unused_imports)]
@@ -178,6 +285,12 @@ macro_rules! per_scalar {
         fn moving_square_to_the_nearest_edge() { super::moving_square_to_the_nearest_edge::<$t>() }
         #[test]
         fn a_fresh_contact_after_leaving_is_kept() { super::a_fresh_contact_after_leaving_is_kept::<$t>() }
+        #[test]
+        fn grazing_an_edge_within_a_step_is_met() { super::grazing_an_edge_within_a_step_is_met::<$t>() }
+        #[test]
+        fn circling_a_pillar_meets_its_corner_edge() {
+            super::circling_a_pillar_meets_its_corner_edge::<$t>()
+        }
     })*};
 }
 
