@@ -435,7 +435,8 @@ fn run<S: Scalar, G: Geometry<S> + ?Sized>(
             walk.filter(|w| w.steps_over(n, radius)).map(|w| w.floor)
         }) && keep_to_floor(&mut planes, &mut walk, &hit, radius)
         {
-            constrain(left, &planes, displacement)
+            let rest = constrain(left, &planes, displacement);
+            stop.map_or(rest, |s| s.keeps_depth(rest, left))
         } else {
             zero
         };

@@ -47,6 +47,24 @@ impl<S: Scalar> FloorStop<S> {
         };
         floor || crease()
     }
+
+    /// The probe's motion after a contact that did not stop it, `rest` (what was `left` of it,
+    /// constrained by the planes touched), lengthened so that it still goes as far down as
+    /// `left` did: a probe that meets a face or edge too steep to stand on follows it down by
+    /// the whole of its reach. Cut to the constrained slope, it went down by only `1 - cos²`
+    /// of what was left: past a step's rounded top edge, steeper than the slope limit once the
+    /// ball is `r sin θ` past it, a snap of 0.25 stopped 0.2 down and missed the ground of a
+    /// step down of 0.24, and the ball flew off the step (all scalars, depending on where in
+    /// its frame it crossed the edge). Lengthened by at most twice (a slope at the limit
+    /// halves the drop): a crease that runs nearly level is followed as constrained.
+    pub(super) fn keeps_depth(&self, rest: Vec3<S>, left: Vec3<S>) -> Vec3<S> {
+        let (want, got) = (-S::dot(left, self.up), -S::dot(rest, self.up));
+        if got > S::ZERO && want > got && got + got >= want {
+            rest.scale(S::div(want, got))
+        } else {
+            rest
+        }
+    }
 }
 
 /// Where to stop short of a contact met along `rest`, as a fraction of it, and a lift to add.
