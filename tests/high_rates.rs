@@ -1,6 +1,6 @@
-//! `slide::Character` walking at 480 and 960 Hz, where the press into the floor, `|g| dt²`, is
-//! shorter than the rounding of a height in `I16F16`: walking across a floor keeps one height,
-//! and walking into a wall on a tilted floor stays put. (Rounded to a step straight down, the
+//! `slide::Character` walking at 120 to 960 Hz, where the press into the floor, `|g| dt²`, is
+//! shorter than a skin in `I16F16`: walking across a floor keeps one height, and walking into a
+//! wall on a tilted floor, or into the wedge of a steep slope and a wall, stays put. (Rounded to a step straight down, the
 //! press once lowered the ball a step a frame until it touched the floor and was lifted a skin
 //! off it: a sawtooth of one skin, which along a tilted floor's normal carried the ball down
 //! the floor, 0.2 along the wall in 10^5 frames.) Every property in every scalar.
@@ -104,6 +104,29 @@ fn walking_up_a_slope_far_out_holds_to_it<S: Tolerance>() {
     }
 }
 
+/// Pushed into the wedge of a 60° slope (too steep to stand on) and an upright wall, held there
+/// by the two, at 120 to 250 Hz for 2 000 frames: after a second it does not move at all. At
+/// 200 to 250 Hz, where the press is a little longer than a height's rounding in `I16F16`, the
+/// ball went up and down by 3e-4 (a cycle of 6 frames at 240 Hz), 2.1 units of path in 10^4
+/// frames.
+fn pushed_into_a_steep_wedge_stays_put<S: Tolerance>() {
+    let tan = 60f64.to_radians().tan();
+    // Fronts towards the wedge: the slope's up and along +x, the wall's along −x.
+    let slope = quad([3.0, 0.0, -10.0], [-8.0, 8.0 * tan, 0.0], [0.0, 0.0, 20.0]);
+    let wall = quad([3.0, -1.0, 10.0], [0.0, 7.0, 0.0], [0.0, 0.0, -20.0]);
+    let mut level: Scene<S, 4> = Scene::new();
+    for t in slope.into_iter().chain(wall) {
+        level
+            .push(Triangle::new(v(t[0]), v(t[1]), v(t[2])))
+            .unwrap();
+    }
+    for hz in [120.0, 200.0, 240.0, 250.0] {
+        let (lo, hi) = span(&level, [2.0, 2.0, 0.0], [2.0, 0.0, 0.0], hz, 2000);
+        let moved = (0..3).fold(0.0f64, |m, k| m.max(hi[k] - lo[k]));
+        assert_eq!(moved, 0.0, "{} at {hz} Hz: moved {moved:e}", S::NAME);
+    }
+}
+
 macro_rules! per_scalar {
     ($($m:ident: $t:ty),*) => {$(mod $m {
         use super::*;
@@ -118,6 +141,10 @@ macro_rules! per_scalar {
         #[test]
         fn walking_into_a_wall_on_a_tilted_floor() {
             walking_into_a_wall_on_a_tilted_floor_stays_put::<$t>();
+        }
+        #[test]
+        fn pushed_into_a_steep_wedge() {
+            pushed_into_a_steep_wedge_stays_put::<$t>();
         }
     })*};
 }

@@ -301,13 +301,15 @@ impl<S: Scalar> Character<S> {
                 // about its gap above the floor, where, rounded to a step straight down in fixed
                 // point, it walks the ball down the slope (`I16F16` at 960 Hz, or in a steep
                 // valley from 240 Hz). The probe below finds the floor instead. In fixed
-                // point a press no longer than a height's rounding rounds to a few steps along
-                // the axes, not along the normal, and as the ball and a level's vertices lie on
-                // one grid, it lowered the ball a few steps a frame until it exactly touched
-                // and was lifted a skin off along the normal: a sawtooth of one skin that
-                // carried a ball walking into a wall down a tilted floor (`I16F16` from 480
-                // Hz). There the floor is looked for within the press and a skin, and the ball
-                // stays where it is. (Floats far out round a press as coarsely, but on no grid
+                // point a press no longer than a skin rounds to a few steps along the axes, not
+                // along the normal, and as the ball and a level's vertices lie on one grid, it
+                // lowered the ball a few steps a frame until it exactly touched and was lifted
+                // a skin off along the normal: a sawtooth of one skin that carried a ball
+                // walking into a wall down a tilted floor (`I16F16` from 480 Hz, a press of a
+                // height's rounding), and shook one pushed into the wedge of a steep slope and
+                // a wall (`I16F16` at 200 to 250 Hz, a press of 1.4 roundings: 3e-4 every
+                // frame). There the floor is looked for within the press and a skin, and the
+                // ball stays where it is. (Floats far out round a press as coarsely, but on no grid
                 // shared with the level: there the press still holds a walking ball down
                 // against the rounding of its walk, which would lift it off the floor.)
                 me.velocity = wish.reject_from_normalized(n);
@@ -320,7 +322,7 @@ impl<S: Scalar> Character<S> {
                 let extent = magnitude(me.position);
                 let pressed = if walk == Vec3::ZERO {
                     None
-                } else if !S::PRECISION.relative && depth <= S::height_error(extent) {
+                } else if !S::PRECISION.relative && depth <= ball.skin(extent) {
                     let reach = depth + ball.skin(extent);
                     let probe = ball.slide(level, me.position, Vec3::ZERO - n * reach)?;
                     Some(Slide {
