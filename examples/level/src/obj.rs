@@ -1,6 +1,6 @@
 //! Wavefront OBJ through `tobj`: faces triangulated as fans (quads into two triangles),
-//! negative indices counted back from the last vertex, materials ignored (their `.mtl` files
-//! are not read). Before `tobj` reads it, the file is scanned for the faults a level must not
+//! negative indices counted back from the last vertex, polylines (`l`) and points (`p`)
+//! ignored, materials ignored (their `.mtl` files are not read). Before `tobj` reads it, the file is scanned for the faults a level must not
 //! pass over, so that the error names the line: a position that is not three numbers (or has a
 //! NaN or infinite one: `nan` and `inf` parse as numbers, or a w of zero), a face
 //! with fewer than three corners (which `tobj` would drop without a word), a corner whose
@@ -20,7 +20,8 @@ pub(crate) fn load(path: &Path) -> Result<Vec<Tri>, Problem> {
             "line {line}: not text (byte {at} is not UTF-8): is this an OBJ file?"
         )));
     }
-    if let Some(fault) = first_fault(&String::from_utf8_lossy(&bytes)) {
+    let text = faces_only(&String::from_utf8_lossy(&bytes));
+    if let Some(fault) = first_fault(&text) {
         return Err(Problem::Malformed(fault));
     }
     let options = tobj::LoadOptions {
@@ -32,7 +33,7 @@ pub(crate) fn load(path: &Path) -> Result<Vec<Tri>, Problem> {
     // Every material library "fails to open": a level needs none, and `tobj` panics on some
     // malformed ones (tobj 4.0.5, a colour of two numbers).
     let no_materials = |_: &Path| Err(tobj::LoadError::OpenFileFailed);
-    let (models, _materials) = tobj::load_obj_buf(&mut bytes.as_slice(), &options, no_materials)
+    let (models, _materials) = tobj::load_obj_buf(&mut text.as_bytes(), &options, no_materials)
         .map_err(|e| Problem::Malformed(e.to_string()))?;
     let mut out = Vec::new();
     for m in &models {
@@ -48,6 +49,20 @@ pub(crate) fn load(path: &Path) -> Result<Vec<Tri>, Problem> {
         }
     }
     Ok(out)
+}
+
+/// The text with every `l` (polyline) line left blank, so that line numbers hold: `tobj` reads
+/// a polyline of three or more vertices as a face (its `ignore_lines` drops only those of two),
+/// and a level's collision is its faces alone.
+fn faces_only(text: &str) -> String {
+    let mut out = String::with_capacity(text.len());
+    for line in text.lines() {
+        if line.split_whitespace().next() != Some("l") {
+            out.push_str(line);
+        }
+        out.push('\n');
+    }
+    out
 }
 
 /// Whether a 1-based OBJ index (negative: counted back from the last) names one of `count`.

@@ -337,3 +337,28 @@ fn a_level_with_its_floors_turned_down_is_told_apart() {
     };
     assert_eq!(both.facing(), (0, 0));
 }
+
+/// Loads `text` written to a temporary `.obj` file named after `name`.
+fn load_obj_text(name: &str, text: &str) -> Result<Level, ballcast_level::LevelError> {
+    let dir = std::env::temp_dir().join(format!("ballcast-load-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join(format!("{name}.obj"));
+    std::fs::write(&path, text).unwrap();
+    let level = load(&path);
+    std::fs::remove_file(&path).ok();
+    level
+}
+
+/// `l` lines are polylines, not faces: however many vertices they list, only the `f` line is
+/// collision geometry.
+#[test]
+fn obj_polylines_are_not_faces() {
+    let vertices = "v 0 0 0\nv 0 0 1\nv 1 0 1\nv 5 0 5\nv 5 0 6\nv 6 0 6\nv 6 0 5\n\
+                    vt 0 0\nvt 1 0\nvt 1 1\n";
+    let floor = [[0.0, 0.0, 0.0], [0.0, 0.0, 1.0], [1.0, 0.0, 1.0]];
+    for line in ["l 4 5 6", "l 4 5 6 7", "l 1/1 2/2 3/3", "l 4 5"] {
+        let level = load_obj_text("polyline", &format!("{vertices}f 1 2 3\n{line}\n"))
+            .unwrap_or_else(|e| panic!("{line}: {e}"));
+        assert_eq!(level.triangles, vec![floor], "{line}");
+    }
+}
