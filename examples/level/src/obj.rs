@@ -1,6 +1,7 @@
 //! Wavefront OBJ through `tobj`: faces triangulated as fans (quads into two triangles),
 //! negative indices counted back from the last vertex, polylines (`l`) and points (`p`)
-//! ignored, materials ignored (their `.mtl` files are not read). Before `tobj` reads it, the file is scanned for the faults a level must not
+//! ignored, materials ignored (their `.mtl` files are not read), a leading UTF-8 byte-order
+//! mark skipped. Before `tobj` reads it, the file is scanned for the faults a level must not
 //! pass over, so that the error names the line: a position that is not three numbers (or has a
 //! NaN or infinite one: `nan` and `inf` parse as numbers, or a w of zero), a face
 //! with fewer than three corners (which `tobj` would drop without a word), a corner whose
@@ -20,7 +21,10 @@ pub(crate) fn load(path: &Path) -> Result<Vec<Tri>, Problem> {
             "line {line}: not text (byte {at} is not UTF-8): is this an OBJ file?"
         )));
     }
-    let text = faces_only(&String::from_utf8_lossy(&bytes));
+    // A byte-order mark (written by some Windows tools) would otherwise be read as part of the
+    // first keyword, leaving the first position undefined and every index after it shifted.
+    let text = String::from_utf8_lossy(&bytes);
+    let text = faces_only(text.strip_prefix('\u{feff}').unwrap_or(&text));
     if let Some(fault) = first_fault(&text) {
         return Err(Problem::Malformed(fault));
     }

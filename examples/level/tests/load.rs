@@ -362,3 +362,18 @@ fn obj_polylines_are_not_faces() {
         assert_eq!(level.triangles, vec![floor], "{line}");
     }
 }
+
+/// A UTF-8 byte-order mark before the first `v` (as some Windows tools write) is no part of
+/// the keyword: every index still names the vertex it names without one.
+#[test]
+fn obj_with_a_byte_order_mark() {
+    let text = "\u{feff}v 0 0 0\nv 0 0 1\nv 1 0 1\nv 1 0 0\nf 1 2 3\n";
+    let level = load_obj_text("bom", text).unwrap();
+    assert_eq!(
+        level.triangles,
+        vec![[[0.0, 0.0, 0.0], [0.0, 0.0, 1.0], [1.0, 0.0, 1.0]]]
+    );
+    // Faults are still named at their line.
+    let e = load_obj_text("bom_fault", "\u{feff}v 0 0 0\nv 1 x 0\n").unwrap_err();
+    assert!(e.to_string().contains("line 2: `v 1 x 0`"), "{e}");
+}
