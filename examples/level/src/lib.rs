@@ -20,6 +20,7 @@ mod compact;
 mod gltf_file;
 mod heightmap;
 mod obj;
+mod polygon;
 mod source;
 
 pub use bake::{Baked, Emit, Form, Stats, bake, bake_with, triangles, verdicts};

@@ -1,4 +1,6 @@
-//! Wavefront OBJ through `tobj`: faces triangulated as fans (quads into two triangles),
+//! Wavefront OBJ through `tobj`: faces of four or more corners split into triangles as
+//! `polygon` says (a fan from the first corner where that covers the polygon, as for every
+//! convex one, ear clipping for a concave one, a polygon crossing itself refused at its line),
 //! negative indices counted back from the last vertex, polylines (`l`) and points (`p`)
 //! ignored, materials ignored (their `.mtl` files are not read), a leading UTF-8 byte-order
 //! mark skipped. Before `tobj` reads it, the file is scanned for the faults a level must not
@@ -8,7 +10,7 @@
 //! vertex, texture or normal index is not a nonzero integer or names one not defined before it,
 //! text without a single position (not an OBJ file).
 
-use super::{Problem, Tri};
+use super::{Problem, Tri, polygon};
 use std::path::Path;
 
 pub(crate) fn load(path: &Path) -> Result<Vec<Tri>, Problem> {
@@ -25,11 +27,10 @@ pub(crate) fn load(path: &Path) -> Result<Vec<Tri>, Problem> {
     // first keyword, leaving the first position undefined and every index after it shifted.
     let text = String::from_utf8_lossy(&bytes);
     let text = faces_only(text.strip_prefix('\u{feff}').unwrap_or(&text));
-    if let Some(fault) = first_fault(&text) {
-        return Err(Problem::Malformed(fault));
-    }
+    let face_lines = scan(&text).map_err(Problem::Malformed)?;
+    // Polygons are split here (`polygon`), where a face's corners and line are known.
     let options = tobj::LoadOptions {
-        triangulate: true,
+        triangulate: false,
         ignore_points: true,
         ignore_lines: true,
         ..Default::default()
@@ -40,17 +41,47 @@ pub(crate) fn load(path: &Path) -> Result<Vec<Tri>, Problem> {
     let (models, _materials) = tobj::load_obj_buf(&mut text.as_bytes(), &options, no_materials)
         .map_err(|e| Problem::Malformed(e.to_string()))?;
     let mut out = Vec::new();
+    let mut lines = face_lines.iter();
     for m in &models {
-        let (p, idx) = (&m.mesh.positions, &m.mesh.indices);
+        let (p, idx, arities) = (&m.mesh.positions, &m.mesh.indices, &m.mesh.face_arities);
         let vertex = |i: u32| -> Result<[f64; 3], Problem> {
             let i = i as usize;
             p.get(3 * i..3 * i + 3)
                 .map(|v| [v[0], v[1], v[2]])
                 .ok_or_else(|| Problem::Malformed(format!("vertex index {} out of range", i + 1)))
         };
-        for f in idx.chunks_exact(3) {
-            out.push([vertex(f[0])?, vertex(f[1])?, vertex(f[2])?]);
+        // No arities: every face a triangle.
+        let faces = if arities.is_empty() {
+            idx.len() / 3
+        } else {
+            arities.len()
+        };
+        let mut start = 0;
+        for f in 0..faces {
+            let k = arities.get(f).map_or(3, |&k| k as usize);
+            let (Some(&at), Some(corners)) = (lines.next(), idx.get(start..start + k)) else {
+                return Err(Problem::Malformed(
+                    "faces out of step with the parser".into(),
+                ));
+            };
+            start += k;
+            let points = corners
+                .iter()
+                .map(|&i| vertex(i))
+                .collect::<Result<Vec<_>, _>>()?;
+            let triangles = polygon::triangulate(&points).map_err(|_| {
+                Problem::Malformed(format!(
+                    "line {at}: the polygon of {k} corners crosses or folds over itself, so no \
+                     triangles make it: fix it, or triangulate it on export"
+                ))
+            })?;
+            out.extend(triangles.iter().map(|t| t.map(|i| points[i])));
         }
+    }
+    if lines.next().is_some() {
+        return Err(Problem::Malformed(
+            "faces out of step with the parser".into(),
+        ));
     }
     Ok(out)
 }
@@ -74,8 +105,10 @@ fn names_one(i: i64, count: i64) -> bool {
     i != 0 && i.unsigned_abs() <= count.unsigned_abs()
 }
 
-/// The first fault of the kinds in the module docs, as "line N: what", if any.
-fn first_fault(text: &str) -> Option<String> {
+/// The line of every face (1-based, in file order), or the first fault of the kinds in the
+/// module docs, as "line N: what".
+fn scan(text: &str) -> Result<Vec<usize>, String> {
+    let mut faces = Vec::new();
     // Positions, texture coordinates and normals defined so far.
     let mut defined = [0i64; 3];
     for (n, line) in text.lines().enumerate() {
@@ -86,12 +119,12 @@ fn first_fault(text: &str) -> Option<String> {
                 let numbers: Vec<f64> = words.take(3).filter_map(|w| w.parse().ok()).collect();
                 let line = line.trim();
                 if numbers.len() < 3 {
-                    return Some(format!(
+                    return Err(format!(
                         "line {at}: `{line}` is not a position of three numbers"
                     ));
                 }
                 if numbers.iter().any(|c| !c.is_finite()) {
-                    return Some(format!(
+                    return Err(format!(
                         "line {at}: `{line}` has a NaN or infinite coordinate"
                     ));
                 }
@@ -100,7 +133,7 @@ fn first_fault(text: &str) -> Option<String> {
                 let words: Vec<&str> = line.split_whitespace().skip(1).collect();
                 let w = (words.len() == 4).then(|| words[3].parse::<f64>());
                 if matches!(w, Some(Ok(w)) if w == 0.0) {
-                    return Some(format!("line {at}: `{line}` has w = 0 (no position)"));
+                    return Err(format!("line {at}: `{line}` has w = 0 (no position)"));
                 }
                 defined[0] += 1;
             }
@@ -110,7 +143,7 @@ fn first_fault(text: &str) -> Option<String> {
                 let corners: Vec<&str> = words.collect();
                 if corners.len() < 3 {
                     let k = corners.len();
-                    return Some(format!(
+                    return Err(format!(
                         "line {at}: a face needs three corners, this one has {k}"
                     ));
                 }
@@ -125,13 +158,14 @@ fn first_fault(text: &str) -> Option<String> {
                         };
                         if !ok {
                             let (what, count) = (kinds[k], defined[k]);
-                            return Some(format!(
+                            return Err(format!(
                                 "line {at}: the corner `{c}` names no {what} of the {count} \
                                  defined before it"
                             ));
                         }
                     }
                 }
+                faces.push(at);
             }
             _ => {}
         }
@@ -142,10 +176,10 @@ fn first_fault(text: &str) -> Option<String> {
         .map(str::trim)
         .position(|l| !l.is_empty() && !l.starts_with('#'));
     match (defined[0], stray) {
-        (0, Some(n)) => Some(format!(
+        (0, Some(n)) => Err(format!(
             "line {}: no position (`v`) in the whole file: is this an OBJ file?",
             n + 1
         )),
-        _ => None,
+        _ => Ok(faces),
     }
 }
