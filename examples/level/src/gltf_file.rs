@@ -198,10 +198,28 @@ fn walk(
                     ))
                 })
             };
+            // A count that leaves part of a triangle is a broken export, not one to cut short.
             let n = indices.len();
+            let listed = if prim.indices().is_some() {
+                "indices"
+            } else {
+                "vertices"
+            };
             let count = match prim.mode() {
-                Mode::Triangles => n / 3,
-                _ => n.saturating_sub(2),
+                Mode::Triangles if n.is_multiple_of(3) => n / 3,
+                Mode::Triangles => {
+                    return Err(malformed(format!(
+                        "{}: {n} {listed} for separate triangles, not a multiple of 3",
+                        what()
+                    )));
+                }
+                _ if n < 3 => {
+                    return Err(malformed(format!(
+                        "{}: {n} {listed} for a triangle strip or fan, fewer than 3",
+                        what()
+                    )));
+                }
+                _ => n - 2,
             };
             for t in 0..count {
                 // glTF 2.0 specification, 3.7.2.1 (primitive topologies).
