@@ -69,7 +69,16 @@ fn buffers(gltf: &Gltf, path: &Path) -> Result<Vec<Vec<u8>>, Problem> {
                     .map_err(|e| malformed(format!("buffer {}: {e}", b.index())))?
             }
             gltf::buffer::Source::Uri(uri) => {
-                let file = path.parent().unwrap_or(Path::new(".")).join(uri);
+                // A URI is percent-encoded (`my%20level.bin`); some tools write the file name
+                // as it is, so the name read literally is the fallback.
+                let dir = path.parent().unwrap_or(Path::new("."));
+                let decoded = dir.join(percent_decoded(uri));
+                let literal = dir.join(uri);
+                let file = if !decoded.exists() && literal.exists() {
+                    literal
+                } else {
+                    decoded
+                };
                 std::fs::read(&file).map_err(|e| {
                     malformed(format!("buffer {} ({}): {e}", b.index(), file.display()))
                 })?
@@ -86,6 +95,25 @@ fn buffers(gltf: &Gltf, path: &Path) -> Result<Vec<Vec<u8>>, Problem> {
         out.push(data);
     }
     Ok(out)
+}
+
+/// `uri` with its `%XX` escapes decoded (RFC 3986), or as it is where they do not make UTF-8.
+fn percent_decoded(uri: &str) -> String {
+    let (b, mut out, mut i) = (uri.as_bytes(), Vec::with_capacity(uri.len()), 0);
+    let hex = |k: usize| b.get(k).and_then(|&c| char::from(c).to_digit(16));
+    while i < b.len() {
+        match (b[i], hex(i + 1), hex(i + 2)) {
+            (b'%', Some(high), Some(low)) => {
+                out.push((16 * high + low) as u8);
+                i += 3;
+            }
+            (c, _, _) => {
+                out.push(c);
+                i += 1;
+            }
+        }
+    }
+    String::from_utf8(out).unwrap_or_else(|_| uri.to_string())
 }
 
 /// A column-major 4 × 4 matrix, as glTF stores them.

@@ -643,3 +643,18 @@ fn gltf_primitive_with_a_partial_triangle_is_refused() {
     .unwrap();
     assert_eq!(level.triangles.len(), 2);
 }
+
+/// A buffer URI is percent-encoded (`my%20level.bin` for the file `my level.bin`, as in the
+/// Khronos "Box With Spaces" sample); a file literally named with the escape still loads.
+#[test]
+fn gltf_percent_encoded_buffer_uri() {
+    let fan = Some(&[0u16, 1, 2, 0, 2, 3][..]);
+    for (name, files) in [
+        ("spaces", ("my level.bin", "my%20level.bin")),
+        ("utf8", ("niveau é.bin", "niveau%20%C3%A9.bin")),
+        ("literal", ("a%20b.bin", "a%20b.bin")),
+    ] {
+        let level = load(gltf_file(name, &SQUARE, fan, 4, files)).unwrap_or_else(|e| panic!("{e}"));
+        assert_eq!(level.triangles.len(), 2, "{name}");
+    }
+}
