@@ -174,7 +174,10 @@ fn walk(
     if let Some(mesh) = node.mesh() {
         let mirrored = det3(&world) < 0.0;
         for prim in mesh.primitives() {
-            let what = || format!("mesh {} primitive {}", mesh.index(), prim.index());
+            let what = || {
+                let (m, p, n) = (mesh.index(), prim.index(), node.index());
+                format!("mesh {m} primitive {p} (node {n})")
+            };
             if !matches!(
                 prim.mode(),
                 Mode::Triangles | Mode::TriangleStrip | Mode::TriangleFan
@@ -190,11 +193,28 @@ fn walk(
             }
             check(&positions, buffers)?;
             let reader = prim.reader(|b| buffers.get(b.index()).map(Vec::as_slice));
-            let points: Vec<[f64; 3]> = reader
+            let mut points = Vec::with_capacity(positions.count());
+            let read = reader
                 .read_positions()
-                .ok_or_else(|| malformed(format!("{}: unreadable positions", what())))?
-                .map(|p| apply(&world, p))
-                .collect();
+                .ok_or_else(|| malformed(format!("{}: unreadable positions", what())))?;
+            for (v, p) in read.enumerate() {
+                // Named here, where the file's own terms (node, mesh, primitive) are known.
+                let (raw, world) = (p.iter().all(|c| c.is_finite()), apply(&world, p));
+                if !raw || world.iter().any(|c| !c.is_finite()) {
+                    let by = if raw {
+                        " under the node's transform"
+                    } else {
+                        ""
+                    };
+                    return Err(malformed(format!(
+                        "{}: vertex {v} (position accessor {}) has a NaN or infinite \
+                         coordinate{by}",
+                        what(),
+                        positions.index()
+                    )));
+                }
+                points.push(world);
+            }
             let indices: Vec<u32> = match prim.indices() {
                 Some(acc) => {
                     if acc.dimensions() != Dimensions::Scalar

@@ -106,8 +106,9 @@ pub enum Problem {
         /// How many triangles it holds.
         count: usize,
     },
-    /// A coordinate is NaN or infinite (in a glTF file: an OBJ file's is refused at its line,
-    /// as [`Problem::Malformed`]).
+    /// A coordinate is NaN or infinite. A last check: both formats refuse one where it
+    /// stands, as [`Problem::Malformed`] (OBJ at its line; glTF at its node, mesh, primitive
+    /// and vertex).
     NotFinite {
         /// The triangle's index in the level.
         triangle: usize,

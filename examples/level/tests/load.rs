@@ -658,3 +658,23 @@ fn gltf_percent_encoded_buffer_uri() {
         assert_eq!(level.triangles.len(), 2, "{name}");
     }
 }
+
+/// A NaN or infinite position in a glTF primitive is named where it is (node, mesh,
+/// primitive, vertex), not as a triangle "counting polygons split into triangles".
+#[test]
+fn gltf_non_finite_position_is_named_in_its_primitive() {
+    for (name, bad) in [("nan", f32::NAN), ("infinite", f32::NEG_INFINITY)] {
+        let mut positions = SQUARE;
+        positions[2][1] = bad;
+        let path = gltf_file(name, &positions, Some(&[0, 1, 2]), 4, ("b.bin", "b.bin"));
+        let e = load(path).expect_err(name);
+        let text = e.to_string();
+        assert!(
+            matches!(e.problem, Problem::Malformed(_))
+                && text.contains("mesh 0 primitive 0 (node 0)")
+                && text.contains("vertex 2")
+                && !text.contains("polygons"),
+            "{name}: {text}"
+        );
+    }
+}
