@@ -136,16 +136,45 @@ impl fmt::Display for Stats {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         write!(
             f,
-            "{} {}: {} triangles, {} degenerate skipped {:?}, {} two-sided, {} bytes in flash ({:.1} per triangle)",
+            "{} {}: {} triangles, {} degenerate skipped{}, {} two-sided, {} bytes in flash ({:.1} per triangle)",
             self.scalar,
             self.form,
             self.triangles,
             self.skipped.len(),
-            self.skipped,
+            first_few(&self.skipped),
             self.two_sided,
             self.bytes,
             self.per_triangle()
         )
+    }
+}
+
+/// Up to eight of `indices` as ` [a, b, …]`, and how many more there are: a level of many
+/// degenerate triangles would otherwise make a line of hundreds of kilobytes.
+fn first_few(indices: &[usize]) -> String {
+    const SHOWN: usize = 8;
+    let listed: Vec<String> = indices.iter().take(SHOWN).map(usize::to_string).collect();
+    match indices.len() {
+        0 => String::new(),
+        n if n <= SHOWN => format!(" [{}]", listed.join(", ")),
+        n => format!(" [{}, … and {} more]", listed.join(", "), n - SHOWN),
+    }
+}
+
+/// `x` to four significant figures, trailing zeros dropped (an exponent beyond 10^±6).
+fn figures(x: f64) -> String {
+    if x == 0.0 || !x.is_finite() {
+        return x.to_string();
+    }
+    let magnitude = x.abs().log10().floor();
+    if !(-6.0..6.0).contains(&magnitude) {
+        return format!("{x:.3e}");
+    }
+    let decimals = (3.0 - magnitude).max(0.0) as usize;
+    let text = format!("{x:.decimals$}");
+    match text.contains('.') {
+        true => text.trim_end_matches('0').trim_end_matches('.').to_string(),
+        false => text,
     }
 }
 
@@ -164,6 +193,7 @@ pub fn verdicts(extent: f64, radius: f64) -> String {
             }
         })
         .collect();
+    let extent = figures(extent);
     format!("plan at extent {extent}, radius {radius}: {}", v.join("; "))
 }
 

@@ -678,3 +678,40 @@ fn gltf_non_finite_position_is_named_in_its_primitive() {
         );
     }
 }
+
+/// The statistics line (stderr, and the baked file's second line) names the first few
+/// degenerate triangles and counts the rest, however many there are; the planner's line gives
+/// the extent to four figures.
+#[test]
+fn bake_statistics_stay_short() {
+    let mut level = load(data("quads.obj")).unwrap();
+    let filler = [[0.0; 3], [0.0; 3], [1.0, 0.0, 0.0]];
+    level.triangles.extend(std::iter::repeat_n(filler, 20_000));
+    let baked = bake::<f32>(&level).unwrap();
+    assert_eq!(baked.stats.skipped.len(), 20_000);
+    let line = baked.stats.to_string();
+    assert!(
+        line.contains("20000 degenerate skipped [4, 5, 6, 7, 8, 9, 10, 11, … and 19992 more]")
+            && line.len() < 250,
+        "{line}"
+    );
+    let comment = baked.source.lines().nth(1).unwrap();
+    assert!(comment.len() < 250, "{} bytes", comment.len());
+    // Few: all of them; none: no list.
+    level.triangles.truncate(6);
+    let line = bake::<f32>(&level).unwrap().stats.to_string();
+    assert!(line.contains("2 degenerate skipped [4, 5],"), "{line}");
+    level.triangles.truncate(4);
+    let line = bake::<f32>(&level).unwrap().stats.to_string();
+    assert!(line.contains("0 degenerate skipped,"), "{line}");
+    let plan = ballcast_level::verdicts(17.39230465888977, 0.5);
+    assert!(
+        plan.starts_with("plan at extent 17.39, radius 0.5: "),
+        "{plan}"
+    );
+    let plan = ballcast_level::verdicts(4096.0, 0.25);
+    assert!(
+        plan.starts_with("plan at extent 4096, radius 0.25: "),
+        "{plan}"
+    );
+}
