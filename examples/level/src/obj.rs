@@ -8,7 +8,8 @@
 //! NaN or infinite one: `nan` and `inf` parse as numbers, or a w of zero), a face
 //! with fewer than three corners (which `tobj` would drop without a word), a corner whose
 //! vertex, texture or normal index is not a nonzero integer or names one not defined before it,
-//! text without a single position (not an OBJ file).
+//! a `#` comment after a position or face or a `\` continuation (neither is read), text
+//! without a single position (not an OBJ file).
 
 use super::{Problem, Tri, polygon};
 use std::path::Path;
@@ -114,6 +115,19 @@ fn scan(text: &str) -> Result<Vec<usize>, String> {
     for (n, line) in text.lines().enumerate() {
         let mut words = line.split_whitespace();
         let at = n + 1;
+        // Neither is read by `tobj`: it would fail without a line, or take `#` for a corner.
+        if matches!(words.clone().next(), Some("v" | "vt" | "vn" | "f")) {
+            if line.trim_end().ends_with('\\') {
+                return Err(format!(
+                    "line {at}: a line continued with `\\` is not supported: join it to the next"
+                ));
+            }
+            if words.clone().any(|w| w.starts_with('#')) {
+                return Err(format!(
+                    "line {at}: a comment after data is not supported: put it on a line of its own"
+                ));
+            }
+        }
         match words.next() {
             Some("v") => {
                 let numbers: Vec<f64> = words.take(3).filter_map(|w| w.parse().ok()).collect();

@@ -715,3 +715,29 @@ fn bake_statistics_stay_short() {
         "{plan}"
     );
 }
+
+/// A `#` comment after data and a `\` continuation are not read by the parser: refused at
+/// their line with what to do, not as a bare parse error or a corner naming nothing.
+#[test]
+fn obj_comment_after_data_and_continuation_are_refused_at_their_line() {
+    let cases = [
+        (
+            "v 0 0 0 # origin\nv 0 0 1\nv 1 0 1\nf 1 2 3\n",
+            "line 1: a comment",
+        ),
+        (
+            "v 0 0 0\nv 0 0 1\nv 1 0 1\nf 1 2 3 # floor\n",
+            "line 4: a comment",
+        ),
+        (
+            "v 0 0 0\nv 0 0 1\nv 1 0 1\nf 1 2 \\\n  3\n",
+            "line 4: a line continued",
+        ),
+    ];
+    for (text, what) in cases {
+        let e = load_obj_text("comment", text).expect_err(what);
+        assert!(e.to_string().contains(what), "{e}");
+    }
+    // A comment line of its own is fine.
+    assert!(load_obj_text("own_line", "# top\nv 0 0 0\nv 0 0 1\nv 1 0 1\nf 1 2 3\n").is_ok());
+}
