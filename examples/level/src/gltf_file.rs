@@ -1,6 +1,9 @@
 //! glTF 2.0 (`.gltf` with its buffers in files beside it or in `data:` URIs) and GLB through
 //! the `gltf` crate: every triangle primitive of every mesh in the default scene (or the first
-//! scene when none is marked default), with the node hierarchy's transforms applied.
+//! scene when none is marked default), with the node hierarchy's transforms applied. Only
+//! `POSITION` is read, as 32-bit floats: skins and morph targets are ignored (the bind pose),
+//! quantized (`KHR_mesh_quantization`) or compressed (Draco, meshopt) positions and sparse
+//! accessors are refused, by the `gltf` crate's check of required extensions or here.
 
 use super::{Problem, Tri};
 use base64::Engine;

@@ -12,6 +12,20 @@
 //! as the front face; the loader keeps the order (and reverses it under a mirroring glTF node
 //! transform, as the glTF specification asks), so a ball stops on the side the normals face.
 //!
+//! Up axis: coordinates are kept as the file holds them. glTF is +Y up by its specification;
+//! OBJ names none, and some tools write +Z up. ballcast's `Character` walks on +Y unless
+//! `Character::with_slope(up, ..)` is given another up (with gravity along it), or rotate the
+//! level on export; [`Level::facing`] counts floors along ±Y.
+//!
+//! OBJ: positions and faces (polylines and points ignored); a face of four or more corners is
+//! split as the fan from its first corner where that covers it (every convex polygon, quads
+//! included), ear-clipped in its plane where it is concave, and refused at its line where its
+//! edges cross. A `#` comment after data and `\` continuations are refused at their line.
+//!
+//! glTF: triangle, strip and fan primitives with float positions; `KHR_mesh_quantization`,
+//! Draco and meshopt compression and sparse accessors are refused; skins and morph targets
+//! are ignored (the bind pose is loaded).
+//!
 //! Every failure is a [`LevelError`] naming the file and the problem; nothing is printed and
 //! nothing panics on a malformed file.
 
