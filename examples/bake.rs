@@ -24,11 +24,11 @@
 //! the heightfield) and one line of statistics to stderr: triangles, degenerate ones skipped
 //! (their count and the first eight indices), the form's sizes, bytes in flash, and the
 //! precision planner's verdict at the level's extent for a ball of radius R (default 0.5);
-//! for a mesh, the bytes of the other
-//! scalars too, and before it a warning where more one-sided triangles face down than up (a
-//! level exported with the other winding). A bad file or a level outside the scalar's range
-//! gets a message naming the file and the problem, a non-zero exit status and no output on
-//! stdout.
+//! for a mesh, the bytes of the other scalars too, and before it a warning where more
+//! one-sided triangles face down than up (a level exported with the other winding) or where
+//! most face along z (a level exported +Z up). A bad file or a level outside the scalar's
+//! range gets a message naming the file and the problem, a non-zero exit status and no output
+//! on stdout.
 
 use ballcast::Scalar;
 use ballcast::bvh::LeafSize;
@@ -233,6 +233,15 @@ fn run(o: &Options) -> Result<(), Box<dyn std::error::Error>> {
             "{}: warning: {down} one-sided triangles face down and {up} up; floors face up, so \
              this level was likely exported with the other winding (a ball falls through a \
              floor it meets from behind): flip the faces, or bake with --two-sided",
+            level.path.display()
+        );
+    }
+    if level.looks_z_up() {
+        eprintln!(
+            "{}: warning: few one-sided triangles face up or down along y and many along z, \
+             so this level was likely exported +Z up, and its floors are walls to a character \
+             walking on +Y: export it +Y up, or give Character::with_slope the level's up \
+             (and gravity along it)",
             level.path.display()
         );
     }

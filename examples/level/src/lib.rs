@@ -71,6 +71,19 @@ impl Level {
     /// face down (within 60° of -y): a level's floors face up, so a level where more face down
     /// was most likely exported with the other winding, and balls fall through its floors.
     pub fn facing(&self) -> (usize, usize) {
+        self.facing_along(1)
+    }
+
+    /// Whether the level looks exported +Z up: more than four times as many one-sided
+    /// triangles face ±z (within 60°) as face ±y. Its floors are walls to a character walking
+    /// on +Y.
+    pub fn looks_z_up(&self) -> bool {
+        let ((y_up, y_down), (z_up, z_down)) = (self.facing(), self.facing_along(2));
+        z_up + z_down > 4 * (y_up + y_down)
+    }
+
+    /// [`facing`](Self::facing) along axis `axis` (0 x, 1 y, 2 z).
+    fn facing_along(&self, axis: usize) -> (usize, usize) {
         let (mut up, mut down) = (0, 0);
         for (i, [a, b, c]) in self.triangles.iter().enumerate() {
             let (e, f) = (
@@ -86,8 +99,8 @@ impl Level {
             if self.is_two_sided(i) || length == 0.0 {
                 continue;
             }
-            up += (n[1] > 0.5 * length) as usize;
-            down += (n[1] < -0.5 * length) as usize;
+            up += (n[axis] > 0.5 * length) as usize;
+            down += (n[axis] < -0.5 * length) as usize;
         }
         (up, down)
     }

@@ -741,3 +741,25 @@ fn obj_comment_after_data_and_continuation_are_refused_at_their_line() {
     // A comment line of its own is fine.
     assert!(load_obj_text("own_line", "# top\nv 0 0 0\nv 0 0 1\nv 1 0 1\nf 1 2 3\n").is_ok());
 }
+
+/// A level exported +Z up (its floors facing +z) is told apart from a +Y-up one, for the
+/// bake's warning.
+#[test]
+fn a_level_exported_z_up_is_told_apart() {
+    let level = load(data("quads.obj")).unwrap();
+    // (x, y, z) to (x, -z, y) takes +y to +z: quads.obj's floor then faces +z, its wall +y.
+    let turn = |level: &Level| Level {
+        triangles: (level.triangles.iter())
+            .map(|t| t.map(|[x, y, z]| [x, -z, y]))
+            .collect(),
+        ..level.clone()
+    };
+    let floor = Level {
+        triangles: level.triangles[..2].to_vec(),
+        ..level.clone()
+    };
+    assert!(!floor.looks_z_up() && turn(&floor).looks_z_up());
+    // Two triangles along each axis: not clearly either.
+    assert_eq!(turn(&level).facing(), (2, 0));
+    assert!(!level.looks_z_up() && !turn(&level).looks_z_up());
+}
