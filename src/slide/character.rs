@@ -131,8 +131,9 @@ impl<S: Scalar> Character<S> {
     /// left the floor (zero: the ground probe alone, which lets a walker fly off any convex
     /// edge it crosses faster than gravity holds it round the edge). Choose about the highest
     /// step down, and at least the drop of a walk down the steepest walkable slope in a frame:
-    /// a drop within it is stepped down at any speed; a walker already rolled round the edge's
-    /// top when it needs the snap may step down up to `r (1 − cos 45°)` more.
+    /// a drop within it is stepped down at any speed, and a walker already rolled round an
+    /// edge's top when it needs the snap may step down a deeper one (README, *The character
+    /// loop*).
     ///
     /// Errors: [`Error::NaN`], or [`Error::OutOfRange`] outside `[0, LIMIT]`.
     pub fn with_snap(self, depth: S) -> Result<Self, Error> {
