@@ -49,7 +49,14 @@ impl<S: Scalar> StandardTriangle<S> {
     ///   meets the face there: the neighbour's frame may have rounded the plane a step higher
     ///   and seen the centre reach `r` only beyond the seam. Deeper, it is an overlap, not
     ///   reported later along the path.
-    /// - A ray (radius 0) touches only the face, which includes its boundary.
+    /// - A ray (radius 0) touches only the face, which includes its boundary grown by the
+    ///   rounding of the point where the ray crosses the plane (twice a height's rounding,
+    ///   more for a slanted ray, up to 16 times that within 3.6° of the plane): a ray through
+    ///   an edge or vertex shared by neighbours meets one of them, where each frame alone may
+    ///   round the crossing outside its face. A ray within that of an edge from outside meets
+    ///   the face there. A ball of a radius below a few roundings of its coordinates has edge
+    ///   and vertex contacts whose rounding exceeds it: at a convex edge or vertex it may pass
+    ///   between neighbours (`I16F16`: up to 20 steps, at coordinates near 30).
     /// - The normal is the unit vector from the touched point to the ball's centre.
     ///
     /// ```
@@ -166,7 +173,9 @@ impl<S: Scalar> StandardTriangle<S> {
         let face = face_point(s);
         if let Some((beta, xq, zq)) = face
             && beta < S::ONE
-            && (contains(self, xq, zq) || self.within_seams(xq, zq, r))
+            && (contains(self, xq, zq)
+                || self.within_seams(xq, zq, r)
+                || (r == S::ZERO && self.within_rounding(xq, zq, self.magnitude(p0, p1), p1 - p0)))
         {
             return Some((beta, None, Contact::Face, (r - p0.y, p1.y - p0.y)));
         }
@@ -194,6 +203,13 @@ impl<S: Scalar> StandardTriangle<S> {
     /// leaves), but an edge or vertex the ball passes within `r` of can.
     /// Starting outside the face region, the ball touches the triangle first where it touches
     /// one of them first.
+    /// The largest coordinate of the sweep's ends and of the triangle, in its frame.
+    fn magnitude(&self, p0: Vec3<S>, p1: Vec3<S>) -> S {
+        let (x1, z1, x2) = self.shape();
+        let ends = largest(p0.abs().max_element(), p1.abs().max_element(), S::ZERO);
+        largest(ends, largest(x1.abs(), x2, z1), S::ZERO)
+    }
+
     #[cold]
     #[inline(never)]
     fn cast_rising(&self, p0: Vec3<S>, p1: Vec3<S>, r: S, cut: Cut<S>) -> Option<Touch<S>> {
