@@ -223,7 +223,7 @@ pub fn triangles<S: Scalar>(level: &Level) -> Result<Vec<Triangle<S>>, LevelErro
                 scalar: S::PRECISION.scalar.name(),
                 limit,
             };
-            return Err(LevelError::new(&level.path, problem));
+            return Err(LevelError::at(&level.path, problem, level.origin(triangle)));
         }
         let v = t.map(|p| Vec3::new(p[0], p[1], p[2]).map(S::from_f64));
         out.push(Triangle::new(v[0], v[1], v[2]));
@@ -294,7 +294,7 @@ pub(crate) fn with_mesh<S: Scalar, R>(
         &mut order,
         &mut scratch,
     )
-    .map_err(|e| LevelError::new(&level.path, Problem::Mesh(e)))?;
+    .map_err(|e| mesh_error(level, e))?;
     if mesh.is_empty() {
         return Err(LevelError::new(
             &level.path,
@@ -302,6 +302,15 @@ pub(crate) fn with_mesh<S: Scalar, R>(
         ));
     }
     Ok(f(&mesh))
+}
+
+/// The error for a mesh build that refused: where it names a triangle, with its place.
+pub(crate) fn mesh_error(level: &Level, e: ballcast::MeshError) -> LevelError {
+    let origin = match e {
+        ballcast::MeshError::Triangle { index, .. } => level.origin(index),
+        _ => None,
+    };
+    LevelError::at(&level.path, Problem::Mesh(e), origin)
 }
 
 /// The indices of the degenerate triangles among `sources`, which a bake leaves out.

@@ -5,7 +5,7 @@
 //! prepared mesh's, bit for bit ([`CompactMesh::compact`] prepares every triangle again and
 //! checks it); the price is a preparation for each triangle a query reaches.
 
-use super::bake::{extent, skipped, triangles, with_mesh};
+use super::bake::{extent, mesh_error, skipped, triangles, with_mesh};
 use super::source::{self, point};
 use super::{Baked, Emit, Form, Level, LevelError, Problem, Stats};
 use ballcast::bvh::LeafSize;
@@ -25,9 +25,8 @@ use std::fmt::Write;
 /// vertices are the mesh's own).
 pub fn bake_compact<S: Scalar + Emit>(level: &Level) -> Result<Baked, LevelError> {
     let sources = triangles::<S>(level)?;
-    let fail = |p| LevelError::new(&level.path, p);
     let skipped = skipped(&sources);
-    let (vertices, indices) = shared(&sources, &skipped).map_err(|e| fail(Problem::Mesh(e)))?;
+    let (vertices, indices) = shared(&sources, &skipped).map_err(|e| mesh_error(level, e))?;
     let small = vertices.len().max(sources.len()) <= u16::MAX as usize + 1;
     let welded = (vertices.as_slice(), indices.as_slice());
     with_mesh(level, &sources, LeafSize::Four, |mesh| {
@@ -37,7 +36,13 @@ pub fn bake_compact<S: Scalar + Emit>(level: &Level) -> Result<Baked, LevelError
             write::<S, u32>(level, mesh, welded, skipped, "u32")
         }
     })?
-    .map_err(|e| fail(Problem::Compact(e)))
+    .map_err(|e| {
+        let origin = match e {
+            CompactError::Mismatch { index } => level.origin(index),
+            _ => None,
+        };
+        LevelError::at(&level.path, Problem::Compact(e), origin)
+    })
 }
 
 /// The vertices of the triangles kept (those not `skipped`), shared by [`weld`], in order of

@@ -4,8 +4,9 @@
 //! `POSITION` is read, as 32-bit floats: skins and morph targets are ignored (the bind pose),
 //! quantized (`KHR_mesh_quantization`) or compressed (Draco, meshopt) positions and sparse
 //! accessors are refused, by the `gltf` crate's check of required extensions or here.
+//! Each triangle's origin is its node, mesh, primitive and place in the primitive.
 
-use super::{Problem, Tri};
+use super::{Origins, Problem, Tri};
 use base64::Engine;
 use gltf::accessor::{DataType, Dimensions};
 use gltf::mesh::Mode;
@@ -19,7 +20,10 @@ fn malformed(m: impl Into<String>) -> Problem {
     Problem::Malformed(m.into())
 }
 
-pub(crate) fn load(path: &Path) -> Result<(Vec<Tri>, Vec<bool>), Problem> {
+/// The triangles, whether each is two-sided, and where each came from.
+type Loaded = (Vec<Tri>, Vec<bool>, Origins);
+
+pub(crate) fn load(path: &Path) -> Result<Loaded, Problem> {
     let bytes = std::fs::read(path).map_err(Problem::Io)?;
     let unchecked =
         Gltf::from_slice_without_validation(&bytes).map_err(|e| malformed(e.to_string()))?;
@@ -46,7 +50,7 @@ pub(crate) fn load(path: &Path) -> Result<(Vec<Tri>, Vec<bool>), Problem> {
         .default_scene()
         .or_else(|| gltf.scenes().next())
         .ok_or_else(|| malformed("no scene"))?;
-    let mut out = (Vec::new(), Vec::new());
+    let mut out = (Vec::new(), Vec::new(), Origins::default());
     let mut seen = vec![false; gltf.nodes().count()];
     for node in scene.nodes() {
         walk(&node, IDENTITY, &buffers, &mut out, &mut seen, 0)?;
@@ -154,7 +158,7 @@ fn walk(
     node: &Node,
     parent: Mat,
     buffers: &[Vec<u8>],
-    out: &mut (Vec<Tri>, Vec<bool>),
+    out: &mut Loaded,
     seen: &mut [bool],
     depth: usize,
 ) -> Result<(), Problem> {
@@ -176,6 +180,8 @@ fn walk(
     let world = mul(&parent, &local);
     if let Some(mesh) = node.mesh() {
         let mirrored = det3(&world) < 0.0;
+        let node_at = (node.index(), out.2.name(node.name()));
+        let mesh_at = (mesh.index(), out.2.name(mesh.name()));
         for prim in mesh.primitives() {
             let what = || {
                 let (m, p, n) = (mesh.index(), prim.index(), node.index());
@@ -291,6 +297,7 @@ fn walk(
                 });
                 // A material's `doubleSided` (glTF 2.0, 3.9.6): seen from both sides.
                 out.1.push(prim.material().double_sided());
+                out.2.push_gltf(node_at, mesh_at, prim.index(), t);
             }
         }
     }

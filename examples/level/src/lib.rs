@@ -26,7 +26,9 @@
 //! Draco and meshopt compression and sparse accessors are refused; skins and morph targets
 //! are ignored (the bind pose is loaded).
 //!
-//! Every failure is a [`LevelError`] naming the file and the problem; nothing is printed and
+//! Every failure is a [`LevelError`] naming the file and the problem, and where it names a
+//! triangle by its index in the level, where that triangle came from in the file
+//! ([`Origin`]: an OBJ face's line, a glTF node, mesh and primitive); nothing is printed and
 //! nothing panics on a malformed file.
 
 mod bake;
@@ -34,12 +36,14 @@ mod compact;
 mod gltf_file;
 mod heightmap;
 mod obj;
+mod origin;
 mod polygon;
 mod source;
 
 pub use bake::{Baked, Emit, Form, Stats, bake, bake_with, triangles, verdicts};
 pub use compact::bake_compact;
 pub use heightmap::{Heightmap, MAX_PIXELS, Placement, bake_heightfield, load_heightmap};
+pub use origin::{Origin, Origins};
 
 use std::fmt;
 use std::path::{Path, PathBuf};
@@ -59,12 +63,27 @@ pub struct Level {
     /// `doubleSided`; never for OBJ, which has no such notion. A triangle without an entry is
     /// one-sided.
     pub two_sided: Vec<bool>,
+    /// Where each triangle came from in the file, for messages a level designer can follow
+    /// back to the modelling tool; read through [`origin`](Self::origin). Only while they are
+    /// one a triangle: add or remove triangles without them and no triangle has a place
+    /// (rather than a wrong one); `Origins::default()` knows none.
+    pub origins: Origins,
 }
 
 impl Level {
     /// Whether triangle `index` is two-sided (see [`two_sided`](Self::two_sided)).
     pub fn is_two_sided(&self, index: usize) -> bool {
         self.two_sided.get(index).copied().unwrap_or(false)
+    }
+
+    /// Where triangle `index` came from in the file: an OBJ face's line (and which triangle of
+    /// its polygon), a glTF node, mesh, primitive and triangle. `None` past the end, or where
+    /// [`origins`](Self::origins) are not one a triangle.
+    pub fn origin(&self, index: usize) -> Option<Origin> {
+        if self.origins.len() != self.triangles.len() {
+            return None;
+        }
+        self.origins.get(index)
     }
 
     /// How many one-sided triangles face up (their front normal within 60° of +y) and how many
@@ -113,6 +132,10 @@ pub struct LevelError {
     pub path: PathBuf,
     /// What is wrong with it.
     pub problem: Problem,
+    /// Where the triangle the problem names ([`Problem::NotFinite`], [`Problem::OutOfRange`],
+    /// a triangle refused by the mesh or compact build) came from in the file, where the level
+    /// knows.
+    pub origin: Option<Origin>,
 }
 
 /// What is wrong with a level file.
@@ -201,9 +224,23 @@ pub enum Reason {
     },
 }
 
+/// Where a message names triangle `index` by its index: its place in the file, or how the
+/// index counts.
+fn triangle_at(index: usize, origin: &Option<Origin>) -> String {
+    match origin {
+        Some(o) => format!("triangle {index} ({o})"),
+        None => format!("triangle {index} (counting from 0, polygons split into triangles)"),
+    }
+}
+
 impl fmt::Display for LevelError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         write!(f, "{}: ", self.path.display())?;
+        // The build errors name the triangle by index alone: its place follows.
+        let built = |index: usize| match &self.origin {
+            Some(o) => format!("; triangle {index} is at {o}"),
+            None => String::new(),
+        };
         match &self.problem {
             Problem::Io(e) => write!(f, "cannot read: {e}"),
             Problem::UnknownFormat => f.write_str(
@@ -218,13 +255,11 @@ impl fmt::Display for LevelError {
                     "all {count} triangles are degenerate (zero area or too thin)"
                 )
             }
-            Problem::NotFinite { triangle } => {
-                write!(
-                    f,
-                    "triangle {triangle} (counting from 0, polygons split into triangles) has a \
-                     NaN or infinite coordinate"
-                )
-            }
+            Problem::NotFinite { triangle } => write!(
+                f,
+                "{} has a NaN or infinite coordinate",
+                triangle_at(*triangle, &self.origin)
+            ),
             Problem::OutOfRange {
                 triangle,
                 value,
@@ -232,11 +267,23 @@ impl fmt::Display for LevelError {
                 limit,
             } => write!(
                 f,
-                "triangle {triangle} (counting from 0, polygons split into triangles) has the \
-                 coordinate {value}, outside {scalar}'s range ±{limit}"
+                "{} has the coordinate {value}, outside {scalar}'s range ±{limit}",
+                triangle_at(*triangle, &self.origin)
             ),
-            Problem::Mesh(e) => write!(f, "mesh build refused: {e}"),
-            Problem::Compact(m) => write!(f, "compact mesh refused: {m}"),
+            Problem::Mesh(e) => {
+                let at = match e {
+                    ballcast::MeshError::Triangle { index, .. } => built(*index),
+                    _ => String::new(),
+                };
+                write!(f, "mesh build refused: {e}{at}")
+            }
+            Problem::Compact(e) => {
+                let at = match e {
+                    ballcast::CompactError::Mismatch { index } => built(*index),
+                    _ => String::new(),
+                };
+                write!(f, "compact mesh refused: {e}{at}")
+            }
             Problem::Colour { x, y } => write!(
                 f,
                 "pixel ({x}, {y}) (column, row from the top left) is coloured: a heightmap's \
@@ -279,9 +326,15 @@ impl std::error::Error for LevelError {}
 
 impl LevelError {
     pub(crate) fn new(path: &Path, problem: Problem) -> Self {
+        Self::at(path, problem, None)
+    }
+
+    /// The error about a triangle that came from `origin` in the file.
+    pub(crate) fn at(path: &Path, problem: Problem, origin: Option<Origin>) -> Self {
         Self {
             path: path.to_path_buf(),
             problem,
+            origin,
         }
     }
 }
@@ -296,11 +349,11 @@ pub fn load(path: impl AsRef<Path>) -> Result<Level, LevelError> {
         .extension()
         .and_then(|e| e.to_str())
         .map(str::to_ascii_lowercase);
-    let one_sided = |t: Vec<Tri>| {
+    let one_sided = |(t, origins): (Vec<Tri>, Origins)| {
         let n = t.len();
-        (t, vec![false; n])
+        (t, vec![false; n], origins)
     };
-    let (triangles, two_sided) = match ext.as_deref() {
+    let (triangles, two_sided, origins) = match ext.as_deref() {
         Some("obj") => obj::load(path).map(one_sided),
         Some("gltf" | "glb") => gltf_file::load(path),
         _ => Err(Problem::UnknownFormat),
@@ -309,15 +362,17 @@ pub fn load(path: impl AsRef<Path>) -> Result<Level, LevelError> {
     if triangles.is_empty() {
         return Err(LevelError::new(path, Problem::NoTriangles));
     }
-    if let Some(triangle) = triangles
-        .iter()
-        .position(|t| t.iter().flatten().any(|c| !c.is_finite()))
-    {
-        return Err(LevelError::new(path, Problem::NotFinite { triangle }));
-    }
-    Ok(Level {
+    let level = Level {
         path: path.to_path_buf(),
         triangles,
         two_sided,
-    })
+        origins,
+    };
+    if let Some(triangle) =
+        (level.triangles.iter()).position(|t| t.iter().flatten().any(|c| !c.is_finite()))
+    {
+        let problem = Problem::NotFinite { triangle };
+        return Err(LevelError::at(path, problem, level.origin(triangle)));
+    }
+    Ok(level)
 }

@@ -10,11 +10,18 @@
 //! vertex, texture or normal index is not a nonzero integer or names one not defined before it,
 //! a `#` comment after a position or face or a `\` continuation (neither is read), text
 //! without a single position (not an OBJ file).
+//!
+//! Each triangle's origin is its face's line, which triangle of the face's polygon it is, and
+//! the names of the last `o` and `g` lines before it.
 
-use super::{Problem, Tri, polygon};
+use super::{Origins, Problem, Tri, polygon};
 use std::path::Path;
 
-pub(crate) fn load(path: &Path) -> Result<Vec<Tri>, Problem> {
+/// A face as the scan finds it: its line, and the numbers of its object's and group's names
+/// in the origins.
+type FaceAt = (usize, [u32; 2]);
+
+pub(crate) fn load(path: &Path) -> Result<(Vec<Tri>, Origins), Problem> {
     let bytes = std::fs::read(path).map_err(Problem::Io)?;
     // OBJ is text: a binary file (or another encoding) is named as such, at its line.
     if let Err(e) = std::str::from_utf8(&bytes) {
@@ -28,7 +35,8 @@ pub(crate) fn load(path: &Path) -> Result<Vec<Tri>, Problem> {
     // first keyword, leaving the first position undefined and every index after it shifted.
     let text = String::from_utf8_lossy(&bytes);
     let text = faces_only(text.strip_prefix('\u{feff}').unwrap_or(&text));
-    let face_lines = scan(&text).map_err(Problem::Malformed)?;
+    let mut origins = Origins::default();
+    let face_lines = scan(&text, &mut origins).map_err(Problem::Malformed)?;
     // Polygons are split here (`polygon`), where a face's corners and line are known.
     let options = tobj::LoadOptions {
         triangulate: false,
@@ -60,7 +68,8 @@ pub(crate) fn load(path: &Path) -> Result<Vec<Tri>, Problem> {
         let mut start = 0;
         for f in 0..faces {
             let k = arities.get(f).map_or(3, |&k| k as usize);
-            let (Some(&at), Some(corners)) = (lines.next(), idx.get(start..start + k)) else {
+            let (Some(&(at, names)), Some(corners)) = (lines.next(), idx.get(start..start + k))
+            else {
                 return Err(Problem::Malformed(
                     "faces out of step with the parser".into(),
                 ));
@@ -77,6 +86,9 @@ pub(crate) fn load(path: &Path) -> Result<Vec<Tri>, Problem> {
                 ))
             })?;
             out.extend(triangles.iter().map(|t| t.map(|i| points[i])));
+            for piece in 1..=triangles.len() {
+                origins.push_obj(at, (piece, triangles.len()), names);
+            }
         }
     }
     if lines.next().is_some() {
@@ -84,7 +96,7 @@ pub(crate) fn load(path: &Path) -> Result<Vec<Tri>, Problem> {
             "faces out of step with the parser".into(),
         ));
     }
-    Ok(out)
+    Ok((out, origins))
 }
 
 /// The text with every `l` (polyline) line left blank, so that line numbers hold: `tobj` reads
@@ -106,10 +118,13 @@ fn names_one(i: i64, count: i64) -> bool {
     i != 0 && i.unsigned_abs() <= count.unsigned_abs()
 }
 
-/// The line of every face (1-based, in file order), or the first fault of the kinds in the
-/// module docs, as "line N: what".
-fn scan(text: &str) -> Result<Vec<usize>, String> {
+/// The line of every face (1-based, in file order) with its object's and group's names
+/// (stored in `origins`), or the first fault of the kinds in the module docs, as "line N:
+/// what".
+fn scan(text: &str, origins: &mut Origins) -> Result<Vec<FaceAt>, String> {
     let mut faces = Vec::new();
+    // The names of the last `o` and `g` lines, as numbers in `origins` (0 for none).
+    let mut names = [0; 2];
     // Positions, texture coordinates and normals defined so far.
     let mut defined = [0i64; 3];
     for (n, line) in text.lines().enumerate() {
@@ -151,6 +166,11 @@ fn scan(text: &str) -> Result<Vec<usize>, String> {
                 }
                 defined[0] += 1;
             }
+            // The name is the rest of the line (it may hold spaces), as `tobj` reads it.
+            Some(keyword @ ("o" | "g")) => {
+                let name = line.trim()[1..].trim();
+                names[usize::from(keyword == "g")] = origins.name(Some(name));
+            }
             Some("vt") => defined[1] += 1,
             Some("vn") => defined[2] += 1,
             Some("f") => {
@@ -179,7 +199,7 @@ fn scan(text: &str) -> Result<Vec<usize>, String> {
                         }
                     }
                 }
-                faces.push(at);
+                faces.push((at, names));
             }
             _ => {}
         }
