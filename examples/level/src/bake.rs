@@ -3,11 +3,12 @@
 //! triangle.
 
 use super::source::{self, list, point};
-use super::{Level, LevelError, Problem};
+use super::stats::skipped_origins;
+use super::{Form, Level, LevelError, Problem, Stats};
 use ballcast::bvh::{LeafSize, nodes_for_leaves};
 use ballcast::{Degenerates, Error, Mesh, Node, Scalar, StandardTriangle, Triangle, Vec3};
 use fixed::types::{I2F30, I2F62, I16F16, I32F32};
-use std::fmt::{self, Write};
+use std::fmt::Write;
 
 /// A scalar the bake can write as source: its type's name and its values as raw bits.
 pub trait Emit: Scalar {
@@ -48,154 +49,6 @@ emit!(f32, f32, u32, u32, false);
 emit!(f64, f64, u64, u64, false);
 emit!(I16F16, I2F30, i32, i32, true);
 emit!(I32F32, I2F62, i64, i64, true);
-
-/// The form a level was baked into, with what sizes it.
-#[derive(Clone, Debug, PartialEq)]
-pub enum Form {
-    /// A prepared [`Mesh`]: every triangle prepared, under a tree of `nodes` nodes with leaves
-    /// of up to `leaf_size` triangles.
-    Mesh {
-        /// Tree nodes.
-        nodes: usize,
-        /// The most triangles in a leaf.
-        leaf_size: LeafSize,
-    },
-    /// A [`ballcast::CompactMesh`]: shared vertices and three indices a triangle, under a tree
-    /// of `nodes` nodes with leaves of four.
-    Compact {
-        /// Tree nodes.
-        nodes: usize,
-        /// Shared vertices.
-        vertices: usize,
-        /// The index type (`u16` or `u32`).
-        index: &'static str,
-    },
-    /// A [`ballcast::Heightfield`]: a grid of 16-bit heights.
-    Heightfield {
-        /// Cells along x.
-        columns: u32,
-        /// Cells along z.
-        rows: u32,
-        /// Cells left out as holes.
-        holes: usize,
-    },
-}
-
-impl fmt::Display for Form {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self {
-            Self::Mesh { nodes, leaf_size } => write!(
-                f,
-                "prepared mesh, {nodes} nodes (leaves of up to {})",
-                leaf_size.triangles()
-            ),
-            Self::Compact {
-                nodes,
-                vertices,
-                index,
-            } => write!(
-                f,
-                "compact mesh, {nodes} nodes (leaves of up to 4), {vertices} vertices, {index} indices"
-            ),
-            Self::Heightfield {
-                columns,
-                rows,
-                holes,
-            } => write!(f, "heightfield, {columns} x {rows} cells, {holes} holes"),
-        }
-    }
-}
-
-/// What a bake made of a level.
-#[derive(Clone, Debug, PartialEq)]
-pub struct Stats {
-    /// The scalar.
-    pub scalar: &'static str,
-    /// The form and its sizes.
-    pub form: Form,
-    /// Triangles in the level (a heightfield's: two a cell, holes included).
-    pub triangles: usize,
-    /// Input indices of the degenerate triangles left out.
-    pub skipped: Vec<usize>,
-    /// Two-sided triangles kept.
-    pub two_sided: usize,
-    /// Bytes of the statics.
-    pub bytes: usize,
-    /// The largest coordinate's magnitude.
-    pub extent: f64,
-}
-
-impl Stats {
-    /// Bytes in flash per triangle kept.
-    pub fn per_triangle(&self) -> f64 {
-        self.bytes as f64 / (self.triangles - self.skipped.len()).max(1) as f64
-    }
-}
-
-impl fmt::Display for Stats {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(
-            f,
-            "{} {}: {} triangles, {} degenerate skipped{}, {} two-sided, {} bytes in flash ({:.1} per triangle)",
-            self.scalar,
-            self.form,
-            self.triangles,
-            self.skipped.len(),
-            first_few(&self.skipped),
-            self.two_sided,
-            self.bytes,
-            self.per_triangle()
-        )
-    }
-}
-
-/// Up to eight of `indices` as ` [a, b, …]`, and how many more there are: a level of many
-/// degenerate triangles would otherwise make a line of hundreds of kilobytes.
-fn first_few(indices: &[usize]) -> String {
-    const SHOWN: usize = 8;
-    let listed: Vec<String> = indices.iter().take(SHOWN).map(usize::to_string).collect();
-    match indices.len() {
-        0 => String::new(),
-        n if n <= SHOWN => format!(" [{}]", listed.join(", ")),
-        n => format!(" [{}, … and {} more]", listed.join(", "), n - SHOWN),
-    }
-}
-
-/// `x` to four significant figures, trailing zeros dropped (an exponent beyond 10^±6).
-fn figures(x: f64) -> String {
-    if x == 0.0 || !x.is_finite() {
-        return x.to_string();
-    }
-    let magnitude = x.abs().log10().floor();
-    if !(-6.0..6.0).contains(&magnitude) {
-        return format!("{x:.3e}");
-    }
-    let decimals = (3.0 - magnitude).max(0.0) as usize;
-    let text = format!("{x:.decimals$}");
-    match text.contains('.') {
-        true => text.trim_end_matches('0').trim_end_matches('.').to_string(),
-        false => text,
-    }
-}
-
-/// The planner's verdict on every scalar at `extent` for a ball of `radius`, one phrase each.
-pub fn verdicts(extent: f64, radius: f64) -> String {
-    let v: Vec<String> = ballcast::plan(extent, radius, 2.0 * extent)
-        .iter()
-        .map(|v| {
-            if v.fits {
-                format!(
-                    "{} fits (position error {:.1e}, radius at least {:.1e})",
-                    v.precision.scalar, v.position_error, v.min_radius
-                )
-            } else {
-                format!("{} does not fit", v.precision.scalar)
-            }
-        })
-        .collect();
-    let extent = figures(extent);
-    format!("plan at extent {extent}, radius {radius}: {}", v.join("; "))
-}
 
 /// A level baked for scalar `S`: the source of the statics and what went into them.
 #[derive(Clone, Debug, PartialEq)]
@@ -250,6 +103,7 @@ pub fn bake_with<S: Scalar + Emit>(
 ) -> Result<Baked, LevelError> {
     let sources = triangles::<S>(level)?;
     with_mesh(level, &sources, leaf_size, |mesh| {
+        let skipped = skipped(&sources);
         let stats = Stats {
             scalar: S::NAME,
             form: Form::Mesh {
@@ -257,7 +111,8 @@ pub fn bake_with<S: Scalar + Emit>(
                 leaf_size,
             },
             triangles: sources.len(),
-            skipped: skipped(&sources),
+            skipped_origins: skipped_origins(level, &skipped),
+            skipped,
             two_sided: mesh.triangles().iter().filter(|t| t.is_two_sided()).count(),
             bytes: size_of_val(mesh.triangles())
                 + size_of_val(mesh.order())

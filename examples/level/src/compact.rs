@@ -7,6 +7,7 @@
 
 use super::bake::{extent, mesh_error, skipped, triangles, with_mesh};
 use super::source::{self, point};
+use super::stats::skipped_origins;
 use super::{Baked, Emit, Form, Level, LevelError, Problem, Stats};
 use ballcast::bvh::LeafSize;
 use ballcast::import::{Welded, weld};
@@ -98,6 +99,7 @@ fn write<S: Scalar + Emit, I: MeshIndex>(
             index,
         },
         triangles: level.triangles.len(),
+        skipped_origins: skipped_origins(level, &skipped),
         skipped,
         two_sided: mesh.triangles().iter().filter(|t| t.is_two_sided()).count(),
         bytes: size_of_val(nodes)

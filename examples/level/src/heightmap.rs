@@ -9,8 +9,8 @@
 //! terrain editors export them. A fully transparent pixel (alpha zero) cuts a hole: every cell
 //! it is a corner of is left out.
 
-use super::bake::{Baked, Emit, Form, Stats};
 use super::source::{self, point};
+use super::{Baked, Emit, Form, Stats};
 use super::{LevelError, Problem, Reason};
 use ballcast::heightfield::{HOLE, MAX_TRIANGLES};
 use ballcast::{Heightfield, HeightfieldShape, Scalar, Vec3};
@@ -267,6 +267,7 @@ pub fn bake_heightfield<S: Scalar + Emit>(
         },
         triangles: field.len(),
         skipped: Vec::new(),
+        skipped_origins: Vec::new(),
         two_sided: 0,
         bytes: size_of_val(field.heights()) + size_of_val(cells),
         extent: far

@@ -39,11 +39,13 @@ mod obj;
 mod origin;
 mod polygon;
 mod source;
+mod stats;
 
-pub use bake::{Baked, Emit, Form, Stats, bake, bake_with, triangles, verdicts};
+pub use bake::{Baked, Emit, bake, bake_with, triangles};
 pub use compact::bake_compact;
 pub use heightmap::{Heightmap, MAX_PIXELS, Placement, bake_heightfield, load_heightmap};
 pub use origin::{Origin, Origins};
+pub use stats::{Form, PLACES_SHOWN, Stats, verdicts};
 
 use std::fmt;
 use std::path::{Path, PathBuf};

@@ -96,10 +96,23 @@ fn gltf(name: &str, nodes: &[(&str, usize)], meshes: &[(&str, Vec<Vec<[f32; 9]>>
     load(&file.0).unwrap_or_else(|e| panic!("{e}"))
 }
 
-/// A floor triangle.
+/// A floor triangle and a degenerate one (coincident corners).
 const FLOOR: [f32; 9] = [0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 1.0, 0.0, 1.0];
+const FILLER: [f32; 9] = [0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0];
 
 const SQUARE: &str = "v 0 0 0\nv 0 0 1\nv 1 0 1\nv 1 0 0\n";
+
+#[test]
+fn a_degenerate_filler_on_obj_line_10_is_reported_at_line_10() {
+    // Lines 1-4 the square, 5-8 comments and a quad (two triangles), line 10 the filler.
+    let text = format!("{SQUARE}# floor\n\nf 1 2 3 4\n# filler\n\nf 1 1 2\nf 1 3 4\n");
+    let level = obj("filler", &text).unwrap();
+    let line = bake::<f32>(&level).unwrap().stats.to_string();
+    assert!(
+        line.contains("4 triangles, 1 degenerate skipped [2] (2: line 10), "),
+        "{line}"
+    );
+}
 
 #[test]
 fn a_split_polygons_out_of_range_corner_names_its_line_and_which_triangle() {
@@ -121,6 +134,24 @@ fn a_split_polygons_out_of_range_corner_names_its_line_and_which_triangle() {
 }
 
 #[test]
+fn a_gltf_primitives_degenerate_triangle_names_node_mesh_primitive_and_local_index() {
+    // Node 0 (unnamed) draws mesh 0 (unnamed): a filler. Node 1 "Floor" draws mesh 1
+    // "Tiles": primitive 0 two floors, primitive 1 a floor, a filler and a floor.
+    let level = gltf(
+        "primitives",
+        &[("", 0), ("Floor", 1)],
+        &[
+            ("", vec![vec![FILLER]]),
+            ("Tiles", vec![vec![FLOOR; 2], vec![FLOOR, FILLER, FLOOR]]),
+        ],
+    );
+    let line = bake::<f32>(&level).unwrap().stats.to_string();
+    let want = "6 triangles, 2 degenerate skipped [0, 4] (0: node 0, mesh 0, primitive 0's \
+                triangle 0; 4: node 1 \"Floor\", mesh 1 \"Tiles\", primitive 1's triangle 1), ";
+    assert!(line.contains(want), "{line}");
+}
+
+#[test]
 fn a_gltf_triangle_out_of_range_names_node_mesh_primitive_and_local_index() {
     let far = [0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 5000.0, 0.0, 1.0];
     let level = gltf(
@@ -135,6 +166,24 @@ fn a_gltf_triangle_out_of_range_names_node_mesh_primitive_and_local_index() {
     let want = "far.gltf: triangle 3 (node 1 \"Bridge\", mesh 1 \"Span\", primitive 1's triangle \
                 1) has the coordinate 5000, outside I16F16's range ±4096";
     assert!(e.to_string().ends_with(want), "{e}");
+}
+
+/// A name is quoted with its escapes: a line break in a node's name does not end the baked
+/// file's comment that holds the statistics.
+#[test]
+fn a_gltf_node_name_with_a_line_break_stays_on_the_statistics_line() {
+    let level = gltf(
+        "break",
+        &[("Floor\nB", 0)],
+        &[("", vec![vec![FILLER, FLOOR]])],
+    );
+    let source = bake::<f32>(&level).unwrap().source;
+    let comment = source.lines().nth(1).unwrap();
+    assert!(
+        comment.starts_with("// ") && comment.contains(r#"(0: node 0 "Floor\nB", mesh 0,"#),
+        "{comment}"
+    );
+    assert!(source.lines().nth(2).unwrap().starts_with("use ballcast::"));
 }
 
 /// A position whose w divides it past f64's range is refused by the loader's last check,
@@ -179,4 +228,16 @@ fn triangles_added_without_their_origins_name_no_place() {
     assert_eq!(level.origin(1), None);
     let line = bake::<f32>(&level).unwrap().stats.to_string();
     assert!(line.contains("1 degenerate skipped [1], "), "{line}");
+}
+
+/// Many degenerate faces: the line lists eight indices and places the first three, so it
+/// stays short.
+#[test]
+fn many_degenerate_faces_place_only_the_first_three() {
+    let text = format!("{SQUARE}f 1 2 3\n{}", "f 1 1 2\n".repeat(20_000));
+    let level = obj("many", &text).unwrap();
+    let line = bake::<f32>(&level).unwrap().stats.to_string();
+    let want = "20000 degenerate skipped [1, 2, 3, 4, 5, 6, 7, 8, … and 19992 more] \
+                (1: line 6; 2: line 7; 3: line 8), ";
+    assert!(line.contains(want) && line.len() < 300, "{line}");
 }
