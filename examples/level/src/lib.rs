@@ -136,8 +136,8 @@ pub struct LevelError {
     pub problem: Problem,
     /// Where the triangle the problem names ([`Problem::NotFinite`], [`Problem::OutOfRange`],
     /// a triangle refused by the mesh or compact build) came from in the file, where the level
-    /// knows.
-    pub origin: Option<Origin>,
+    /// knows. Boxed: it holds names, and most errors have none.
+    pub origin: Option<Box<Origin>>,
 }
 
 /// What is wrong with a level file.
@@ -228,7 +228,7 @@ pub enum Reason {
 
 /// Where a message names triangle `index` by its index: its place in the file, or how the
 /// index counts.
-fn triangle_at(index: usize, origin: &Option<Origin>) -> String {
+fn triangle_at(index: usize, origin: &Option<Box<Origin>>) -> String {
     match origin {
         Some(o) => format!("triangle {index} ({o})"),
         None => format!("triangle {index} (counting from 0, polygons split into triangles)"),
@@ -336,7 +336,7 @@ impl LevelError {
         Self {
             path: path.to_path_buf(),
             problem,
-            origin,
+            origin: origin.map(Box::new),
         }
     }
 }
