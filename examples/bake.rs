@@ -22,13 +22,14 @@
 //!
 //! Writes the source to stdout (`include!` it in a module; `MESH` is the mesh, `HEIGHTFIELD`
 //! the heightfield) and one line of statistics to stderr: triangles, degenerate ones skipped
-//! (their count and the first eight indices), the form's sizes, bytes in flash, and the
+//! (their count, the first eight indices, and where the first three are in the file: an OBJ
+//! face's line, a glTF node, mesh and primitive), the form's sizes, bytes in flash, and the
 //! precision planner's verdict at the level's extent for a ball of radius R (default 0.5);
 //! for a mesh, the bytes of the other scalars too, and before it a warning where more
 //! one-sided triangles face down than up (a level exported with the other winding) or where
 //! most face along z (a level exported +Z up). A bad file or a level outside the scalar's
-//! range gets a message naming the file and the problem, a non-zero exit status and no output
-//! on stdout.
+//! range gets a message naming the file and the problem (a triangle by its index and its place
+//! in the file), a non-zero exit status and no output on stdout.
 
 use ballcast::Scalar;
 use ballcast::bvh::LeafSize;
