@@ -53,10 +53,21 @@ pub struct SceneHit<S> {
     #[doc(alias = "time_of_impact")]
     #[cfg_attr(feature = "serde", serde(with = "crate::interop::number"))]
     pub alpha: S,
-    /// The ball's centre at first contact (see [`Hit::position`](crate::Hit::position)).
+    /// The ball's centre at first contact (see [`Hit::position`](crate::Hit::position)): that
+    /// of the contact reported, triangle `index`'s. Where another triangle's contact rounds to
+    /// the same alpha, the smaller index is reported even if its contact comes a little later
+    /// by the unrounded fractions: then the position is off the first contact's by up to a
+    /// step of alpha times the path's length (in `I16F16`, 2^-16 × 50 = 7.6e-4 on a path 50
+    /// long), as alpha is.
     pub position: Vec3<S>,
     /// Unit contact normal; where several triangles are touched at the same alpha (within four
     /// steps of the scalar's resolution), the normalised sum of their normals in index order.
+    /// Four steps of alpha are four steps times the path's length apart along it: on a long
+    /// sweep in `I16F16` (2^-14 × 50 = 3 mm on a path 50 long) a small ball's contacts with
+    /// features that far apart are merged, and the normal mixes theirs (10 % of the contacts of
+    /// a ball of 0.01 with a sphere's edges and vertices on paths of 8.3 were more than 0.1 rad
+    /// off, the worst 0.2; on paths of 50, 0.46). Split long fixed-point sweeps into pieces of
+    /// a few units where the normal matters.
     pub normal: Vec3<S>,
     /// The feature touched on triangle `index` (the earliest of simultaneous contacts).
     pub contact: Contact,
