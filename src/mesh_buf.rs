@@ -84,6 +84,11 @@ impl<S: Scalar> MeshBuf<S> {
         Mesh::from_parts(&self.nodes, &self.triangles, &self.order, self.grid)
     }
 
+    /// The earliest contact along the sweep: [`Geometry::cast`] without importing the trait.
+    pub fn cast(&self, sweep: &Sweep<S>) -> Option<SceneHit<S>> {
+        self.mesh().cast(sweep)
+    }
+
     /// How many degenerate triangles the build skipped.
     pub fn skipped(&self) -> usize {
         self.skipped

@@ -8,8 +8,8 @@ mod meshes;
 
 use ballcast::import::weld;
 use ballcast::{
-    Cached, CompactMesh, CompactMeshBuf, Compound, Degenerates, Error, Geometry, Heightfield,
-    HeightfieldBuf, HeightfieldError, HeightfieldShape, MeshBuf, MeshError, Sweep, Triangle, Vec3,
+    Cached, CompactMesh, CompactMeshBuf, Compound, Degenerates, Error, Heightfield, HeightfieldBuf,
+    HeightfieldError, HeightfieldShape, MeshBuf, MeshError, Sweep, Triangle, Vec3,
 };
 use common::{Rng, Tolerance, v};
 use fixed::types::{I16F16, I32F32};

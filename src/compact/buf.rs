@@ -116,6 +116,11 @@ impl<S: Scalar> CompactMeshBuf<S> {
         )
     }
 
+    /// The earliest contact along the sweep: [`Geometry::cast`] without importing the trait.
+    pub fn cast(&self, sweep: &Sweep<S>) -> Option<SceneHit<S>> {
+        self.compact_mesh().cast(sweep)
+    }
+
     /// How many degenerate triangles the build skipped.
     pub fn skipped(&self) -> usize {
         self.skipped

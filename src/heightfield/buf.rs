@@ -74,6 +74,11 @@ impl<S: Scalar> HeightfieldBuf<S> {
             self.class,
         )
     }
+
+    /// The earliest contact along the sweep: [`Geometry::cast`] without importing the trait.
+    pub fn cast(&self, sweep: &Sweep<S>) -> Option<SceneHit<S>> {
+        self.heightfield().cast(sweep)
+    }
 }
 
 impl<S: Scalar> Geometry<S> for HeightfieldBuf<S> {
