@@ -23,7 +23,7 @@ pub(crate) use edges::off_line;
 /// centre (`None` for the face, whose normal is +y), the feature, and alpha unrounded, as a
 /// fraction `(num, den)` that rounds to alpha (`num.div(den)`), from which the contact's
 /// position is computed in one rounding.
-type Touch<S> = (S, Option<Vec3<S>>, Contact, (S, S));
+pub(crate) type Touch<S> = (S, Option<Vec3<S>>, Contact, (S, S));
 
 impl<S: Scalar> StandardTriangle<S> {
     /// The earliest contact of the sweep's ball with the triangle: its face (the course notes' test),
@@ -175,7 +175,7 @@ impl<S: Scalar> StandardTriangle<S> {
             && beta < S::ONE
             && (contains(self, xq, zq)
                 || self.within_seams(xq, zq, r)
-                || (r == S::ZERO && self.within_rounding(xq, zq, self.magnitude(p0, p1), p1 - p0)))
+                || (r == S::ZERO && self.ray_within_rounding(xq, zq, p0, p1)))
         {
             return Some((beta, None, Contact::Face, (r - p0.y, p1.y - p0.y)));
         }
@@ -203,11 +203,16 @@ impl<S: Scalar> StandardTriangle<S> {
     /// leaves), but an edge or vertex the ball passes within `r` of can.
     /// Starting outside the face region, the ball touches the triangle first where it touches
     /// one of them first.
-    /// The largest coordinate of the sweep's ends and of the triangle, in its frame.
-    fn magnitude(&self, p0: Vec3<S>, p1: Vec3<S>) -> S {
+    /// [`within_rounding`](Self::within_rounding) for a ray from `p0` to `p1` (in the frame),
+    /// at the largest coordinate of its ends and of the triangle: out of line, as rays are
+    /// rare and the face test of every ball passes by it.
+    #[cold]
+    #[inline(never)]
+    fn ray_within_rounding(&self, xq: S, zq: S, p0: Vec3<S>, p1: Vec3<S>) -> bool {
         let (x1, z1, x2) = self.shape();
         let ends = largest(p0.abs().max_element(), p1.abs().max_element(), S::ZERO);
-        largest(ends, largest(x1.abs(), x2, z1), S::ZERO)
+        let m = largest(ends, largest(x1.abs(), x2, z1), S::ZERO);
+        self.within_rounding(xq, zq, m, p1 - p0)
     }
 
     #[cold]

@@ -13,7 +13,7 @@
 //! if any, is a fresh one. For a lone triangle (every feature active, a convex set) the distance
 //! to the triangle only grows once it has grown at the start, so a ball let go meets nothing.
 
-use crate::contact::off_line;
+use crate::contact::{Touch, off_line};
 use crate::seam::seam_margin;
 use crate::{Contact, Scalar, StandardTriangle, Vec3};
 
@@ -55,8 +55,8 @@ impl<S: Scalar> Feature<S> {
 
 impl<S: Scalar> StandardTriangle<S> {
     /// For a sweep whose centre starts within `r` of the plane (`p0`, `d` in the standard frame,
-    /// from the front) and whose earliest edge or vertex contact is at alpha `first` with
-    /// `contact`: the alpha from which contacts count, if that contact is not one (the rule
+    /// from the front) and whose earliest edge or vertex contact is `first` (its alpha and
+    /// feature): the alpha from which contacts count, if that contact is not one (the rule
     /// above).
     #[cold]
     #[inline(never)]
@@ -65,7 +65,7 @@ impl<S: Scalar> StandardTriangle<S> {
         p0: Vec3<S>,
         d: Vec3<S>,
         r: S,
-        (first, contact): (S, Contact),
+        &(first, _, contact, _): &Touch<S>,
     ) -> Option<S> {
         // Held where the nearest feature it starts within r of, and does not move away from,
         // gave the contact: at alpha 0, or a little later where that feature's own test,

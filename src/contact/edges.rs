@@ -27,9 +27,7 @@ impl<S: Scalar> StandardTriangle<S> {
         for _ in 0..2 {
             let best = self.earliest(p0, d, r, from, cut)?;
             // Only a centre within r of the plane can start overlapping an edge or vertex.
-            match (from == S::ZERO && p0.y < r)
-                .then(|| self.clear_after(p0, d, r, (best.0, best.2)))
-            {
+            match (from == S::ZERO && p0.y < r).then(|| self.clear_after(p0, d, r, &best)) {
                 Some(Some(end)) => from = end,
                 _ => return Some(best),
             }
