@@ -111,7 +111,7 @@ pub(crate) use build::{BuildError, build, item, key_index, set_classes};
 pub use build::{nodes_for, nodes_for_leaves};
 pub(crate) use overlap::{overlapping, query_cells};
 pub(crate) use short::unit_pad;
-pub(crate) use traverse::{leaf_slots, leaves_along, rounding_pad};
+pub(crate) use traverse::{leaf_slots, leaves_along, ray_pad, rounding_pad};
 
 /// Most triangles in a leaf of any tree (a leaf reference holds its count in two bits).
 pub const LEAF: usize = 4;

@@ -293,6 +293,7 @@ fn grown_by<S: Scalar>(
     // 2^class, exactly.
     let seams = f64::from_bits(((1023 + class.min(31) as u32) as u64) << 52);
     crate::bvh::rounding_pad::<S>(r, big(d), magnitude)
+        + crate::bvh::ray_pad::<S>(r, magnitude)
         + (r / 64.0 + 4.0 * S::PRECISION.epsilon) * seams
 }
 

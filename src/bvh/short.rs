@@ -52,12 +52,13 @@ fn shift_up(v: i64, s: i32) -> Option<i64> {
 /// `EPSILON`, `2^-frac`), rounded up, for a radius of `r` units, a path whose largest component
 /// is `length` units and coordinates up to `magnitude` units: `r`, 64 units, 8 units per unit
 /// of the path's largest component, 3/16 unit per unit of the coordinates' magnitude and
-/// `3 · 2^-40` of the magnitude. `None` on overflow.
+/// `3 · 2^-40` of the magnitude; for a ray (`r` zero), 256 units more
+/// ([`ray_pad`](super::ray_pad)). `None` on overflow.
 pub(crate) fn unit_pad(r: i64, frac: u32, length: i64, magnitude: i64) -> Option<i64> {
     let f = frac as i32;
     let thrice = (magnitude <= i64::MAX / 3).then(|| 3 * magnitude)?;
     [
-        64,
+        if r == 0 { 64 + 256 } else { 64 },
         shift_up(length, f - 3)?,
         shift_up(thrice, f + 4)?,
         shift_up(thrice, 40)?,

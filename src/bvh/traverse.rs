@@ -31,6 +31,21 @@ pub(crate) fn rounding_pad<S: Scalar>(r: f64, length: f64, magnitude: f64) -> f6
         + (64.0 * eps * per_unit + 1.0 / (1u64 << 40) as f64) * 3.0 * magnitude
 }
 
+/// What a ray (radius zero) adds to [`rounding_pad`]: it meets a face grown by up to 16 times
+/// twice a height's rounding at its frame's coordinates (`StandardTriangle::within_rounding`),
+/// which lie within four times `magnitude`. Zero for a ball.
+pub(crate) fn ray_pad<S: Scalar>(r: f64, magnitude: f64) -> f64 {
+    if r != 0.0 {
+        return 0.0;
+    }
+    let eps = S::PRECISION.epsilon;
+    if S::PRECISION.relative {
+        128.0 * eps * (4.0 * magnitude).max(1.0)
+    } else {
+        256.0 * eps
+    }
+}
+
 /// The swept segment in grid units, with what every box test needs, worked out once per query
 /// so that a node costs only its own terms.
 pub(crate) struct Segment {
@@ -67,7 +82,7 @@ impl Segment {
         let mesh = grid.magnitude();
         let d = [p1[0] - p0[0], p1[1] - p0[1], p1[2] - p0[2]];
         let magnitude = big(p0).max(big(p1)).max(mesh);
-        let pad = rounding_pad::<S>(r, big(d), magnitude);
+        let pad = rounding_pad::<S>(r, big(d), magnitude) + ray_pad::<S>(r, magnitude);
         let seam = r / 64.0 + 4.0 * S::PRECISION.epsilon;
         let q0 = p0.map(|x| x * s);
         let d = d.map(|x| x * s);
