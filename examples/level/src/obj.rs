@@ -5,7 +5,8 @@
 //! ignored, materials ignored (their `.mtl` files are not read), a leading UTF-8 byte-order
 //! mark skipped. Before `tobj` reads it, the file is scanned for the faults a level must not
 //! pass over, so that the error names the line: a position that is not three numbers (or has a
-//! NaN or infinite one: `nan` and `inf` parse as numbers, or a w of zero), a face
+//! NaN or infinite one: `nan` and `inf` parse as numbers, or a w of zero, NaN or infinity, or
+//! one that divides a coordinate past any float), a face
 //! with fewer than three corners (which `tobj` would drop without a word), a corner whose
 //! vertex, texture or normal index is not a nonzero integer or names one not defined before it,
 //! a `#` comment after a position or face or a `\` continuation (neither is read), text
@@ -163,6 +164,16 @@ fn scan(text: &str, origins: &mut Origins) -> Result<Vec<FaceAt>, String> {
                 let w = (words.len() == 4).then(|| words[3].parse::<f64>());
                 if matches!(w, Some(Ok(w)) if w == 0.0) {
                     return Err(format!("line {at}: `{line}` has w = 0 (no position)"));
+                }
+                // A w that is NaN or infinite, or divides a coordinate past any float, leaves
+                // no finite position either.
+                if let Some(Ok(w)) = w
+                    && (!w.is_finite() || numbers.iter().any(|c| !(c / w).is_finite()))
+                {
+                    return Err(format!(
+                        "line {at}: `{line}` has w = {w}, which divides its position to no \
+                         finite one"
+                    ));
                 }
                 defined[0] += 1;
             }

@@ -186,15 +186,17 @@ fn a_gltf_node_name_with_a_line_break_stays_on_the_statistics_line() {
     assert!(source.lines().nth(2).unwrap().starts_with("use ballcast::"));
 }
 
-/// A position whose w divides it past f64's range is refused by the loader's last check,
-/// which names the face that uses it.
+/// A position whose w divides it past f64's range, or a w that is NaN or infinite, is refused
+/// at its own line (it passed the line check and was refused later, at the face using it).
 #[test]
-fn a_position_divided_into_infinity_by_its_w_is_named_at_its_faces_line() {
-    let text = format!("{SQUARE}v 1e300 0 0 1e-300\nf 1 2 3\n\nf 1 3 5\n");
-    let e = obj("w_infinite", &text).unwrap_err();
-    assert!(matches!(e.problem, Problem::NotFinite { triangle: 1 }));
-    let want = "w_infinite.obj: triangle 1 (line 8) has a NaN or infinite coordinate";
-    assert!(e.to_string().ends_with(want), "{e}");
+fn a_position_divided_into_infinity_by_its_w_is_refused_at_its_line() {
+    for w in ["1e-300", "nan", "inf"] {
+        let text = format!("{SQUARE}v 1e300 0 0 {w}\nf 1 2 3\n\nf 1 3 5\n");
+        let e = obj("w_infinite", &text).unwrap_err();
+        assert!(matches!(e.problem, Problem::Malformed(_)), "{e}");
+        let want = format!("line 5: `v 1e300 0 0 {w}` has w = ");
+        assert!(e.to_string().contains(&want), "{e}");
+    }
 }
 
 /// A build script that turns a coordinate into NaN after loading: the mesh build refuses the
