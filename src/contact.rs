@@ -198,11 +198,6 @@ impl<S: Scalar> StandardTriangle<S> {
         }
     }
 
-    /// [`cast_front`](Self::cast_front) for a ball moving away from the plane, its centre
-    /// starting in front within `r` of it: the face cannot be met (a ball that overlaps it
-    /// leaves), but an edge or vertex the ball passes within `r` of can.
-    /// Starting outside the face region, the ball touches the triangle first where it touches
-    /// one of them first.
     /// [`within_rounding`](Self::within_rounding) for a ray from `p0` to `p1` (in the frame),
     /// at the largest coordinate of its ends and of the triangle: out of line, as rays are
     /// rare and the face test of every ball passes by it.
@@ -215,6 +210,11 @@ impl<S: Scalar> StandardTriangle<S> {
         self.within_rounding(xq, zq, m, p1 - p0)
     }
 
+    /// [`cast_front`](Self::cast_front) for a ball moving away from the plane, its centre
+    /// starting in front within `r` of it: the face cannot be met (a ball that overlaps it
+    /// leaves), but an edge or vertex the ball passes within `r` of can.
+    /// Starting outside the face region, the ball touches the triangle first where it touches
+    /// one of them first.
     #[cold]
     #[inline(never)]
     fn cast_rising(&self, p0: Vec3<S>, p1: Vec3<S>, r: S, cut: Cut<S>) -> Option<Touch<S>> {
