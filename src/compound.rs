@@ -154,7 +154,7 @@ impl<A, B> Compound<A, B> {
         A: CompoundPart<S>,
         B: CompoundPart<S>,
     {
-        earliest_of(|acc, scan| self.offer_contacts(sweep, acc, scan))
+        earliest_of(sweep, |acc, scan| self.offer_contacts(sweep, acc, scan))
     }
 }
 

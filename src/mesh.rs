@@ -225,7 +225,7 @@ impl<'a, S: Scalar> Mesh<'a, S> {
     /// prepared triangles in input order, bit for bit, found in `O(log N)` node visits for a
     /// short sweep.
     pub fn cast(&self, sweep: &Sweep<S>) -> Option<SceneHit<S>> {
-        earliest_of(|acc, scan| self.offer(sweep, acc, scan))
+        earliest_of(sweep, |acc, scan| self.offer(sweep, acc, scan))
     }
 
     /// Offers the contacts of the triangles the tree reaches (all of them with `scan`); false

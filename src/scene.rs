@@ -54,26 +54,24 @@ pub struct SceneHit<S> {
     #[cfg_attr(feature = "serde", serde(with = "crate::interop::number"))]
     pub alpha: S,
     /// The ball's centre at first contact (see [`Hit::position`](crate::Hit::position)): that
-    /// of the contact reported, triangle `index`'s. Where another triangle's contact rounds to
-    /// the same alpha, the smaller index is reported even if its contact comes a little later
-    /// by the unrounded fractions: then the position is off the first contact's by up to a
-    /// step of alpha times the path's length (in `I16F16`, 2^-16 × 50 = 7.6e-4 on a path 50
-    /// long), as alpha is.
+    /// of the contact reported, triangle `index`'s. Where several triangles' contacts round to
+    /// the same alpha, the one whose position comes first along the path is reported, so the
+    /// position keeps `Hit::position`'s accuracy on long paths too.
     pub position: Vec3<S>,
-    /// Unit contact normal; where several triangles are touched at the same alpha (within four
-    /// steps of the scalar's resolution), the normalised sum of their normals in index order.
-    /// Four steps of alpha are four steps times the path's length apart along it: on a long
-    /// sweep in `I16F16` (2^-14 × 50 = 3 mm on a path 50 long) a small ball's contacts with
-    /// features that far apart are merged, and the normal mixes theirs (10 % of the contacts of
-    /// a ball of 0.01 with a sphere's edges and vertices on paths of 8.3 were more than 0.1 rad
-    /// off, the worst 0.2; on paths of 50, 0.46). Split long fixed-point sweeps into pieces of
-    /// a few units where the normal matters.
+    /// Unit contact normal; where several triangles are touched at the same moment (alphas
+    /// within four steps of the scalar's resolution and positions within twice
+    /// [`Precision::position_error`](crate::Precision::position_error) of each other), the
+    /// normalised sum of their normals in index order. On a convex mesh a face touched that
+    /// much later has a normal within `acos(1 - window / r)` of the first contact's: in
+    /// `I16F16`, where the window is 2.4e-4, a ball of 0.01 sees up to 0.16 rad between the
+    /// merged normal and the first contact's (a sphere's edges and vertices on paths of 50).
     pub normal: Vec3<S>,
     /// The feature touched on triangle `index` (the earliest of simultaneous contacts).
     pub contact: Contact,
-    /// Index of the touched triangle, in the order pushed (the smallest of exact ties).
+    /// Index of the touched triangle, in the order pushed: among equal alphas, the contact
+    /// first along the path, the smallest index where those are equal too.
     pub index: usize,
-    /// The distinct planes touched at this alpha (normals of the simultaneous contacts, in
+    /// The distinct planes touched at this moment (normals of the simultaneous contacts, in
     /// index order, nearly parallel ones once): what a response must not move into. The first
     /// is always `Some`.
     pub planes: [Option<Vec3<S>>; PLANES],
@@ -244,12 +242,13 @@ impl<S: Scalar, const N: usize> Scene<S, N> {
 
     /// The earliest contact of the sweep with any triangle, or `None`.
     ///
-    /// Contacts within four steps of the scalar's resolution of the earliest alpha arrive
-    /// together: their normals are summed in index order and normalised, so a ball landing on a
-    /// seam gets one well-defined normal, and their distinct planes are listed for a response.
-    /// The rule depends on the set of contacts, not on the order they are found in.
+    /// Contacts within four steps of the scalar's resolution of the earliest alpha, and within
+    /// twice the position's rounding of its position, arrive together: their normals are
+    /// summed in index order and normalised, so a ball landing on a seam gets one well-defined
+    /// normal, and their distinct planes are listed for a response ([`SceneHit`]). The rule
+    /// depends on the set of contacts, not on the order they are found in.
     pub fn cast(&self, sweep: &Sweep<S>) -> Option<SceneHit<S>> {
-        earliest(|acc| self.offer(sweep, acc))
+        earliest(sweep, |acc| self.offer(sweep, acc))
     }
 
     /// Offers the contact of every triangle whose box the path's grown box meets.
@@ -324,7 +323,7 @@ impl<S: Scalar, const N: usize> Geometry<S> for Scene<S, N> {
 /// small scenes firmware keeps in flash.
 impl<S: Scalar> Geometry<S> for [StandardTriangle<S>] {
     fn cast(&self, sweep: &Sweep<S>) -> Option<SceneHit<S>> {
-        earliest(|acc| {
+        earliest(sweep, |acc| {
             self.offer_contacts(sweep, acc, true);
         })
     }

@@ -6,43 +6,9 @@ mod common;
 mod meshes;
 
 use ballcast::{CompactMesh, Degenerates, Sweep};
-use common::{P, Rng, Tolerance, add, cross, dot, norm, scale, sub, v};
+use common::{Rng, Tolerance, add, cross, dot, norm, scale, sub, v};
 use fixed::types::{I16F16, I32F32};
-use meshes::{build, tri};
-
-/// A closed sphere of radius `radius` about the origin: an octahedron's faces split `n` times
-/// into four, the new vertices put on the sphere. Fronts outward.
-fn sphere(radius: f64, n: usize) -> Vec<[P; 3]> {
-    let on = |p: P| scale(p, radius / norm(p));
-    let (x, y, z) = ([1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]);
-    let neg = |p: P| scale(p, -1.0);
-    let mut tris: Vec<[P; 3]> = Vec::new();
-    for (a, b) in [(x, z), (z, neg(x)), (neg(x), neg(z)), (neg(z), x)] {
-        tris.push([a, b, y]);
-        tris.push([b, a, neg(y)]);
-    }
-    for _ in 0..n {
-        let mut finer = Vec::new();
-        for [a, b, c] in tris {
-            let mid = |p: P, q: P| scale(add(p, q), 0.5);
-            let (ab, bc, ca) = (mid(a, b), mid(b, c), mid(c, a));
-            finer.extend([[a, ab, ca], [ab, b, bc], [ca, bc, c], [ab, bc, ca]]);
-        }
-        tris = finer;
-    }
-    let tris: Vec<[P; 3]> = tris.into_iter().map(|t| t.map(on)).collect();
-    // Fronts outward: `(b - a) × (c - a)` along the centre's direction.
-    tris.into_iter()
-        .map(|[a, b, c]| {
-            let n = cross(sub(b, a), sub(c, a));
-            if dot(n, add(add(a, b), c)) < 0.0 {
-                [a, c, b]
-            } else {
-                [a, b, c]
-            }
-        })
-        .collect()
-}
+use meshes::{build, sphere, tri};
 
 /// Rays from 20 to 40 units out, aimed at every kind of point where faces meet on a sphere of
 /// radius 10 (512 triangles): a vertex, the middle of an edge, or a random point along an

@@ -161,7 +161,7 @@ impl<G: Cacheable<S>, S: Scalar, const N: usize, C: Borrow<TriangleCache<S, N>>>
     /// The earliest contact along the sweep: the geometry's own answer, bit for bit (the
     /// same as [`Geometry::cast`], without importing the trait).
     pub fn cast(&self, sweep: &Sweep<S>) -> Option<SceneHit<S>> {
-        earliest_of(|acc, scan| self.offer_contacts(sweep, acc, scan))
+        earliest_of(sweep, |acc, scan| self.offer_contacts(sweep, acc, scan))
     }
 
     /// The geometry.

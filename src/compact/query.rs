@@ -24,7 +24,7 @@ impl<S: Scalar, I: MeshIndex> CompactMesh<'_, S, I> {
     /// `f64` is software (a Cortex-M) the `f64` tests cost more than the preparations they
     /// save. Either way the answer is the same.
     pub(super) fn cast_culled(&self, sweep: &Sweep<S>, integer: bool) -> Option<SceneHit<S>> {
-        earliest_of(|acc, scan| self.offer(sweep, acc, scan, integer, ()))
+        earliest_of(sweep, |acc, scan| self.offer(sweep, acc, scan, integer, ()))
     }
 
     /// Offers the contacts of the triangles the tree reaches, culled as

@@ -110,7 +110,9 @@ fn integer_culling_answers_alike<S: Scalar>() {
         // once preparing and keeping, once from what was kept.
         for integer in [true, false, true, false] {
             let c = cache.slots();
-            let z = earliest_of(|acc, scan| compact.offer(&sweep, acc, scan, integer, c));
+            let z = earliest_of(&sweep, |acc, scan| {
+                compact.offer(&sweep, acc, scan, integer, c)
+            });
             assert_eq!(format!("{z:?}"), format!("{x:?}"), "cached");
         }
         // The integer box does pass triangles by (the test would prove nothing otherwise).

@@ -325,7 +325,7 @@ mod tests {
             };
             clear += grid.clear() as usize;
             let mut taken = true;
-            let hit = earliest(|acc| taken &= grid.offer(&field, &sweep, acc, ()));
+            let hit = earliest(&sweep, |acc| taken &= grid.offer(&field, &sweep, acc, ()));
             if taken {
                 compared += 1;
                 assert_eq!(
@@ -337,7 +337,8 @@ mod tests {
                 // preparing and keeping, once from what was kept.
                 for _ in 0..2 {
                     let c = cache.slots();
-                    let cached = earliest(|acc| taken &= grid.offer(&field, &sweep, acc, c));
+                    let cached =
+                        earliest(&sweep, |acc| taken &= grid.offer(&field, &sweep, acc, c));
                     assert_eq!(format!("{cached:?}"), format!("{walk:?}"), "cached");
                 }
             }

@@ -35,7 +35,7 @@ impl<S: Scalar> Heightfield<'_, S> {
     /// order, bit for bit, simultaneous contacts merged as in [`Scene::cast`](crate::Scene::cast).
     /// Its cost grows with the cells the grown path crosses.
     pub fn cast(&self, sweep: &Sweep<S>) -> Option<SceneHit<S>> {
-        earliest(|acc| self.offer(sweep, acc, ()))
+        earliest(sweep, |acc| self.offer(sweep, acc, ()))
     }
 
     /// Offers the contacts of the triangles under the path, taking and keeping prepared

@@ -272,7 +272,7 @@ fn cover<S: Scalar>(
         let Ok(edge) = Sweep::new(a, b, r) else {
             return;
         };
-        earliest(|acc| {
+        earliest(&edge, |acc| {
             bvh::leaves_along(nodes, grid, &edge, acc, |_, slots, _| {
                 slots.for_each(&mut *f)
             });
