@@ -26,8 +26,9 @@ pub(crate) const TIES: usize = 8;
 /// ball, and a slide uses at most this many.
 pub const PLANES: usize = 4;
 
-/// A tied contact: its triangle's index, alpha, normal, feature and position.
-type Tie<S> = (usize, S, Vec3<S>, Contact, Vec3<S>);
+/// A tied contact: its triangle's index, alpha, normal, feature and position along the path
+/// ([`Window::along`]).
+type Tie<S> = (usize, S, Vec3<S>, Contact, S);
 
 /// An accumulator for the contacts of one sweep, fed in any order with [`offer`](Self::offer).
 /// (Public only to name it in [`CompoundPart`](crate::compound::CompoundPart)'s hidden method:
@@ -38,20 +39,20 @@ pub struct Earliest<S: Scalar> {
     /// Added to the index of every contact offered: where the current part of a
     /// [`Compound`](crate::Compound) starts in its index space.
     base: usize,
-    /// The contacts within the alpha window as `(index, alpha, normal, feature, position)`: all
-    /// the merge needs, so that a firmware's stack pays for no more.
+    /// The contacts within the alpha window as `(index, alpha, normal, feature, along)`: all the
+    /// merge needs, so that a firmware's stack pays for no more.
     ties: Vec<Tie<S>, TIES>,
     /// The sweep's direction and the position window.
     window: Window<S>,
-    /// Set on the second visit: the first visit's reach and earliest position (the window no
-    /// longer moves).
-    fixed: Option<(S, Vec3<S>)>,
+    /// Set on the second visit: the first visit's reach and earliest position along the path
+    /// (the window no longer moves).
+    fixed: Option<(S, S)>,
     /// A tied contact was dropped for room while the window could still shrink.
     lossy: bool,
 }
 
 impl<S: Scalar> Earliest<S> {
-    fn new(window: Window<S>, fixed: Option<(S, Vec3<S>)>) -> Self {
+    fn new(window: Window<S>, fixed: Option<(S, S)>) -> Self {
         Self {
             best: None,
             base: 0,
@@ -84,14 +85,15 @@ impl<S: Scalar> Earliest<S> {
         }
         let index = self.base.saturating_add(index);
         // The second visit knows the earliest position: contacts beyond the window never tie.
+        let along = self.window.along(hit.position);
         if let Some((_, at)) = self.fixed
-            && !self.window.near(hit.position, at)
+            && !self.window.near(along, at)
         {
             return;
         }
         let first = self.best.is_none_or(|(i, b)| {
             hit.alpha < b.alpha
-                || (hit.alpha == b.alpha && self.window.before(hit.position, b.position, index < i))
+                || (hit.alpha == b.alpha && self.window.before(along, b.position, index < i))
         });
         if first {
             self.best = Some((index, hit));
@@ -111,7 +113,7 @@ impl<S: Scalar> Earliest<S> {
         // `insert`: its index assertion would leave a panic path the optimiser cannot remove.)
         if self
             .ties
-            .push((index, hit.alpha, hit.normal, hit.contact, hit.position))
+            .push((index, hit.alpha, hit.normal, hit.contact, along))
             .is_ok()
             && let Some(tail) = self.ties.get_mut(at..)
             && !tail.is_empty()
@@ -133,8 +135,8 @@ impl<S: Scalar> Earliest<S> {
         // An edge or vertex in the plane of a face touched at the same moment adds nothing but
         // its rounding (a ghost bump, e.g. an open edge where neighbours meet in a T-junction):
         // the face speaks for it.
-        let window = self.window;
-        let ties = || self.ties.iter().filter(|t| window.near(t.4, position));
+        let (window, at) = (self.window, self.window.along(position));
+        let ties = || self.ties.iter().filter(|t| window.near(t.4, at));
         let face_has =
             |n: Vec3<S>| ties().any(|&(_, _, m, c, _)| c == Contact::Face && same_plane(m, n));
         let mut planes = [None; PLANES];
@@ -188,7 +190,7 @@ pub(crate) fn earliest<S: Scalar>(
         && let Some((_, best)) = acc.best
     {
         // The second run in the first's place: one accumulator on the stack.
-        acc = Earliest::new(window, Some((acc.reach(), best.position)));
+        acc = Earliest::new(window, Some((acc.reach(), window.along(best.position))));
         visit(&mut acc);
     }
     acc.finish()
@@ -233,10 +235,17 @@ impl<S: Scalar> Window<S> {
         }
     }
 
-    /// Whether a contact at `a` comes before one at `b` of equal alpha: lies first along the
-    /// path's largest axis, or at the same point there and `smaller` (its index is).
-    fn before(&self, a: Vec3<S>, b: Vec3<S>, smaller: bool) -> bool {
-        let (a, b) = (component(a, self.axis), component(b, self.axis));
+    /// A position's coordinate on the path's largest axis: positions on the path differ in
+    /// the others by no more (each is `p0 + f (p1 - p0)` for its fraction `f`, rounded).
+    fn along(&self, position: Vec3<S>) -> S {
+        component(position, self.axis)
+    }
+
+    /// Whether a contact at `a` along the path comes before one at position `b` of equal
+    /// alpha: lies first along the path's largest axis, or at the same point there and
+    /// `smaller` (its index is).
+    fn before(&self, a: S, b: Vec3<S>, smaller: bool) -> bool {
+        let b = self.along(b);
         if a == b {
             smaller
         } else {
@@ -244,10 +253,9 @@ impl<S: Scalar> Window<S> {
         }
     }
 
-    /// Whether positions `a` and `b` lie within the window of each other on every axis.
-    fn near(&self, a: Vec3<S>, b: Vec3<S>) -> bool {
-        let d = (a - b).abs();
-        d.x <= self.apart && d.y <= self.apart && d.z <= self.apart
+    /// Whether two positions along the path lie within the window of each other.
+    fn near(&self, a: S, b: S) -> bool {
+        (a - b).abs() <= self.apart
     }
 }
 
