@@ -6,10 +6,10 @@
 //! visit: the earliest is the smallest alpha; among equal alphas, the contact whose position
 //! (the ball's centre at contact, formed from the unrounded fraction) lies first along the
 //! path, then the smallest index. The contacts *tied* with it are those that could have come
-//! first but for rounding: alpha within [`tie`] of its alpha, and position within four height
-//! roundings of its position ([`Window`]: on a long fixed-point path four steps of alpha are far
-//! apart along it, and contacts that far apart are not simultaneous); their normals are summed
-//! in index order. [`Earliest`] keeps the contacts within the alpha window with the [`TIES`]
+//! first but for rounding: alpha within [`tie`] of its alpha, and position within twice the
+//! position's rounding of its position ([`Window`]: on a long fixed-point path four steps of
+//! alpha are far apart along it, and contacts that far apart are not simultaneous); their
+//! normals are summed in index order. [`Earliest`] keeps the contacts within the alpha window with the [`TIES`]
 //! smallest indices in a fixed buffer; in the rare case that it had to drop one while the
 //! window was still moving, [`earliest`] visits once more with the earliest contact known,
 //! which makes the kept set exact.
