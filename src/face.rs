@@ -48,7 +48,13 @@ pub(crate) fn face_point<S: Scalar>(s: &StandardSweep<S>) -> Option<(S, S, S)> {
     if y1 >= r {
         return None;
     }
-    let beta = S::div(r - y0, y1 - y0);
+    // Starting at height r, the ball touches at once: zero, not the −0 of a float's zero over
+    // a negative drop (alpha is reported in [0, 1), its bits hashed by lockstep peers).
+    let beta = if y0 == r {
+        S::ZERO
+    } else {
+        S::div(r - y0, y1 - y0)
+    };
     let xq = p0.x + beta.mul(p1.x - p0.x);
     let zq = p0.z + beta.mul(p1.z - p0.z);
     Some((beta, xq, zq))

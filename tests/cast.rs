@@ -4,7 +4,7 @@
 
 mod common;
 
-use ballcast::{Contact, Features, Scalar, StandardTriangle, Sweep, Triangle, Vec3};
+use ballcast::{Contact, Features, Scalar, Scene, StandardTriangle, Sweep, Triangle, Vec3};
 use common::{Case, P, Rng, Tolerance, angle, back, distance_to_triangle, v};
 use fixed::types::{I16F16, I32F32};
 
@@ -428,6 +428,35 @@ fn grazing_face_contact_stays_at_alphas_point<S: Tolerance>() {
     );
 }
 
+/// A ball resting at exactly its radius above a face and moving into it is met at once, with
+/// alpha `+0`: floats once gave `-0.0` (zero over the negative drop), a different bit pattern
+/// for a peer that hashes alphas, and outside the documented `[0, 1)` by `total_cmp`.
+fn resting_ball_is_met_at_plus_zero<S: Tolerance>() {
+    let t = Triangle::new(
+        v::<S>([-4.0, 0.0, -4.0]),
+        v([-4.0, 0.0, 4.0]),
+        v([4.0, 0.0, 0.0]),
+    );
+    let st = StandardTriangle::new(&t).unwrap();
+    let mut scene: Scene<S, 1> = Scene::new();
+    scene.push(t).unwrap();
+    for end in [[0.0, -1.0, 0.0], [1.0, -0.5, 0.3], [-2.0, -0.001, 1.0]] {
+        let sweep = Sweep::new(v::<S>([0.0, 0.5, 0.0]), v(end), S::from_f64(0.5)).unwrap();
+        let alphas = [
+            st.cast(&sweep).map(|h| h.alpha),
+            scene.cast(&sweep).map(|h| h.alpha),
+        ];
+        for alpha in alphas {
+            let alpha = alpha.expect("met").to_f64();
+            assert!(
+                alpha == 0.0 && alpha.is_sign_positive(),
+                "{}: alpha {alpha:?} to {end:?}",
+                S::NAME
+            );
+        }
+    }
+}
+
 macro_rules! per_scalar {
     ($($m:ident: $t:ty),*) => {$(mod $m {
         use super::*;
@@ -444,6 +473,8 @@ macro_rules! per_scalar {
             let (face, all) = position_is_precise::<$t>(1_000_000);
             println!("{}: contact position error along the normal over 10^6 casts {face:.3e} (faces), {all:.3e} (all)", <$t>::NAME);
         }
+        #[test]
+        fn resting_ball_is_met_at_plus_zero() { super::resting_ball_is_met_at_plus_zero::<$t>() }
         #[test]
         fn grazing_face_contact_stays_at_alphas_point() {
             super::grazing_face_contact_stays_at_alphas_point::<$t>()
