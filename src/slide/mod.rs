@@ -5,7 +5,7 @@
 //! 1. Sweep the remaining motion; without contact, travel all of it.
 //! 2. Travel to the contact, then step a *skin* off along the contact normal ([`skin`]).
 //! 3. Collect every plane touched so far in this call, including all planes touched at the same
-//!    moment ([`SceneHit::planes`]): a ball pushed into a corner meets both walls at once.
+//!    moment ([`SceneHit::planes`](crate::SceneHit::planes)): a ball pushed into a corner meets both walls at once.
 //! 4. Constrain what is left of the motion by all of them at once: remove the part into one
 //!    plane if that leaves it clear of the others; else follow the crease of two planes if
 //!    that does; else stop. Stop too when what is left points against the requested

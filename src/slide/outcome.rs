@@ -5,6 +5,8 @@ use super::rules::{Planes, add_planes, constrain, holds};
 use super::{MAX_SLIDES, slope_limit};
 use crate::{Contact, Error, Input, Scalar, SceneHit, Vec3, check};
 use heapless::Vec;
+#[cfg(doc)]
+use {super::Slider, super::move_and_slide};
 
 /// The outcome of [`move_and_slide`]: a plain `Copy` struct.
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
