@@ -278,6 +278,27 @@ fn f32_values_read_as_typed() {
     assert_eq!(e.to_string(), format!("the radius {tiny} is negative"));
 }
 
+/// A ball too small at any coordinates is refused when it is made, not at its first slide: a
+/// zero radius, or one below the smallest the response accepts at the origin. (`Slider::new`
+/// took both, and every slide then failed.) A radius fine at the origin is taken.
+fn slider_refuses_a_radius_too_small_anywhere<S: Scalar>() {
+    let min = ballcast::slide::min_radius(S::ZERO);
+    for r in [S::ZERO, S::EPSILON, min - S::EPSILON] {
+        assert_eq!(
+            Slider::new(r),
+            Err(Error::RadiusTooSmall {
+                radius: r.to_f64(),
+                min: min.to_f64(),
+                extent: 0.0
+            })
+        );
+    }
+    let ball = Slider::new(min).unwrap();
+    let scene: Scene<S, 1> = Scene::new();
+    let z = v::<S>([0.0; 3]);
+    assert!(ball.slide(&scene, z, v([1.0, 0.0, 0.0])).is_ok());
+}
+
 macro_rules! per_scalar {
     ($($m:ident: $t:ty),*) => {$(mod $m {
         #[allow(unused_imports)] // the fixed-point types, unused where $t is a float
@@ -290,6 +311,9 @@ macro_rules! per_scalar {
             super::out_of_range_vertex_gives_value_and_limit::<$t>()
         }
         #[test] fn radius_errors_give_the_radius() { super::radius_errors_give_the_radius::<$t>() }
+        #[test] fn slider_refuses_a_radius_too_small_anywhere() {
+            super::slider_refuses_a_radius_too_small_anywhere::<$t>()
+        }
         #[test] fn each_argument_is_named() { super::each_argument_is_named::<$t>() }
     })*};
 }

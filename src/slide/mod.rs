@@ -168,7 +168,7 @@ pub fn move_and_slide<S: Scalar, G: Geometry<S> + ?Sized>(
     displacement: Vec3<S>,
     radius: S,
 ) -> Result<Slide<S>, Error> {
-    Slider::new(radius)?.slide(scene, position, displacement)
+    Slider::unchecked_size(radius)?.slide(scene, position, displacement)
 }
 
 /// [`move_and_slide`] with `ball`, ending at the first contact `stop` (a ground probe's) stops at.

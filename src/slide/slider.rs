@@ -1,7 +1,7 @@
 //! A ball's settings: its radius, its skin and the steepest slope it can be carried up.
 
 use super::rules::{FloorStop, magnitude};
-use super::{Floor, Slide, run, skin, slope_limit};
+use super::{Floor, Slide, min_radius, run, skin, slope_limit};
 use crate::{Contact, Error, Geometry, Input, Scalar, SceneHit, Sweep, Vec3, check};
 
 /// A ball's settings for [`Slider::slide`]: its radius and, optionally, its own skin and a
@@ -29,8 +29,27 @@ pub struct Slider<S> {
 impl<S: Scalar> Slider<S> {
     /// A ball of `radius` with the default [`skin`] and no slope limit.
     ///
-    /// Errors: [`Error::NaN`], [`Error::OutOfRange`], [`Error::NegativeRadius`].
+    /// Errors: [`Error::NaN`], [`Error::OutOfRange`], [`Error::NegativeRadius`], and
+    /// [`Error::RadiusTooSmall`] (with `extent` zero) for a radius too small at any coordinates:
+    /// below [`min_radius`] at the origin, zero among them. A radius that is only too small
+    /// where the ball goes is refused by the slide that takes it there.
     pub fn new(radius: S) -> Result<Self, Error> {
+        let ball = Self::unchecked_size(radius)?;
+        let min = min_radius(S::ZERO);
+        if ball.radius < min {
+            return Err(Error::RadiusTooSmall {
+                radius: radius.to_f64(),
+                min: min.to_f64(),
+                extent: 0.0,
+            });
+        }
+        Ok(ball)
+    }
+
+    /// [`new`](Self::new) without the check of the radius's size, for
+    /// [`move_and_slide`](super::move_and_slide), which reports a radius too small at the
+    /// ball's coordinates.
+    pub(super) fn unchecked_size(radius: S) -> Result<Self, Error> {
         Ok(Self {
             radius: check::radius(radius)?,
             skin: None,
