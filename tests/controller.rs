@@ -540,6 +540,51 @@ fn a_character_rebuilt_from_its_state_walks_on_as_the_original<S: Tolerance>() {
     assert_eq!(bits(&other), bits(&me), "{}", S::NAME);
 }
 
+/// A floor put back with a normal that is not a unit vector (the cross product of a slope's
+/// edges, (1, 2, 0) for a slope of 1 in 2) walks as the same floor with its unit normal: it
+/// walked straight up at twice the wished speed (the walk rejected the wish from the normal
+/// as if it were a unit vector).
+fn set_floor_with_a_normal_longer_than_one_walks_as_with_its_unit<S: Tolerance>() {
+    let mut s: Scene<S, 2> = Scene::new();
+    let y = |x: f64| -0.5 * x;
+    let (a, b) = ([-20.0, y(-20.0), -20.0], [20.0, y(20.0), 20.0]);
+    s.push(Triangle::new(v(a), v([-20.0, y(-20.0), 20.0]), v(b)))
+        .unwrap();
+    s.push(Triangle::new(v(a), v(b), v([20.0, y(20.0), -20.0])))
+        .unwrap();
+    let long = v::<S>([1.0, 2.0, 0.0]);
+    let unit = long.try_normalize().unwrap();
+    let start = v([0.0, 0.5 * 5f64.sqrt() + 0.001, 0.0]);
+    let (wish, gravity, dt) = (
+        v([-3.0, 0.0, 0.0]),
+        v([0.0, -9.81, 0.0]),
+        S::from_f64(1.0 / 60.0),
+    );
+    let walk = |normal: Vec3<S>| {
+        let mut me = Character::new(start, S::from_f64(0.5)).unwrap();
+        let floor = ballcast::slide::Floor {
+            normal,
+            position: start,
+            index: 0,
+            contact: ballcast::Contact::Face,
+        };
+        me.set_floor(Some(floor)).unwrap();
+        assert_eq!(me.floor_normal(), Some(unit), "{}", S::NAME);
+        me.update(&s, wish, gravity, dt).unwrap();
+        me
+    };
+    let (by_unit, by_long) = (walk(unit), walk(long));
+    assert_eq!(by_long.position, by_unit.position, "{}", S::NAME);
+    assert_eq!(by_long.velocity, by_unit.velocity, "{}", S::NAME);
+    // Up the slope at the wish's pace along it, not straight up.
+    assert!(
+        by_long.velocity.x < S::from_f64(-2.0),
+        "{}: {:?}",
+        S::NAME,
+        by_long.velocity
+    );
+}
+
 macro_rules! per_scalar {
     ($($m:ident: $t:ty),*) => {$(mod $m {
         #[allow(unused_imports)]
@@ -575,6 +620,10 @@ macro_rules! per_scalar {
         #[test]
         fn a_character_rebuilt_from_its_state_walks_on_as_the_original() {
             super::a_character_rebuilt_from_its_state_walks_on_as_the_original::<$t>();
+        }
+        #[test]
+        fn set_floor_with_a_normal_longer_than_one_walks_as_with_its_unit() {
+            super::set_floor_with_a_normal_longer_than_one_walks_as_with_its_unit::<$t>();
         }
         #[test]
         fn a_negative_slope_cosine_is_refused_where_given() {

@@ -200,16 +200,31 @@ impl<S: Scalar> Character<S> {
     /// frame to the next besides its settings, so a character rebuilt with the same settings
     /// from a saved game or a lockstep peer's state walks on bit for bit. (A rebuilt character
     /// without its floor starts in the air, and its next frames differ.) The floor's normal,
-    /// contact and index are taken; its position is the character's own.
+    /// contact and index are taken; its position is the character's own. A normal of any
+    /// other length than one (a cross product of the floor's edges, say) is taken as its unit
+    /// vector; one that is a unit vector already ([`Vec3::is_normalized`], as `floor` gives
+    /// it) is kept bit for bit.
     ///
     /// Errors: [`Error::NaN`], [`Error::OutOfRange`] or [`Error::ZeroVector`] for a normal that
     /// is NaN, beyond `±`[`Scalar::LIMIT`] or zero ([`Input::Floor`]); [`Error::OutOfRange`]
     /// with [`Input::FloorFacing`] for one facing down from `up`. The character is left as it
     /// was.
     pub fn set_floor(&mut self, floor: Option<Floor<S>>) -> Result<(), Error> {
-        if let Some(f) = floor {
-            super::floor_normal(f.normal, self.unit_up())?;
-        }
+        let floor = match floor {
+            Some(f) => {
+                let unit = super::floor_normal(f.normal, self.unit_up())?;
+                // The walk takes the floor's normal as a unit vector (it rejects the wish from
+                // it): with the normal (1, 2, 0) of a 27° slope, a walk up it went straight up
+                // at twice the wished speed.
+                let normal = if f.normal.is_normalized() {
+                    f.normal
+                } else {
+                    unit
+                };
+                Some(Floor { normal, ..f })
+            }
+            None => None,
+        };
         self.floor = floor;
         Ok(())
     }
