@@ -284,15 +284,26 @@ fn typed<const N: usize>(values: [f64; N]) -> [Typed; N] {
     values.map(|v| Typed(v, narrow && v.abs() < WHOLE))
 }
 
-/// A value, printed as the `f32` it is (true) or as itself.
+/// `value` as an error message prints it: its shortest digits, in exponent form where plain
+/// digits would run long (see [`Typed`]).
+pub(crate) fn shown(value: f64) -> impl fmt::Display {
+    Typed(value, false)
+}
+
+/// A value, printed as the `f32` it is (true) or as itself: in exponent form where plain
+/// digits would run long (from 10^21 up, and below 10^-7, where JavaScript switches too), so
+/// that a radius of 1e300 reads `1e300`, not a line of 301 digits.
 struct Typed(f64, bool);
 
 impl fmt::Display for Typed {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        if self.1 {
-            write!(f, "{}", self.0 as f32)
-        } else {
-            write!(f, "{}", self.0)
+        let a = self.0.abs();
+        let long = a >= 1e21 || (a != 0.0 && a < 1e-7);
+        match (self.1, long) {
+            (true, false) => write!(f, "{}", self.0 as f32),
+            (true, true) => write!(f, "{:e}", self.0 as f32),
+            (false, false) => write!(f, "{}", self.0),
+            (false, true) => write!(f, "{:e}", self.0),
         }
     }
 }

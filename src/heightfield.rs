@@ -45,6 +45,7 @@ mod walk;
 #[cfg(feature = "alloc")]
 pub use buf::HeightfieldBuf;
 
+use crate::error::shown;
 use crate::{Error, Features, Scalar, StandardTriangle, Triangle, Vec3};
 use core::fmt;
 
@@ -198,6 +199,7 @@ impl fmt::Display for HeightfieldError {
             ),
             Self::TooMany => f.write_str("more than 2^31 triangles"),
             Self::Spacing { value } => {
+                let value = shown(*value);
                 write!(f, "heightfield spacing {value} is not positive and finite")
             }
             Self::Unit { value: 0.0 } => f.write_str(
@@ -206,26 +208,34 @@ impl fmt::Display for HeightfieldError {
             ),
             Self::Unit { value } => write!(
                 f,
-                "heightfield height unit {value} is not a finite nonzero step"
+                "heightfield height unit {} is not a finite nonzero step",
+                shown(*value)
             ),
             Self::Origin { value } => {
+                let value = shown(*value);
                 write!(f, "heightfield origin coordinate {value} is not finite")
             }
-            Self::OutOfRange { value, limit } => write!(
-                f,
-                "heightfield reaches {value} (origin plus cells times spacing, or heights times \
+            Self::OutOfRange { value, limit } => {
+                let (value, limit) = (shown(*value), shown(*limit));
+                write!(
+                    f,
+                    "heightfield reaches {value} (origin plus cells times spacing, or heights times \
                  the height unit), beyond the scalar's safe range [-{limit}, {limit}]"
-            ),
+                )
+            }
             Self::Sides { count } => write!(
                 f,
                 "heightfield of {count} cells along a side: more than the scalar counts exactly"
             ),
-            Self::Fine { spacing, least } => write!(
-                f,
-                "heightfield cells of side {spacing} are within the scalar's rounding at the \
+            Self::Fine { spacing, least } => {
+                let (spacing, least) = (shown(*spacing), shown(*least));
+                write!(
+                    f,
+                    "heightfield cells of side {spacing} are within the scalar's rounding at the \
                  grid's coordinates: they need a side above {least} there (move the grid \
                  nearer the origin, or use a wider scalar)"
-            ),
+                )
+            }
             Self::Triangle { error, .. } => write!(f, "heightfield {error}"),
         }
     }

@@ -269,13 +269,46 @@ fn f32_values_read_as_typed() {
     };
     assert_eq!(
         e.to_string(),
-        "the radius 0.000000000000042632564 is below 0.00000000000004263256414560601, the \
-         smallest the scalar resolves at coordinates up to 3 (where the ball is or goes)"
+        "the radius 4.2632564e-14 is below 4.263256414560601e-14, the smallest the scalar \
+         resolves at coordinates up to 3 (where the ball is or goes)"
     );
     // A subnormal `f32` in its `f64` digits: as an `f32` it printed 1e-45, 40 % off.
     let tiny = -f64::from(f32::from_bits(1));
     let e = Error::NegativeRadius { value: tiny };
-    assert_eq!(e.to_string(), format!("the radius {tiny} is negative"));
+    assert_eq!(e.to_string(), format!("the radius {tiny:e} is negative"));
+}
+
+/// Huge and tiny values read in exponent form, as JavaScript prints them (from 10^21 up, below
+/// 10^-7): a radius of 1e300 read as 301 digits, and f32::MAX as 39.
+#[test]
+fn huge_and_tiny_values_read_in_exponent_form() {
+    let p = Vec3::new(0.0f64, 0.0, 0.0);
+    let e = Sweep::new(p, p, 1e300).unwrap_err();
+    assert_eq!(
+        e.to_string(),
+        "the radius is 1e300, outside the accepted range [0, 9007199254740992]"
+    );
+    let e = Sweep::new(p, p, -1e-300).unwrap_err();
+    assert_eq!(e.to_string(), "the radius -1e-300 is negative");
+    let q = Vec3::new(f32::MAX, 0.0, 0.0);
+    let e = Sweep::new(Vec3::ZERO, q, 0.5f32).unwrap_err();
+    assert_eq!(
+        e.to_string(),
+        "a coordinate of the end is 3.4028234663852886e38, outside the accepted range \
+         [-16777216, 16777216]"
+    );
+    let shape = ballcast::HeightfieldShape {
+        origin: Vec3::new(0.0f64, 0.0, 0.0),
+        spacing: 1e300,
+        unit: 1.0,
+        columns: 1,
+        rows: 1,
+    };
+    let e = ballcast::Heightfield::build(shape, &[0; 4], |_, _| false, &mut [0; 1]).unwrap_err();
+    assert!(
+        e.to_string().starts_with("heightfield reaches 1e300 "),
+        "{e}"
+    );
 }
 
 /// A ball too small at any coordinates is refused when it is made, not at its first slide: a
