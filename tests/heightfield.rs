@@ -566,9 +566,42 @@ fn height_products_beyond_the_range_are_refused() {
     assert_eq!(
         built.map(|_| ()),
         Err(HeightfieldError::OutOfRange {
-            value: 32_000.0,
+            value: -32_000.0,
             limit: 4096.0
         })
+    );
+}
+
+/// A terrain reaching below the range names the coordinate with its sign: 200 steps below an
+/// `I16F16` origin at y = -4 000 it reaches -4 200 (the error read 4 200, a height above the
+/// range that no vertex has).
+#[test]
+fn a_terrain_below_the_range_reaches_a_negative_coordinate() {
+    let heights = vec![0i16, 0, 0, -200];
+    let mut cells = vec![0u8; 1];
+    let built = Heightfield::build(
+        HeightfieldShape {
+            origin: v::<I16F16>([0.0, -4000.0, 0.0]),
+            spacing: I16F16::from_num(1),
+            unit: I16F16::from_num(1),
+            columns: 1,
+            rows: 1,
+        },
+        &heights,
+        |_, _| false,
+        &mut cells,
+    );
+    let e = built.map(|_| ()).unwrap_err();
+    assert_eq!(
+        e,
+        HeightfieldError::OutOfRange {
+            value: -4200.0,
+            limit: 4096.0
+        }
+    );
+    assert!(
+        e.to_string().starts_with("heightfield reaches -4200 "),
+        "{e}"
     );
 }
 

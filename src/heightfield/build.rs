@@ -84,9 +84,16 @@ impl<'a, S: Scalar> Heightfield<'a, S> {
         // Every column and row number must be exact in the scalar (I16F16 stops at 32 767),
         // or the vertices would not be where the walk looks for them.
         let exact = |n: u32| n <= i32::MAX as u32 && S::from_int(n as i32).to_f64() == n as f64;
-        let far = ends.iter().flatten().fold(0.0f64, |m, v| m.max(v.abs()));
+        // The coordinate farthest out, and its magnitude: the error gives its sign (a terrain
+        // 200 below an origin at y = -4000 reaches -4200, not 4200).
+        let signed = ends
+            .iter()
+            .flatten()
+            .fold(0.0f64, |m, &v| if v.abs() > m.abs() { v } else { m });
+        let far = signed.abs();
         if far > limit {
-            return Err(HeightfieldError::OutOfRange { value: far, limit });
+            let value = signed;
+            return Err(HeightfieldError::OutOfRange { value, limit });
         }
         if !exact(columns) || !exact(rows) {
             let count = columns.max(rows);
