@@ -237,7 +237,6 @@ fn run<S: Scalar, G: Geometry<S> + ?Sized>(
         };
         let Some(hit) = found else {
             out.position += rest;
-            rest = zero;
             break;
         };
         elapsed = elapsed + (S::ONE - elapsed).mul(hit.alpha);
@@ -264,8 +263,11 @@ fn run<S: Scalar, G: Geometry<S> + ?Sized>(
         } else {
             zero
         };
-        out.blocked += left - rest;
     }
-    out.blocked += rest;
+    // What the move did not travel of the displacement, whatever took it: the stops short of
+    // contacts and the constraints, and the lifts a skin off what was met at once (summed from
+    // the stops alone, a ball touching a floor and thrown down into it sideways ended a skin
+    // higher than `start + displacement - blocked` said).
+    out.blocked = start + displacement - out.position;
     Ok(out)
 }

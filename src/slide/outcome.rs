@@ -19,7 +19,10 @@ pub struct Slide<S> {
     /// How far the ball was moved out of a starting overlap before it moved (zero unless it
     /// started overlapping geometry by more than the skin; see [`move_and_slide`]).
     pub pushed_out: Vec3<S>,
-    /// The part of the requested displacement not travelled: what the contacts took away.
+    /// The part of the requested displacement not travelled: what the contacts took away, so
+    /// that `position` is the start, `pushed_out`, `displacement` and `-blocked` added up (to
+    /// rounding). (A stepped move's is what the move across was denied: see
+    /// [`Slider::step_slide`].)
     pub blocked: Vec3<S>,
     /// The contacts met, in order (at most [`MAX_SLIDES`]).
     pub contacts: [Option<SlideContact<S>>; MAX_SLIDES],
