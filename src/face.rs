@@ -48,13 +48,10 @@ pub(crate) fn face_point<S: Scalar>(s: &StandardSweep<S>) -> Option<(S, S, S)> {
     if y1 >= r {
         return None;
     }
-    // Starting at height r, the ball touches at once: zero, not the −0 of a float's zero over
-    // a negative drop (alpha is reported in [0, 1), its bits hashed by lockstep peers).
-    let beta = if y0 == r {
-        S::ZERO
-    } else {
-        S::div(r - y0, y1 - y0)
-    };
+    // (r - y0) / (y1 - y0) with both signs turned, the same quotient (rounding depends only on
+    // the exact one), so a ball starting at height r touches at +0, not at a float's −0 from
+    // zero over a negative drop (alpha is reported in [0, 1), its bits hashed by lockstep peers).
+    let beta = S::div(y0 - r, y0 - y1);
     let xq = p0.x + beta.mul(p1.x - p0.x);
     let zq = p0.z + beta.mul(p1.z - p0.z);
     Some((beta, xq, zq))

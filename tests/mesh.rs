@@ -687,6 +687,29 @@ fn node_buffers_sized_exactly_for_each_leaf_size() {
     }
 }
 
+/// Sizing the node buffer takes any count without overflow, beyond what a build accepts too
+/// (`nodes_for(usize::MAX)` overflowed a product in debug), and grows with the count.
+#[test]
+fn node_counts_of_any_size_do_not_overflow() {
+    let max = ballcast::bvh::MAX_TRIANGLES;
+    let mut last = 0;
+    for n in [
+        max,
+        max + 1,
+        usize::MAX / 4,
+        usize::MAX / 2,
+        usize::MAX - 1,
+        usize::MAX,
+    ] {
+        for leaves in [LeafSize::Two, LeafSize::Four] {
+            let need = nodes_for_leaves(n, leaves);
+            assert!(need >= n / 12, "{n} {leaves:?}: {need}");
+        }
+        assert!(nodes_for(n) >= last, "{n}");
+        last = nodes_for(n);
+    }
+}
+
 /// A floor edge covered by two flat neighbours meeting in a T-junction, with 400 tiny posts
 /// standing along it (more than the 256 triangles near one edge the build looks at): the
 /// edges switched off must not depend on how the tree found the posts. With leaves of four the

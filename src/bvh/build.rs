@@ -21,11 +21,12 @@ pub(crate) enum BuildError {
 /// needs about `N / (3 leaf)` nodes.
 const fn parts(n: usize, leaf: usize) -> [usize; 4] {
     let leaves = n.div_ceil(leaf);
+    // `per * 4 < leaves`, with no product that can overflow for any `n`.
     let mut per = 1;
-    while per * 4 < leaves {
+    while per < leaves.div_ceil(4) {
         per *= 4;
     }
-    let per = per * leaf;
+    let per = per.saturating_mul(leaf);
     let mut out = [0; 4];
     let (mut k, mut left) = (0, n);
     while k < 4 {

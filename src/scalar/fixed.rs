@@ -12,7 +12,8 @@ use core::cmp::Ordering;
 use fixed::types::{I2F30, I2F62, I16F16, I32F32};
 
 /// Rounds `v / 2^shift` to nearest, ties away from zero, for `shift >= 1`: `-v` rounds to
-/// exactly the negation of what `v` rounds to.
+/// exactly the negation of what `v` rounds to. Needs `|v|` half a step below the type's
+/// extremes (a product in its double width always is); [`round_shift_any`] takes any `v`.
 macro_rules! round_shift {
     ($v:expr, $shift:expr) => {{
         let (v, half) = ($v, 1 << ($shift - 1));
@@ -20,6 +21,22 @@ macro_rules! round_shift {
             -((half - v) >> $shift)
         } else {
             (v + half) >> $shift
+        }
+    }};
+}
+
+/// [`round_shift`] for any `v`, the type's extremes included, where no step can overflow: a
+/// positive `v` adds the bit below the shift to the quotient, a negative one adds less than a
+/// step before flooring, `ceil((v - half) / 2^shift)`. The same numbers otherwise, for a few
+/// more operations. (For `v` in its own width: `slide::skin` of the largest `I16F16`
+/// overflowed.)
+macro_rules! round_shift_any {
+    ($v:expr, $shift:expr) => {{
+        let (v, shift) = ($v, $shift);
+        if v < 0 {
+            (v + ((1 << (shift - 1)) - 1)) >> shift
+        } else {
+            (v >> shift) + ((v >> (shift - 1)) & 1)
         }
     }};
 }
@@ -210,7 +227,7 @@ macro_rules! fixed_scalar {
             }
             #[inline]
             fn div_pow2(v: Self, k: u32) -> Self {
-                <$t>::from_bits(round_shift!(v.to_bits(), k))
+                <$t>::from_bits(round_shift_any!(v.to_bits(), k))
             }
             #[inline]
             fn dot(a: Vec3<Self>, b: Vec3<Self>) -> Self {

@@ -157,3 +157,35 @@ fn scaled_shifts_by_a_power_of_two() {
         }
     }
 }
+
+/// `div_pow2` rounds to nearest, ties away from zero, over every bit pattern's neighbourhood
+/// that matters: the type's extremes (where adding half a step before the shift overflowed,
+/// `slide::skin` of the largest `I16F16` among them), every tie near zero, and at random, for
+/// every shift.
+#[test]
+fn div_pow2_rounds_ties_away_at_the_extremes() {
+    use super::sealed::Kernel;
+    let want = |v: i128, k: u32| {
+        let q = (v.abs() + (1 << (k - 1))) >> k;
+        if v < 0 { -q } else { q }
+    };
+    let mut rng = Rng(0x9E37_79B9_7F4A_7C15);
+    for k in 1..32 {
+        let edges = [i64::MIN, i64::MIN + 1, -1, 0, 1, i64::MAX - 1, i64::MAX];
+        let ties = (-64i64..64).map(|q| (q << k) + (1 << (k - 1)));
+        let random = (0..20_000).map(|_| rng.next() as i64);
+        for v in edges.into_iter().chain(ties).chain(random) {
+            for v in [v, v.wrapping_add(1), v.wrapping_sub(1)] {
+                let narrow = v as i32;
+                let got = I16F16::div_pow2(I16F16::from_bits(narrow), k).to_bits();
+                assert_eq!(
+                    got as i128,
+                    want(narrow as i128, k),
+                    "I16F16 {narrow} >> {k}"
+                );
+                let got = I32F32::div_pow2(I32F32::from_bits(v), k).to_bits();
+                assert_eq!(got as i128, want(v as i128, k), "I32F32 {v} >> {k}");
+            }
+        }
+    }
+}

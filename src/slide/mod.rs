@@ -84,14 +84,17 @@ fn floor_normal<S: Scalar>(n: Vec3<S>, up_unit: Vec3<S>) -> Result<Vec3<S>, Erro
 
 /// The gap kept between a ball of `radius` and what it touched, for centres within `±extent`:
 /// `radius / 1024` plus twice the rounding of a height there, so that the next sweep does not
-/// meet the same plane again at once through rounding.
+/// meet the same plane again at once through rounding. A radius below zero (or NaN) counts as
+/// zero: the gap is never less than the rounding term.
 ///
 /// ```
 /// use ballcast::slide::skin;
 /// assert_eq!(skin(0.5f64, 1.0), 0.5 / 1024.0 + 8.0 * f64::EPSILON);
+/// assert_eq!(skin(-0.5f64, 1.0), skin(0.0, 1.0));
 /// ```
 pub fn skin<S: Scalar>(radius: S, extent: S) -> S {
     let e = S::height_error(extent);
+    let radius = if radius > S::ZERO { radius } else { S::ZERO };
     S::div_pow2(radius, 10) + e + e
 }
 
