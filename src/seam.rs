@@ -72,7 +72,7 @@ impl<S: Scalar> StandardTriangle<S> {
     }
 
     /// Whether `q` lies in the triangle's box in the x–z plane grown by `grow`.
-    fn within_box(&self, q: Vec3<S>, grow: S) -> bool {
+    pub(crate) fn within_box(&self, q: Vec3<S>, grow: S) -> bool {
         let ((lo, hi), z1) = (self.x_extent(), self.shape().1);
         lo - grow <= q.x && q.x <= hi + grow && -grow <= q.z && q.z <= z1 + grow
     }
