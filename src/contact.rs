@@ -182,7 +182,9 @@ impl<S: Scalar> StandardTriangle<S> {
             if on_face(xq, zq) {
                 return Some((beta, None, Contact::Face, (r - p0.y, p1.y - p0.y)));
             }
-            if let Some((xq, zq)) = self.face_point_again(s, (xq, zq)) {
+            if beta_rounding_counts(d)
+                && let Some((xq, zq)) = self.face_point_again(s, (xq, zq))
+            {
                 face = Some((beta, xq, zq));
                 if on_face(xq, zq) {
                     return Some((beta, None, Contact::Face, (r - p0.y, p1.y - p0.y)));
@@ -209,19 +211,26 @@ impl<S: Scalar> StandardTriangle<S> {
     }
 
     /// `q'` again, from the unrounded fraction in one rounding, where the face test missed with
-    /// `q'` from beta as rounded and that rounding could have decided it: beta's half step times
-    /// the path's run along the plane, beyond the contact tests' own rounding on a long path
-    /// (`I16F16`: 0.011 on a run of 1 442, where a ball of 0.01 landed 0.002 inside an edge and
+    /// `q'` from beta as rounded and that rounding could have decided it ([`beta_rounding_counts`];
+    /// `I16F16`: 0.011 on a run of 1 442, where a ball of 0.01 landed 0.002 inside an edge and
     /// met neither the face nor the edge, and went 0.7 through the plane), with `q'` within
-    /// that and `r` of the triangle's box. `None` where `q'` stands (a short path, or far off).
+    /// that of where the face reaches. `None` where `q'` stands (far off).
     #[cold]
     #[inline(never)]
     fn face_point_again(&self, s: &StandardSweep<S>, (xq, zq): (S, S)) -> Option<(S, S)> {
         let (p0, p1, r) = (s.p0, s.p1, s.radius);
         let d = p1 - p0;
         let off = S::EPSILON.mul(largest(d.x.abs(), d.z.abs(), S::ZERO));
-        if off <= crate::scalar::tie::<S>() || !self.within_box(Vec3::new(xq, S::ZERO, zq), r + off)
-        {
+        // The most the face reaches beyond the triangle: the seam margin (a ball), or 32
+        // height roundings (a ray: `within_rounding`'s most, 16 times two; only fixed point comes
+        // here, whose height rounding is the same everywhere).
+        let h = S::height_error(S::ZERO);
+        let reach = if r == S::ZERO {
+            S::from_int(32).mul(h)
+        } else {
+            crate::seam::seam_margin(r)
+        };
+        if !self.within_box(Vec3::new(xq, S::ZERO, zq), off + reach) {
             return None;
         }
         // `face_point` held `p0.y >= r > p1.y`: the fraction is within [0, 1].
@@ -276,9 +285,17 @@ pub(crate) fn within_reach<S: Scalar>(
     (!above_at(sweep, (start, end), reach)).then_some(back)
 }
 
-/// The side the sweep comes from (true: the back) and its heights as seen from that side,
-/// or `None` where no contact is possible.
-#[inline(always)]
+/// Whether `q'` from beta as rounded may be off by more than the face allows for: beta's half
+/// step times the path's run along the plane beyond four steps (the seam margin's own part, by
+/// which the face is widened along its inactive edges), that is a run beyond eight units in
+/// fixed point. Never for floats, whose beta rounds relative to itself: a step of it times the
+/// run is within the rounding of the run's coordinates.
+#[inline]
+fn beta_rounding_counts<S: Scalar>(d: Vec3<S>) -> bool {
+    let eight = tie::<S>() + tie::<S>();
+    !S::PRECISION.relative && S::EPSILON.mul(largest(d.x.abs(), d.z.abs(), S::ZERO)) > eight
+}
+
 fn facing<S: Scalar>(sweep: &Sweep<S>, (y0, y1): (S, S), two_sided: bool) -> Option<(bool, S, S)> {
     // Towards the back (or along the plane behind it): a one-sided triangle ignores it, a
     // two-sided one mirrors y. Contact needs the centre to start on the side it moves
