@@ -191,7 +191,10 @@ impl Precision {
     /// Where two features meet the ball within [`distance_error`](Self::distance_error) of each
     /// other (two edges, an edge and the face), rounding may pick either, and the position is
     /// the one picked: then its error along the exact contact's normal is bounded by
-    /// `distance_error` alone.
+    /// `distance_error` alone. Through a scene or mesh, of triangles whose contacts' alphas
+    /// round alike the one whose position comes first along the path is reported, so a
+    /// second triangle a step of alpha behind adds nothing (two floors a fraction of a step
+    /// apart, a ball falling 1 000 onto them: within this bound in every scalar).
     ///
     /// ```
     /// use ballcast::Scalar;
