@@ -271,7 +271,8 @@ pub struct Verdict {
     pub position_error: f64,
     /// The smallest radius [`move_and_slide`](crate::move_and_slide) (and the [`Slider`](crate::Slider)
     /// and [`Character`](crate::slide::Character) built on it) accepts at the extent; a single
-    /// cast takes any radius.
+    /// cast takes any radius, but the error figures assume at least this one (smaller balls'
+    /// edge and vertex contacts round by more than the ball).
     pub min_radius: f64,
 }
 

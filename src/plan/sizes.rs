@@ -16,9 +16,10 @@ use super::{ScalarType, Verdict};
 ///
 /// ```
 /// use ballcast::plan::{ScalarType, Sizes};
-/// // 10 km across, balls of 0.5 moving up to 2 a step, contacts within 0.1 mm: with
-/// // triangles as large as the level, only I32F32 will do; with triangles at most 4 across,
-/// // f32 does.
+/// // 10 km across, balls of 0.5 moving up to 2 a step, contact distances (where along its
+/// // path a ball stops) within 0.1 mm: with triangles as large as the level, only I32F32 will
+/// // do; with triangles at most 4 across, f32 does. Its positions, coordinates near 10 000,
+/// // still round as f32 does there (`position_error`: 1.2e-3).
 /// let level = Sizes::new(10_000.0, 0.5, 2.0);
 /// assert_eq!(level.choose(1e-4).map(|v| v.precision.scalar), Some(ScalarType::I32F32));
 /// let small = level.with_triangles(4.0);
@@ -76,8 +77,11 @@ impl Sizes {
     }
 
     /// The first scalar in [`plan`](super::plan)'s order that fits, accepts the radius in
-    /// [`move_and_slide`](crate::move_and_slide) and keeps a contact's expected error along
-    /// the normal within `tolerance`, as [`choose`](super::choose) picks; `None` if none does.
+    /// [`move_and_slide`](crate::move_and_slide) and keeps a contact's expected distance error
+    /// along the normal ([`Verdict::distance_error`]) within `tolerance`, as
+    /// [`choose`](super::choose) picks; `None` if none does. A position is a coordinate and
+    /// rounds as one at `extent` too: where positions must be within `tolerance`, check the
+    /// verdict's [`position_error`](Verdict::position_error) as well.
     pub const fn choose(&self, tolerance: f64) -> Option<Verdict> {
         let all = self.plan();
         let mut i = 0;
