@@ -156,7 +156,8 @@ fn helpers_agree_with_f64<S: Tolerance>() {
 }
 
 /// `splat`, `min`, `max`, `abs`, `max_element` exactly as the components are; `length_squared` and the
-/// projections onto and across a unit vector against `f64` on the same rounded inputs.
+/// projections onto and across a unit vector and the reflection in its plane against `f64` on
+/// the same rounded inputs.
 fn components_and_projections_agree_with_f64<S: Tolerance>() {
     let mut rng = Rng(0x9_0C7);
     for _ in 0..10_000 {
@@ -187,6 +188,10 @@ fn components_and_projections_agree_with_f64<S: Tolerance>() {
         assert!(err <= tol, "{}: project {err:e}", S::NAME);
         let err = common::norm(common::sub(back(a.reject_from_normalized(n)), across));
         assert!(err <= tol, "{}: reject {err:e}", S::NAME);
+        // Twice the part along `n` taken away: its rounding twice.
+        let bounced = common::sub(a64, common::scale(along, 2.0));
+        let err = common::norm(common::sub(back(a.reflect(n)), bounced));
+        assert!(err <= 2.0 * tol, "{}: reflect {err:e}", S::NAME);
     }
 }
 

@@ -1,5 +1,5 @@
 //! [`Vec3`]'s geometry beyond the dot and cross products: projections, distances,
-//! interpolation, clamps and angles, each rounded through the scalar.
+//! reflection, interpolation, clamps and angles, each rounded through the scalar.
 
 use super::Vec3;
 use crate::Scalar;
@@ -26,6 +26,20 @@ impl<S: Scalar> Vec3<S> {
     /// ```
     pub fn reject_from_normalized(self, n: Self) -> Self {
         self - self.project_onto_normalized(n)
+    }
+
+    /// This vector reflected in the plane of the unit normal `n`: `self - 2 n (self · n)`, as
+    /// [`project_onto_normalized`](Self::project_onto_normalized) rounds its part along `n`
+    /// (glam's `reflect`). A ball's velocity bouncing off a contact:
+    ///
+    /// ```
+    /// use ballcast::Vec3;
+    /// let velocity = Vec3::new(3.0f32, -4.0, 0.0);
+    /// assert_eq!(velocity.reflect(Vec3::Y), Vec3::new(3.0, 4.0, 0.0));
+    /// ```
+    pub fn reflect(self, n: Self) -> Self {
+        let along = self.project_onto_normalized(n);
+        self - along - along
     }
 
     /// The distance to `o`: [`length`](Self::length) of the difference (which, for points
