@@ -47,7 +47,13 @@ impl<S: Scalar> Bounds<S> {
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
 #[derive(Clone, Copy, Debug, PartialEq)]
-#[cfg_attr(feature = "serde", serde(bound = "S: crate::Scalar"))]
+#[cfg_attr(
+    feature = "serde",
+    serde(
+        bound = "S: crate::Scalar",
+        try_from = "crate::interop::hit::SceneHitRead<S>"
+    )
+)]
 pub struct SceneHit<S> {
     /// Fraction of the path travelled at first contact, in `[0, 1)`.
     #[doc(alias = "time_of_impact")]

@@ -320,6 +320,51 @@ mod serde_tests {
         }
     }
 
+    /// A slide read back carries unit normals, as its `clip` and `floor` take them: a contact's
+    /// normal or plane of another length (or NaN) is refused, naming it. (Read as it came, a
+    /// normal of (0, -4096, -6.2) overflowed `clip` in `I16F16`, and one of (0, 2, 0) clipped a
+    /// velocity to twice what it should.) A real slide round-trips in every scalar.
+    #[test]
+    fn slides_with_normals_of_other_lengths_are_refused() {
+        fn check<S: ballcast::Scalar>() {
+            let v =
+                |x: f64, y: f64, z: f64| Vec3::new(S::from_f64(x), S::from_f64(y), S::from_f64(z));
+            let out = ballcast::move_and_slide(
+                &floor::<S>(),
+                v(1.0, 0.6, 0.5),
+                v(0.3, -0.5, 0.0),
+                S::from_f64(0.5),
+            )
+            .unwrap();
+            assert!(out.contacts[0].is_some());
+            let json = serde_json::to_string(&out).unwrap();
+            assert_eq!(
+                serde_json::from_str::<ballcast::Slide<S>>(&json).unwrap(),
+                out
+            );
+            let mut value: serde_json::Value = serde_json::from_str(&json).unwrap();
+            value["contacts"][0]["hit"]["normal"]["y"] = serde_json::json!(2.0);
+            let err = serde_json::from_value::<ballcast::Slide<S>>(value.clone()).unwrap_err();
+            assert!(
+                err.to_string()
+                    .contains("squared length of a contact's normal"),
+                "{err}"
+            );
+            value["contacts"][0]["hit"]["normal"]["y"] = serde_json::json!(1.0);
+            value["contacts"][0]["hit"]["planes"][0]["z"] = serde_json::json!(0.5);
+            let err = serde_json::from_value::<ballcast::Slide<S>>(value).unwrap_err();
+            assert!(
+                err.to_string()
+                    .contains("squared length of a contact's normal"),
+                "{err}"
+            );
+        }
+        check::<f32>();
+        check::<f64>();
+        check::<I16F16>();
+        check::<fixed::types::I32F32>();
+    }
+
     /// Feature bits read back are those `Features::bits` gives: more than the six features is
     /// refused (it read into a mask that compared unequal to every real one).
     #[test]

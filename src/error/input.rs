@@ -67,6 +67,12 @@ pub enum Input {
     Features,
     /// The number of the edge or vertex of a [`Contact`](crate::Contact) read back (0 to 2).
     FeatureIndex,
+    /// A contact's normal, or one of its planes, read back (a [`SceneHit`](crate::SceneHit)
+    /// with `serde`): its coordinates.
+    Normal,
+    /// The squared length of a contact's normal or plane read back, which must be one within
+    /// `2e-4` ([`Vec3::is_normalized`](crate::Vec3::is_normalized)).
+    NormalLength,
 }
 
 impl Input {
@@ -101,6 +107,8 @@ impl Input {
             Input::Number => ("the number", false),
             Input::Features => ("the feature bits", false),
             Input::FeatureIndex => ("the edge or vertex number", false),
+            Input::Normal => ("a contact's normal", true),
+            Input::NormalLength => ("the squared length of a contact's normal", false),
         }
     }
 }

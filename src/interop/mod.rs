@@ -14,7 +14,10 @@
 //! and without it reads some `f64` (and so some `I32F32`) values a step off, silently: a
 //! lockstep game that sends state as JSON must turn that feature on. A [`Scene`](crate::Scene)
 //! is its triangles in order, each with its sidedness; reading one pushes every triangle again
-//! (active edges are recomputed), and an error names the triangle's index.
+//! (active edges are recomputed), and an error names the triangle's index. A
+//! [`SceneHit`](crate::SceneHit) (and so a [`Slide`](crate::Slide) or a saved floor contact)
+//! read back must carry unit normals and planes, as the response takes them: another length is
+//! refused ([`Input::NormalLength`](crate::Input::NormalLength)).
 
 #[cfg(feature = "mint")]
 mod mint_impls {
@@ -66,6 +69,8 @@ mod glam_impls {
     }
 }
 
+#[cfg(feature = "serde")]
+pub(crate) mod hit;
 #[cfg(feature = "serde")]
 mod level;
 #[cfg(feature = "serde")]

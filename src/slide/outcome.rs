@@ -79,6 +79,9 @@ impl<S: Scalar> Slide<S> {
     /// rounding, and never turns it against itself. A ball held back by steep slopes clips with
     /// [`Slider::clip`].
     ///
+    /// The contacts are taken as a move gives them, with unit normals and planes (a slide read
+    /// with `serde` is checked for that; one built by hand must keep to it).
+    ///
     /// Errors: [`Error::NaN`] or [`Error::OutOfRange`] for a velocity component beyond
     /// `±`[`Scalar::LIMIT`].
     pub fn clip(&self, velocity: Vec3<S>) -> Result<Vec3<S>, Error> {
