@@ -121,10 +121,26 @@ pub enum CompactError {
         max: usize,
     },
     /// Input triangle `index` is not what the mesh prepared (other vertices or indices than
-    /// those it was built from), or refers to a vertex that does not exist.
+    /// those it was built from).
     Mismatch {
         /// Its index in the input.
         index: usize,
+    },
+    /// The mesh holds input triangle `index`, beyond the `given` index triples.
+    MissingTriangle {
+        /// Its index in the input.
+        index: usize,
+        /// Index triples given.
+        given: usize,
+    },
+    /// Input triangle `index` refers to vertex `vertex`, beyond the `given` vertices.
+    MissingVertex {
+        /// The triangle's index in the input.
+        index: usize,
+        /// The vertex index it holds.
+        vertex: usize,
+        /// Vertices given.
+        given: usize,
     },
 }
 
@@ -141,7 +157,19 @@ impl fmt::Display for CompactError {
             }
             Self::Mismatch { index } => write!(
                 f,
-                "triangle {index} differs from the mesh's (other vertices, or a vertex missing)"
+                "triangle {index} differs from the mesh's (other vertices or winding)"
+            ),
+            Self::MissingTriangle { index, given } => write!(
+                f,
+                "the mesh holds triangle {index}, beyond the {given} index triples given"
+            ),
+            Self::MissingVertex {
+                index,
+                vertex,
+                given,
+            } => write!(
+                f,
+                "triangle {index} refers to vertex {vertex}, beyond the {given} vertices given"
             ),
         }
     }
@@ -206,7 +234,17 @@ impl<'a, S: Scalar, I: MeshIndex> CompactMesh<'a, S, I> {
             let index = input as usize;
             fits(index)?;
             let mismatch = CompactError::Mismatch { index };
-            let corners = indices.get(index).ok_or(mismatch)?;
+            let given = indices.len();
+            let corners = indices
+                .get(index)
+                .ok_or(CompactError::MissingTriangle { index, given })?;
+            if let Some(&c) = corners.iter().find(|&&c| c as usize >= vertices.len()) {
+                return Err(CompactError::MissingVertex {
+                    index,
+                    vertex: c as usize,
+                    given: vertices.len(),
+                });
+            }
             let rebuilt = triangle(vertices, corners.map(|c| c as usize)).ok_or(mismatch)?;
             let byte = prepared.features().bits() | (TWO_SIDED * prepared.is_two_sided() as u8);
             let again = prepare(&rebuilt, byte).ok_or(mismatch)?;

@@ -80,13 +80,23 @@ fn errors_not_panics<S: Scalar>() {
     other[5].swap(1, 2);
     let wrong = CompactMesh::compact(&mesh, &vertices, &other, &mut t, &mut o, &mut b);
     assert_eq!(wrong.map(|_| ()), Err(CompactError::Mismatch { index: 5 }));
-    // An index into no vertex.
+    // An index into no vertex, named (it read as a mismatch).
     other[5] = [0, 1, vertices.len() as u32];
     let missing = CompactMesh::compact(&mesh, &vertices, &other, &mut t, &mut o, &mut b);
-    assert_eq!(
-        missing.map(|_| ()),
-        Err(CompactError::Mismatch { index: 5 })
+    let vertex = CompactError::MissingVertex {
+        index: 5,
+        vertex: vertices.len(),
+        given: vertices.len(),
+    };
+    assert_eq!(missing.map(|_| ()), Err(vertex));
+    // Fewer index triples than the mesh's triangles, named (it read as a mismatch).
+    let few = CompactMesh::compact(&mesh, &vertices, &indices[..3], &mut t, &mut o, &mut b);
+    let e = few.map(|_| ()).unwrap_err();
+    assert!(
+        matches!(e, CompactError::MissingTriangle { index, given: 3 } if index >= 3),
+        "{e:?}"
     );
+    assert!(e.to_string().contains("beyond the 3 index triples"), "{e}");
     // More vertices than u16 holds.
     let mut many = vertices.clone();
     many.resize(70_000, Vec3::ZERO);

@@ -84,7 +84,9 @@ impl<S: Scalar> CompactMeshBuf<S> {
             let compact = CompactMesh::<S, u32>::compact(&m, &vertices, &indices, t, o, b)
                 .map_err(|e| MeshError::Mismatch {
                     part: match e {
-                        CompactError::Mismatch { index } => MeshPart::Triangle { index },
+                        CompactError::Mismatch { index }
+                        | CompactError::MissingTriangle { index, .. }
+                        | CompactError::MissingVertex { index, .. } => MeshPart::Triangle { index },
                         _ => MeshPart::Len,
                     },
                 })?;

@@ -39,7 +39,9 @@ pub fn bake_compact<S: Scalar + Emit>(level: &Level) -> Result<Baked, LevelError
     })?
     .map_err(|e| {
         let origin = match e {
-            CompactError::Mismatch { index } => level.origin(index),
+            CompactError::Mismatch { index }
+            | CompactError::MissingTriangle { index, .. }
+            | CompactError::MissingVertex { index, .. } => level.origin(index),
             _ => None,
         };
         LevelError::at(&level.path, Problem::Compact(e), origin)

@@ -281,7 +281,9 @@ impl fmt::Display for LevelError {
             }
             Problem::Compact(e) => {
                 let at = match e {
-                    ballcast::CompactError::Mismatch { index } => built(*index),
+                    ballcast::CompactError::Mismatch { index }
+                    | ballcast::CompactError::MissingTriangle { index, .. }
+                    | ballcast::CompactError::MissingVertex { index, .. } => built(*index),
                     _ => String::new(),
                 };
                 write!(f, "compact mesh refused: {e}{at}")
