@@ -1,12 +1,13 @@
 //! Long sweeps of small balls at a mesh's edges and vertices: the contact reported and its
 //! normal against `f64`'s on the same rounded triangles, every scalar.
 
+#[macro_use]
 mod common;
 mod meshes;
 
 use ballcast::{Degenerates, SceneHit, Sweep};
-use common::{P, Rng, Tolerance, add, angle, back, dot, norm, scale, sub, v};
-use meshes::{build, sphere, tri};
+use common::{P, Rng, Tolerance, add, angle, back, norm, scale, sub, v};
+use meshes::{build, shot_at_sphere, sphere, tri};
 
 /// Sweeps of a ball of radius `r` along paths `length` long, aimed at a vertex, an edge's
 /// middle or a point along an edge of a sphere of radius 10 (512 triangles) from within 60° of
@@ -35,24 +36,9 @@ fn shots<S: Tolerance>(
     let mut rng = Rng(0x10C5);
     let mut out = Vec::new();
     for i in 0..count {
-        let [a, b, _] = src[(rng.next() * src.len() as f64) as usize % src.len()];
-        let at = match i % 3 {
-            0 => a,
-            1 => scale(add(a, b), 0.5),
-            _ => add(a, scale(sub(b, a), rng.range(0.05, 0.95))),
-        };
-        let normal = scale(at, 1.0 / norm(at));
-        let tilt = loop {
-            let t = rng.point(1.0);
-            if norm(t) <= 1.0 {
-                break t;
-            }
-        };
-        let dir = add(normal, scale(tilt, 1.7));
-        let dir = scale(dir, 1.0 / norm(dir));
-        if dot(dir, normal) < 0.5 {
+        let Some((at, dir)) = shot_at_sphere(&mut rng, &src, i) else {
             continue;
-        }
+        };
         // The point aimed at lies within a radius of the surface point, three fifths along
         // the path: the ball meets the feature, or a face beside it, a little before.
         let aim = add(at, rng.point(r));
@@ -138,18 +124,6 @@ fn report_all() {
     report::<f32>();
     report::<fixed::types::I32F32>();
     report::<fixed::types::I16F16>();
-}
-
-macro_rules! every_scalar {
-    ($($name:ident),*) => {$(
-        mod $name {
-            use fixed::types::{I16F16, I32F32};
-            #[test] fn f64() { super::$name::<f64>() }
-            #[test] fn f32() { super::$name::<f32>() }
-            #[test] fn i32f32() { super::$name::<I32F32>() }
-            #[test] fn i16f16() { super::$name::<I16F16>() }
-        }
-    )*};
 }
 
 every_scalar!(long_sweeps_report_the_first_contact);

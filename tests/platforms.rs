@@ -1,6 +1,7 @@
 //! A character riding a moving platform (README, *Moving platforms*): carried by the platform's
 //! motion each frame before the platform moves and the character updates, every scalar.
 
+#[macro_use]
 mod common;
 
 use ballcast::slide::Character;
@@ -88,18 +89,6 @@ fn a_lift_faster_than_a_radius_a_frame_carries_its_rider<S: Tolerance>() {
         "{}: uncarried, lowest gap {low}",
         S::NAME
     );
-}
-
-macro_rules! every_scalar {
-    ($($name:ident),*) => {$(
-        mod $name {
-            use fixed::types::{I16F16, I32F32};
-            #[test] fn f64() { super::$name::<f64>() }
-            #[test] fn f32() { super::$name::<f32>() }
-            #[test] fn i32f32() { super::$name::<I32F32>() }
-            #[test] fn i16f16() { super::$name::<I16F16>() }
-        }
-    )*};
 }
 
 every_scalar!(a_lift_faster_than_a_radius_a_frame_carries_its_rider);

@@ -8,7 +8,7 @@ mod meshes;
 use ballcast::{CompactMesh, Degenerates, Sweep};
 use common::{Rng, Tolerance, add, cross, dot, norm, scale, sub, v};
 use fixed::types::{I16F16, I32F32};
-use meshes::{build, sphere, tri};
+use meshes::{build, shot_at_sphere, sphere, tri};
 
 /// Rays from 20 to 40 units out, aimed at every kind of point where faces meet on a sphere of
 /// radius 10 (512 triangles): a vertex, the middle of an edge, or a random point along an
@@ -23,25 +23,10 @@ fn rays_through_edges_and_vertices_are_met<S: Tolerance>() {
     let mut rng = Rng(0x5AF3);
     let (mut missed, mut ran) = (Vec::new(), 0);
     for i in 0..6000 {
-        let [a, b, _] = src[(rng.next() * src.len() as f64) as usize % src.len()];
-        let at = match i % 3 {
-            0 => a,
-            1 => scale(add(a, b), 0.5),
-            _ => add(a, scale(sub(b, a), rng.range(0.05, 0.95))),
-        };
-        let out = scale(at, 1.0 / norm(at));
         // A direction within 60° of the outward normal, the ray coming in along it.
-        let tilt = loop {
-            let t = rng.point(1.0);
-            if norm(t) <= 1.0 {
-                break t;
-            }
-        };
-        let dir = add(out, scale(tilt, 1.7));
-        let dir = scale(dir, 1.0 / norm(dir));
-        if dot(dir, out) < 0.5 {
+        let Some((at, dir)) = shot_at_sphere(&mut rng, &src, i) else {
             continue;
-        }
+        };
         let far = rng.range(20.0, 40.0);
         let (p0, p1) = (add(at, scale(dir, far)), add(at, scale(dir, -far)));
         let sweep = Sweep::new(v::<S>(p0), v(p1), S::ZERO).unwrap();

@@ -446,3 +446,18 @@ pub fn valley_at<S: Scalar>(steep: f64, rise: f64, at: P) -> Scene<S, 8> {
     }
     level
 }
+
+/// One test per scalar for each generic test body `name::<S>()` of the file that uses it
+/// (`#[macro_use] mod common;`): `every_scalar!(first_property, second_property);`.
+#[allow(unused_macros)]
+macro_rules! every_scalar {
+    ($($name:ident),*) => {$(
+        mod $name {
+            use fixed::types::{I16F16, I32F32};
+            #[test] fn f64() { super::$name::<f64>() }
+            #[test] fn f32() { super::$name::<f32>() }
+            #[test] fn i32f32() { super::$name::<I32F32>() }
+            #[test] fn i16f16() { super::$name::<I16F16>() }
+        }
+    )*};
+}

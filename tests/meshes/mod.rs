@@ -490,3 +490,26 @@ pub fn sphere(radius: f64, n: usize) -> Vec<[P; 3]> {
         })
         .collect()
 }
+
+/// A shot at the closed sphere `src` (about the origin, as [`sphere`] makes it): the `i`-th
+/// kind of point where its faces meet (by `i % 3`: a vertex, an edge's middle, a random point
+/// along an edge) and a unit direction within 60° of the outward normal there, along which a
+/// shot comes in; `None` where the draw fell outside that cone.
+pub fn shot_at_sphere(rng: &mut Rng, src: &[[P; 3]], i: usize) -> Option<(P, P)> {
+    let [a, b, _] = src[(rng.next() * src.len() as f64) as usize % src.len()];
+    let at = match i % 3 {
+        0 => a,
+        1 => scale(add(a, b), 0.5),
+        _ => add(a, scale(sub(b, a), rng.range(0.05, 0.95))),
+    };
+    let out = scale(at, 1.0 / norm(at));
+    let tilt = loop {
+        let t = rng.point(1.0);
+        if norm(t) <= 1.0 {
+            break t;
+        }
+    };
+    let dir = add(out, scale(tilt, 1.7));
+    let dir = scale(dir, 1.0 / norm(dir));
+    (dot(dir, out) >= 0.5).then_some((at, dir))
+}
