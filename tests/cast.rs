@@ -457,6 +457,45 @@ fn resting_ball_is_met_at_plus_zero<S: Tolerance>() {
     }
 }
 
+/// A ball exactly its radius from an edge or vertex (outside the face) moving square to the
+/// offset is met at once, with alpha `+0` as on a face: the edge and vertex tests gave floats
+/// `-0.0` (`-s - chord` with `s = +0` and a chord of zero).
+fn touching_an_edge_or_vertex_is_met_at_plus_zero<S: Tolerance>() {
+    let t = Triangle::new(
+        v::<S>([0.0, 0.0, 0.0]),
+        v([0.0, 0.0, 4.0]),
+        v([4.0, 0.0, 0.0]),
+    );
+    let st = StandardTriangle::new(&t).unwrap();
+    let mut scene: Scene<S, 1> = Scene::new();
+    scene.push(t).unwrap();
+    let cases = [
+        // Beside edge x = 0, in the plane, moving up; above it at 0.5, moving on square.
+        ([-0.5, 0.0, 2.0], [-0.5, 1.0, 2.0], Contact::Edge(0)),
+        ([-0.3, 0.4, 2.0], [0.5, 1.0, 2.0], Contact::Edge(0)),
+        // Beside vertex 0, moving up; and moving along the x axis past it.
+        ([-0.5, 0.0, 0.0], [-0.5, 1.0, 0.0], Contact::Vertex(0)),
+        ([0.0, 0.0, -0.5], [1.0, 0.0, -0.5], Contact::Vertex(0)),
+    ];
+    for (a, b, feature) in cases {
+        let sweep = Sweep::new(v::<S>(a), v(b), S::from_f64(0.5)).unwrap();
+        let hits = [
+            st.cast(&sweep).map(|h| (h.alpha, h.contact)),
+            scene.cast(&sweep).map(|h| (h.alpha, h.contact)),
+        ];
+        for hit in hits {
+            let (alpha, contact) = hit.expect("met");
+            let alpha = alpha.to_f64();
+            assert_eq!(contact, feature, "{}: {a:?} -> {b:?}", S::NAME);
+            assert!(
+                alpha == 0.0 && alpha.is_sign_positive(),
+                "{}: alpha {alpha:?}, {a:?} -> {b:?}",
+                S::NAME
+            );
+        }
+    }
+}
+
 macro_rules! per_scalar {
     ($($m:ident: $t:ty),*) => {$(mod $m {
         use super::*;
@@ -475,6 +514,10 @@ macro_rules! per_scalar {
         }
         #[test]
         fn resting_ball_is_met_at_plus_zero() { super::resting_ball_is_met_at_plus_zero::<$t>() }
+        #[test]
+        fn touching_an_edge_or_vertex_is_met_at_plus_zero() {
+            super::touching_an_edge_or_vertex_is_met_at_plus_zero::<$t>()
+        }
         #[test]
         fn grazing_face_contact_stays_at_alphas_point() {
             super::grazing_face_contact_stays_at_alphas_point::<$t>()

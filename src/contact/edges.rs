@@ -190,7 +190,9 @@ fn first_touch<S: Scalar>(
         return None;
     }
     let t = -s - S::chord(r, off_line(q0, dir))?;
-    if t < S::ZERO {
+    // At or before the start: alpha `+0`. (A ball exactly `r` from the feature moving square to
+    // it has `s = +0` and a chord of zero: `-s - 0` is a float's `-0`, which `t / len` kept.)
+    if t <= S::ZERO {
         return Some((S::ZERO, (S::ZERO, len)));
     }
     if t >= len {
