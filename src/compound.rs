@@ -71,7 +71,7 @@ pub trait CompoundPart<S: Scalar>: Geometry<S> {
 /// // Down into the corner: the floor and the wall at once, half way.
 /// let hit = level.cast(&Sweep::new(v(0.0, 1.0, 0.0), v(1.0, 0.0, 0.0), 0.5)?).unwrap();
 /// assert_eq!(hit.alpha, 0.5);
-/// assert_eq!(level.locate(hit.index), PartIndex::First(1)); // the smaller index of the tie
+/// assert_eq!(level.locate(hit.index), PartIndex::First(1)); // first along the path, then the smaller index
 /// assert_eq!(hit.planes.iter().flatten().count(), 2); // both planes, for the slide
 /// assert!((hit.normal.x + hit.normal.y).abs() < 1e-6); // between them
 /// # Ok::<(), ballcast::Error>(())
