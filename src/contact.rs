@@ -170,27 +170,26 @@ impl<S: Scalar> StandardTriangle<S> {
             };
         }
         // The face is reached at height r, before any edge or vertex can be.
-        let mut face = face_point(s);
+        let face = face_point(s);
         if let Some((beta, xq, zq)) = face
             && beta < S::ONE
+            && self.face_holds(xq, zq, p0, p1, r)
         {
-            let on_face = |xq: S, zq: S| {
-                contains(self, xq, zq)
-                    || self.within_seams(xq, zq, r)
-                    || (r == S::ZERO && self.ray_within_rounding(xq, zq, p0, p1))
-            };
-            if on_face(xq, zq) {
-                return Some((beta, None, Contact::Face, (r - p0.y, p1.y - p0.y)));
-            }
-            if beta_rounding_counts(d)
-                && let Some((xq, zq)) = self.face_point_again(s, (xq, zq))
-            {
-                face = Some((beta, xq, zq));
-                if on_face(xq, zq) {
-                    return Some((beta, None, Contact::Face, (r - p0.y, p1.y - p0.y)));
+            return Some((beta, None, Contact::Face, (r - p0.y, p1.y - p0.y)));
+        }
+        // Missed where alpha's rounding could have decided it (never in floats): q' again.
+        let face = match face {
+            Some((beta, xq, zq)) if beta < S::ONE && beta_rounding_counts(d) => {
+                match self.face_point_again(s, (xq, zq)) {
+                    Some((_, _, true)) => {
+                        return Some((beta, None, Contact::Face, (r - p0.y, p1.y - p0.y)));
+                    }
+                    Some((xq, zq, false)) => Some((beta, xq, zq)),
+                    None => face,
                 }
             }
-        }
+            _ => face,
+        };
         if p0.y < r && (contains(self, p0.x, p0.z) || self.within_seams(p0.x, p0.z, r)) {
             return Some((S::ZERO, None, Contact::Face, (S::ZERO, S::ONE)));
         }
@@ -214,10 +213,11 @@ impl<S: Scalar> StandardTriangle<S> {
     /// `q'` from beta as rounded and that rounding could have decided it ([`beta_rounding_counts`];
     /// `I16F16`: 0.011 on a run of 1 442, where a ball of 0.01 landed 0.002 inside an edge and
     /// met neither the face nor the edge, and went 0.7 through the plane), with `q'` within
-    /// that of where the face reaches. `None` where `q'` stands (far off).
+    /// that of where the face reaches: the new `q'` and whether the face holds it. `None` where
+    /// `q'` stands (far off).
     #[cold]
     #[inline(never)]
-    fn face_point_again(&self, s: &StandardSweep<S>, (xq, zq): (S, S)) -> Option<(S, S)> {
+    fn face_point_again(&self, s: &StandardSweep<S>, (xq, zq): (S, S)) -> Option<(S, S, bool)> {
         let (p0, p1, r) = (s.p0, s.p1, s.radius);
         let d = p1 - p0;
         let off = S::EPSILON.mul(largest(d.x.abs(), d.z.abs(), S::ZERO));
@@ -235,10 +235,20 @@ impl<S: Scalar> StandardTriangle<S> {
         }
         // `face_point` held `p0.y >= r > p1.y`: the fraction is within [0, 1].
         let (n, den) = (r - p0.y, p1.y - p0.y);
-        Some((
+        let (xq, zq) = (
             p0.x + S::mul_div(d.x, n, den),
             p0.z + S::mul_div(d.z, n, den),
-        ))
+        );
+        Some((xq, zq, self.face_holds(xq, zq, p0, p1, r)))
+    }
+
+    /// Whether the face, grown along its seams (and for a ray by the rounding of its crossing),
+    /// holds the point `(xq, 0, zq)` where the ball reaches height `r`.
+    #[inline(always)]
+    fn face_holds(&self, xq: S, zq: S, p0: Vec3<S>, p1: Vec3<S>, r: S) -> bool {
+        contains(self, xq, zq)
+            || self.within_seams(xq, zq, r)
+            || (r == S::ZERO && self.ray_within_rounding(xq, zq, p0, p1))
     }
 
     /// [`within_rounding`](Self::within_rounding) for a ray from `p0` to `p1` (in the frame),
@@ -292,8 +302,10 @@ pub(crate) fn within_reach<S: Scalar>(
 /// run is within the rounding of the run's coordinates.
 #[inline]
 fn beta_rounding_counts<S: Scalar>(d: Vec3<S>) -> bool {
-    let eight = tie::<S>() + tie::<S>();
-    !S::PRECISION.relative && S::EPSILON.mul(largest(d.x.abs(), d.z.abs(), S::ZERO)) > eight
+    // `EPSILON × run > 8 EPSILON`, the product rounded to a step: a run of 8.5 or more, with no
+    // product (a Cortex-M0 has no long multiply).
+    let most = S::from_int(8) + S::div_pow2(S::ONE, 1);
+    !S::PRECISION.relative && largest(d.x.abs(), d.z.abs(), S::ZERO) >= most
 }
 
 fn facing<S: Scalar>(sweep: &Sweep<S>, (y0, y1): (S, S), two_sided: bool) -> Option<(bool, S, S)> {
