@@ -297,8 +297,8 @@ pub(crate) fn within_reach<S: Scalar>(
 
 /// Whether `q'` from beta as rounded may be off by more than the face allows for: beta's half
 /// step times the path's run along the plane beyond four steps (the seam margin's own part, by
-/// which the face is widened along its inactive edges), that is a run beyond eight units in
-/// fixed point. Never for floats, whose beta rounds relative to itself: a step of it times the
+/// which the face is widened along its inactive edges), that is a run of 8.5 units or more in
+/// fixed point (the product rounded to a step). Never for floats, whose beta rounds relative to itself: a step of it times the
 /// run is within the rounding of the run's coordinates.
 #[inline]
 fn beta_rounding_counts<S: Scalar>(d: Vec3<S>) -> bool {
