@@ -177,25 +177,26 @@ impl<S: Scalar> StandardTriangle<S> {
         {
             return Some((beta, None, Contact::Face, (r - p0.y, p1.y - p0.y)));
         }
-        // Missed where alpha's rounding could have decided it (never in floats): q' again.
-        let face = match face {
-            Some((beta, xq, zq)) if beta < S::ONE && beta_rounding_counts(d) => {
-                match self.face_point_again(s, (xq, zq)) {
-                    Some((_, _, true)) => {
-                        return Some((beta, None, Contact::Face, (r - p0.y, p1.y - p0.y)));
-                    }
-                    Some((xq, zq, false)) => Some((beta, xq, zq)),
-                    None => face,
-                }
-            }
-            _ => face,
-        };
         if p0.y < r && (contains(self, p0.x, p0.z) || self.within_seams(p0.x, p0.z, r)) {
             return Some((S::ZERO, None, Contact::Face, (S::ZERO, S::ONE)));
         }
         // Edges and vertices can only be touched once the centre is below height r: from q'
         // (or the start, if already there) to the end.
-        let band = face.map_or(p0, |(_, xq, zq)| Vec3::new(xq, r, zq));
+        let band = match face {
+            // Missed where alpha's rounding could have decided it (never in floats): q' again.
+            // (A face point starts at height r or above: the start test above was not its.)
+            Some((beta, xq, zq)) if beta_rounding_counts(d) && beta < S::ONE => {
+                match self.face_point_again(s, (xq, zq)) {
+                    Some((_, _, true)) => {
+                        return Some((beta, None, Contact::Face, (r - p0.y, p1.y - p0.y)));
+                    }
+                    Some((xq, zq, false)) => Vec3::new(xq, r, zq),
+                    None => Vec3::new(xq, r, zq),
+                }
+            }
+            Some((_, xq, zq)) => Vec3::new(xq, r, zq),
+            None => p0,
+        };
         if r == S::ZERO || !self.near_path(band, p1, r) || self.beyond_an_edge(band, p1, r) {
             return None;
         }
@@ -215,7 +216,6 @@ impl<S: Scalar> StandardTriangle<S> {
     /// met neither the face nor the edge, and went 0.7 through the plane), with `q'` within
     /// that of where the face reaches: the new `q'` and whether the face holds it. `None` where
     /// `q'` stands (far off).
-    #[cold]
     #[inline(never)]
     fn face_point_again(&self, s: &StandardSweep<S>, (xq, zq): (S, S)) -> Option<(S, S, bool)> {
         let (p0, p1, r) = (s.p0, s.p1, s.radius);
@@ -305,9 +305,12 @@ fn beta_rounding_counts<S: Scalar>(d: Vec3<S>) -> bool {
     // `EPSILON × run > 8 EPSILON`, the product rounded to a step: a run of 8.5 or more, with no
     // product (a Cortex-M0 has no long multiply).
     let most = S::from_int(8) + S::div_pow2(S::ONE, 1);
-    !S::PRECISION.relative && largest(d.x.abs(), d.z.abs(), S::ZERO) >= most
+    let beyond = |v: S| v >= most || v <= -most;
+    !S::PRECISION.relative && (beyond(d.x) || beyond(d.z))
 }
 
+/// The side the sweep comes from (true: the back) and its heights as seen from that side,
+/// or `None` where no contact is possible.
 fn facing<S: Scalar>(sweep: &Sweep<S>, (y0, y1): (S, S), two_sided: bool) -> Option<(bool, S, S)> {
     // Towards the back (or along the plane behind it): a one-sided triangle ignores it, a
     // two-sided one mirrors y. Contact needs the centre to start on the side it moves
