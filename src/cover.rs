@@ -183,9 +183,9 @@ pub(crate) fn interval<S: Scalar>(
     }
     let (corner, edge, tol) = (t.corner(i), t.edge(i), tolerance(t, i));
     let [a, b, apex] = [j, j + 1, j + 2].map(|k| t.standard_point(v[k % 3]));
-    let out = |p: Vec3<S>| S::dot_unit(p - corner, edge.out());
+    let out = |p: Vec3<S>| edge.out_of(p - corner);
     let on_line = |p: Vec3<S>| p.y.abs() <= tol && out(p).abs() <= tol;
-    let along = |p: Vec3<S>| S::dot_unit(p - corner, edge.along());
+    let along = |p: Vec3<S>| edge.along_of(p - corner);
     let (ua, ub) = (along(a), along(b));
     // A neighbour on the edge's own side (a strip of slivers along it) hides nothing; nor does
     // one whose apex lies on the line, as rounded (the other half of a grid's border cell,

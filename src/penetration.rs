@@ -144,8 +144,8 @@ pub(crate) fn nearest<S: Scalar>(
         return None;
     }
     let flat = Vec3::new(q.x, S::ZERO, q.z);
-    let inside = (t.edges().iter().enumerate())
-        .all(|(i, e)| S::dot_unit(flat - t.corner(i), e.out()) <= S::ZERO);
+    let inside =
+        (t.edges().iter().enumerate()).all(|(i, e)| e.out_of(flat - t.corner(i)) <= S::ZERO);
     if inside {
         // The face region: out along the normal on the centre's side.
         let n = if behind { -t.normal() } else { t.normal() };
@@ -161,8 +161,7 @@ pub(crate) fn nearest<S: Scalar>(
     // The nearest point of the nearest edge segment (its ends are the vertices).
     let mut near: Option<(S, Vec3<S>, Contact)> = None;
     for (i, e) in t.edges().iter().enumerate() {
-        let along = e.along();
-        let u = S::dot_unit(flat - t.corner(i), along);
+        let u = e.along_of(flat - t.corner(i));
         let (u, contact) = if u <= S::ZERO {
             (S::ZERO, Contact::Vertex(i as u8))
         } else if u >= e.len {
@@ -170,7 +169,7 @@ pub(crate) fn nearest<S: Scalar>(
         } else {
             (u, Contact::Edge(i as u8))
         };
-        let p = t.corner(i) + along.map(|a| S::mul_unit(u, a));
+        let p = t.corner(i) + e.along().map(|a| S::mul_unit(u, a));
         let Some((d, _)) = S::direction(q - p) else {
             continue;
         };

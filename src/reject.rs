@@ -29,11 +29,11 @@ impl<S: Scalar> StandardTriangle<S> {
     /// counts (an edge or vertex is touched with the centre in front): see [`clipped_beyond`].
     pub(crate) fn beyond_an_edge(&self, a: Vec3<S>, b: Vec3<S>, r: S) -> bool {
         (0..3).any(|i| {
-            let (c, out) = (self.corner(i), self.edge(i).out());
-            let wa = S::dot_unit(a - c, out);
+            let (c, e) = (self.corner(i), self.edge(i));
+            let wa = e.out_of(a - c);
             // `b`'s distance only where `a` is beyond the line.
             wa > r && {
-                let wb = S::dot_unit(b - c, out);
+                let wb = e.out_of(b - c);
                 let one_sided = !self.two_sided;
                 wb > r || (b.y < S::ZERO && one_sided && clipped_beyond(a, b, wa, wb, r))
             }

@@ -41,7 +41,7 @@ impl<S: Scalar> StandardTriangle<S> {
         } else {
             margin
         };
-        (S::dot_unit(q - self.corner(i), self.edge(i).out()), limit)
+        (self.edge(i).out_of(q - self.corner(i)), limit)
     }
 
     /// For a ray (`r` zero, which meets no edge or vertex) moving by `d` in the frame: whether
@@ -68,7 +68,7 @@ impl<S: Scalar> StandardTriangle<S> {
         let margin = (h + h).mul(slant);
         let q = Vec3::new(xq, S::ZERO, zq);
         self.within_box(q, margin)
-            && (0..3).all(|i| S::dot_unit(q - self.corner(i), self.edge(i).out()) <= margin)
+            && (0..3).all(|i| self.edge(i).out_of(q - self.corner(i)) <= margin)
     }
 
     /// Whether `q` lies in the triangle's box in the x–z plane grown by `grow`.

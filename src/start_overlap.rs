@@ -98,12 +98,11 @@ impl<S: Scalar> StandardTriangle<S> {
             return None;
         }
         let e = self.edge(i);
-        let (along, out) = (e.along(), e.out());
         let z = S::ZERO;
         Some(Feature {
-            q: Vec3::new(S::dot_unit(rel, out), p0.y, z),
-            m: Vec3::new(S::dot_unit(d, out), d.y, z),
-            along: Some((S::dot_unit(rel, along), S::dot_unit(d, along), e.len)),
+            q: Vec3::new(e.out_of(rel), p0.y, z),
+            m: Vec3::new(e.out_of(d), d.y, z),
+            along: Some((e.along_of(rel), e.along_of(d), e.len)),
         })
     }
 
@@ -170,16 +169,13 @@ impl<S: Scalar> StandardTriangle<S> {
         let mut clip = |w0: S, dw: S| clip(&mut b, w0, dw);
         let margin = seam_margin(r);
         for i in 0..3 {
-            let out = self.edge(i).out();
+            let e = self.edge(i);
             let seam = if self.features.edge(i) {
                 S::ZERO
             } else {
                 margin
             };
-            clip(
-                S::dot_unit(p0 - self.corner(i), out) - seam,
-                S::dot_unit(d, out),
-            );
+            clip(e.out_of(p0 - self.corner(i)) - seam, e.out_of(d));
         }
         // The triangle's box grown by the margin bounds the widening, as in `cast`.
         let ((lo, hi), z1) = (self.x_extent(), self.shape().1);

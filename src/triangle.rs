@@ -185,6 +185,18 @@ impl<S: Scalar> Edge<S> {
     pub(crate) fn out(&self) -> Vec3<S::Unit> {
         Vec3::new(-self.dir[1], S::UNIT_ZERO, self.dir[0])
     }
+
+    /// `v`'s component along the edge ([`along`](Self::along)), in the standard frame.
+    #[inline]
+    pub(crate) fn along_of(&self, v: Vec3<S>) -> S {
+        S::dot_unit_xz(v, self.dir)
+    }
+
+    /// `v`'s component away from the triangle ([`out`](Self::out)), in the standard frame.
+    #[inline]
+    pub(crate) fn out_of(&self, v: Vec3<S>) -> S {
+        S::dot_unit_xz(v, [-self.dir[1], self.dir[0]])
+    }
 }
 
 impl<S: Scalar> StandardTriangle<S> {

@@ -117,9 +117,9 @@ impl<S: Scalar> StandardTriangle<S> {
         let e = &self.edge(i);
         let rel = p0 - self.corner(i);
         // Along the edge (u) and away from the triangle in its plane (w).
-        let (along, out) = (e.along(), e.out());
-        let (u0, du) = (S::dot_unit(rel, along), S::dot_unit(d, along));
-        let (w0, dw) = (S::dot_unit(rel, out), S::dot_unit(d, out));
+        let out = e.out();
+        let (u0, du) = (e.along_of(rel), e.along_of(d));
+        let (w0, dw) = (e.out_of(rel), e.out_of(d));
         let (u1, w1) = (u0 + du, w0 + dw);
         let beside = (u0 > S::ZERO || u1 > S::ZERO) && (u0 < e.len || u1 < e.len);
         let within = (w0 <= r || w1 <= r) && (w0 >= -r || w1 >= -r);
@@ -203,11 +203,13 @@ fn first_touch<S: Scalar>(
 /// `q0 × dir`: the offset of a feature from a line through `q0` along the unit `dir`, whose
 /// length is their distance; each component a two-term dot product rounded once.
 pub(crate) fn off_line<S: Scalar>(q0: Vec3<S>, dir: Vec3<S::Unit>) -> Vec3<S> {
-    let z = S::UNIT_ZERO;
+    // Each `a u - b v` as the x–z dot product of (a, _, -b) with (u, v).
+    let two =
+        |a: S, b: S, u: S::Unit, v: S::Unit| S::dot_unit_xz(Vec3::new(a, S::ZERO, -b), [u, v]);
     Vec3::new(
-        S::dot_unit(Vec3::new(q0.y, -q0.z, S::ZERO), Vec3::new(dir.z, dir.y, z)),
-        S::dot_unit(Vec3::new(q0.z, -q0.x, S::ZERO), Vec3::new(dir.x, dir.z, z)),
-        S::dot_unit(Vec3::new(q0.x, -q0.y, S::ZERO), Vec3::new(dir.y, dir.x, z)),
+        two(q0.y, q0.z, dir.z, dir.y),
+        two(q0.z, q0.x, dir.x, dir.z),
+        two(q0.x, q0.y, dir.y, dir.x),
     )
 }
 

@@ -161,6 +161,11 @@ macro_rules! fixed_scalar {
                 <$t>::from_bits(round_shift!($wdot(d, u), $ufrac) as $bits)
             }
             #[inline]
+            fn dot_unit_xz(d: Vec3<Self>, [ux, uz]: [$unit; 2]) -> Self {
+                // The zero's products are constants the compiler leaves out.
+                Self::dot_unit(d, Vec3::new(ux, <$unit>::ZERO, uz))
+            }
+            #[inline]
             fn mul_cmp(a: Self, b: Self, c: Self, d: Self) -> Ordering {
                 let ab = $wmul(a.to_bits(), b.to_bits());
                 let cd = $wmul(c.to_bits(), d.to_bits());

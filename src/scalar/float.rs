@@ -75,6 +75,10 @@ macro_rules! float_scalar {
                 crate::vec3::dot3(d, u)
             }
             #[inline]
+            fn dot_unit_xz(d: Vec3<Self>, [ux, uz]: [Self; 2]) -> Self {
+                d.x * ux + d.z * uz
+            }
+            #[inline]
             fn mul_cmp(a: Self, b: Self, c: Self, d: Self) -> Ordering {
                 (a * b).partial_cmp(&(c * d)).unwrap_or(Ordering::Equal)
             }

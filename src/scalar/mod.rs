@@ -130,6 +130,10 @@ pub(crate) mod sealed {
         /// two points of a standard frame), `u` a unit vector (components within ±1) and a
         /// result in range; `I16F16`'s 32-bit path relies on all three.
         fn dot_unit(d: Vec3<Self>, u: Vec3<Self::Unit>) -> Self;
+        /// [`dot_unit`](Self::dot_unit) with the unit vector `(u[0], 0, u[1])` of the x–z plane
+        /// (an edge's directions in a standard frame), with no product for the zero: the same
+        /// number (fixed point: the same bits; a float's zero may differ in sign).
+        fn dot_unit_xz(d: Vec3<Self>, u: [Self::Unit; 2]) -> Self;
         /// Orders `a * b` against `c * d`, exactly for fixed-point. Needs operands below `8 * LIMIT`.
         fn mul_cmp(a: Self, b: Self, c: Self, d: Self) -> Ordering;
         /// `v` scaled by a positive factor so its largest component has magnitude in `[1/2, 1]`;

@@ -189,3 +189,35 @@ fn div_pow2_rounds_ties_away_at_the_extremes() {
         }
     }
 }
+
+/// `dot_unit_xz` is `dot_unit` with the unit vector's zero y put back: the same number for
+/// floats (the zero product only ever changed a zero's sign), the same bits for fixed point,
+/// on offsets of every magnitude within `7 LIMIT` and directions all round the x–z plane.
+#[test]
+fn dot_unit_xz_is_dot_unit_with_a_zero_y() {
+    use super::sealed::Kernel;
+    use crate::{Scalar, Vec3};
+    fn check<S: Scalar>(seed: u64) {
+        let mut rng = Rng(seed);
+        let limit = S::LIMIT.to_f64();
+        for k in 0..200_000u32 {
+            let scale = 7.0 * limit / f64::from(1u32 << (k % 24));
+            let d =
+                Vec3::new(rng.signed(), rng.signed(), rng.signed()).map(|c| S::from_f64(c * scale));
+            let turn = rng.signed() * core::f64::consts::PI;
+            let dir = Vec3::new(libm::cos(turn), 0.0, libm::sin(turn)).map(S::from_f64);
+            let Some((_, u)) = S::direction(dir) else {
+                continue;
+            };
+            let (full, xz) = (S::dot_unit(d, u), S::dot_unit_xz(d, [u.x, u.z]));
+            assert!(full == xz, "{d:?} · {u:?}: {full:?} and {xz:?}");
+            if !S::PRECISION.relative {
+                assert_eq!(full.to_f64().to_bits(), xz.to_f64().to_bits());
+            }
+        }
+    }
+    check::<f32>(0x2545_F491_4F6C_DD1D);
+    check::<f64>(0x2545_F491_4F6C_DD1D);
+    check::<I16F16>(0x2545_F491_4F6C_DD1D);
+    check::<I32F32>(0x2545_F491_4F6C_DD1D);
+}
