@@ -101,6 +101,7 @@
 //! bit (`tests/mesh.rs` checks it on 10^5 sweeps per scalar).
 
 mod build;
+mod decode;
 mod overlap;
 mod short;
 mod traverse;
@@ -109,9 +110,10 @@ use crate::{Scalar, Triangle, Vec3};
 
 pub(crate) use build::{BuildError, build, item, key_index, set_classes};
 pub use build::{nodes_for, nodes_for_leaves};
+pub(crate) use decode::leaf_slots;
 pub(crate) use overlap::{overlapping, query_cells};
 pub(crate) use short::unit_pad;
-pub(crate) use traverse::{leaf_slots, leaves_along, ray_pad, rounding_pad};
+pub(crate) use traverse::{leaves_along, ray_pad, rounding_pad};
 
 /// Most triangles in a leaf of any tree (a leaf reference holds its count in two bits).
 pub const LEAF: usize = 4;

@@ -4,7 +4,7 @@
 //! floating point by a few integer comparisons per child, which matters most on cores without
 //! a floating-point unit.
 
-use super::traverse::{child_cells, leaf_slots};
+use super::decode::{child_cells, leaf_slots};
 use super::{CLASS_SHIFT, Cells, Grid, LEAF_FLAG, MAX_CLASS, Node, PAYLOAD, STACK};
 use core::ops::Range;
 

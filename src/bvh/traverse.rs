@@ -1,6 +1,7 @@
 //! The swept-ball traversal: the segment against inflated child boxes, nearest child first
 //! (see the module docs of [`bvh`](super)).
 
+use super::decode::{child_lo, leaf_slots, shifts};
 use super::overlap::Walk;
 use super::short::ShortBox;
 use super::{Cells, Grid, LEAF_FLAG, Node, PAYLOAD, STACK};
@@ -212,41 +213,10 @@ fn pow2f(e: u32) -> f32 {
     f32::from_bits((127 + e.min(127)) << 23)
 }
 
-/// Decodes child `k` of `node`, whose own box has minimum `lo`.
-#[inline]
-pub(super) fn child_cells(node: &Node, k: usize, lo: [i32; 3]) -> Cells {
-    let at = |b: usize| {
-        let (a, v) = (b % 3, node.boxes[b][k & 3]);
-        lo[a].wrapping_add((v as i32).wrapping_shl(node.shift[a].min(31) as u32))
-    };
-    ([at(0), at(1), at(2)], [at(3), at(4), at(5)])
-}
-
-/// A node's steps per axis as shifts, at most 31.
-#[inline]
-fn shifts(node: &Node) -> [u32; 3] {
-    node.shift.map(|s| s.min(31) as u32)
-}
-
-/// The minimum of child `k`'s box (`child_cells`' first half), given the node's [`shifts`].
-#[inline]
-fn child_lo(node: &Node, shift: [u32; 3], k: usize, lo: [i32; 3]) -> [i32; 3] {
-    core::array::from_fn(|a| lo[a].wrapping_add((node.boxes[a][k & 3] as i32) << shift[a]))
-}
-
 /// `exit` if before `lim`, else infinity.
 #[inline]
 fn before(exit: f32, lim: f32) -> f32 {
     if exit < lim { exit } else { f32::INFINITY }
-}
-
-/// The triangle slots of a leaf reference: `first .. first + count`.
-#[inline]
-pub(crate) fn leaf_slots(child: u32) -> Option<core::ops::Range<usize>> {
-    (child & LEAF_FLAG != 0).then(|| {
-        let first = ((child & PAYLOAD) >> 2) as usize;
-        first..first + (child & 3) as usize + 1
-    })
 }
 
 /// The leaves a sweep may reach, nearest first: by the box walk where the segment is short

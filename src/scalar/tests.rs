@@ -195,7 +195,6 @@ fn div_pow2_rounds_ties_away_at_the_extremes() {
 /// on offsets of every magnitude within `7 LIMIT` and directions all round the x–z plane.
 #[test]
 fn dot_unit_xz_is_dot_unit_with_a_zero_y() {
-    use super::sealed::Kernel;
     use crate::{Scalar, Vec3};
     fn check<S: Scalar>(seed: u64) {
         let mut rng = Rng(seed);
