@@ -3,7 +3,7 @@
 use crate::Scalar;
 use core::ops::{Add, Mul, Sub};
 
-mod geometry;
+pub(crate) mod geometry;
 mod ops;
 
 /// A point or direction in 3-space: a plain `Copy` struct with no invariant.

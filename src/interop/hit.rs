@@ -3,6 +3,7 @@
 //! and a normal of another length gives a wrong velocity, or overflows fixed point).
 
 use crate::merge::PLANES;
+use crate::vec3::geometry::SQUARED_LENGTH_TOLERANCE;
 use crate::{Contact, Error, Input, Scalar, SceneHit, Vec3, check};
 
 /// A [`SceneHit`] as read, before its normals are checked.
@@ -45,8 +46,8 @@ fn unit<S: Scalar>(n: Vec3<S>) -> Result<Vec3<S>, Error> {
     Err(Error::OutOfRange {
         input: Input::NormalLength,
         value: n.length_squared().to_f64(),
-        min: 1.0 - 2e-4,
-        max: 1.0 + 2e-4,
+        min: 1.0 - SQUARED_LENGTH_TOLERANCE,
+        max: 1.0 + SQUARED_LENGTH_TOLERANCE,
         triangle: None,
     })
 }

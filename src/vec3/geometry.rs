@@ -4,6 +4,9 @@
 use super::Vec3;
 use crate::Scalar;
 
+/// How far from one [`Vec3::is_normalized`] lets a squared length be.
+pub(crate) const SQUARED_LENGTH_TOLERANCE: f64 = 2e-4;
+
 impl<S: Scalar> Vec3<S> {
     /// The part of this vector along the unit vector `n`: `n (self · n)`, the dot product
     /// rounded once and each product as [`scale`](Self::scale) rounds it.
@@ -92,7 +95,7 @@ impl<S: Scalar> Vec3<S> {
     /// Whether the length is one within `1e-4` (glam's test: the squared length within `2e-4`
     /// of one).
     pub fn is_normalized(self) -> bool {
-        (self.length_squared() - S::ONE).abs() <= S::from_f64(2e-4)
+        (self.length_squared() - S::ONE).abs() <= S::from_f64(SQUARED_LENGTH_TOLERANCE)
     }
 
     /// The part of this vector along `o` (any length): along `o`'s unit vector, or zero where
