@@ -1,14 +1,14 @@
 //! Many triangles at once: [`Scene`], a fixed-capacity set of prepared triangles with active
 //! edges computed from adjacency, and its earliest-contact query.
 
-use crate::adjacency::{deactivate, hides};
 use crate::compound::CompoundPart;
-use crate::cover::{covered, interval};
 use crate::merge::{Earliest, PLANES, earliest};
 use crate::scalar::{largest, tie};
 use crate::seam::seam_margin;
 use crate::{Contact, Error, Scalar, StandardTriangle, Sweep, Triangle, Vec3};
 use heapless::Vec;
+
+mod edges;
 
 /// An axis-aligned box, `min <= max` per axis.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -212,38 +212,20 @@ impl<S: Scalar, const N: usize> Scene<S, N> {
         Ok(index)
     }
 
-    /// Switches off edges that flat neighbours cover without sharing a vertex pair
-    /// (T-junctions): those of the new triangle `t`, and those of earlier triangles that one of
-    /// `t`'s edges runs along.
-    fn cover(&mut self, t: usize) {
-        let v = self.sources[t].vertices();
-        for j in 0..self.triangles.len() {
-            for k in 0..3 {
-                let (tj, tt) = (&self.triangles[j], &self.triangles[t]);
-                if !tj.features().edge(k) {
-                    continue;
-                }
-                let near = j == t || (0..3).any(|e| interval(tj, k, tt, v, e).is_some());
-                let all = self.triangles.iter().zip(self.sources.iter());
-                if near && covered(tj, k, all) {
-                    deactivate(&mut self.triangles[j], k);
-                }
-            }
+    /// Removes the triangle at `index` and returns it as it was pushed; the triangles after it
+    /// move down one index, as in `Vec::remove`. Active edges are found anew for every
+    /// triangle, as if the scene had been built without it (a neighbour's edge it hid is
+    /// active again): `O(N²)` in the scene's size, as the pushes were. `None`, the scene
+    /// unchanged, for an index beyond the scene.
+    pub fn remove(&mut self, index: usize) -> Option<Triangle<S>> {
+        if index >= self.len() {
+            return None;
         }
-    }
-
-    /// Switches off the edges `a` and `b` share where the surface is flat or a valley there.
-    fn link(&mut self, a: usize, b: usize) {
-        let (ta, tb) = (self.sources[a].vertices(), self.sources[b].vertices());
-        for i in 0..3 {
-            for j in 0..3 {
-                let shared = ta[i] == tb[(j + 1) % 3] && ta[(i + 1) % 3] == tb[j];
-                if shared && hides(&self.triangles[a], &self.triangles[b], tb[(j + 2) % 3]) {
-                    deactivate(&mut self.triangles[a], i);
-                    deactivate(&mut self.triangles[b], j);
-                }
-            }
-        }
+        self.bounds.remove(index);
+        self.triangles.remove(index);
+        let removed = self.sources.remove(index);
+        self.active_edges_anew();
+        Some(removed)
     }
 
     /// The earliest contact of the sweep with any triangle, or `None`.

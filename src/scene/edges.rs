@@ -1,0 +1,58 @@
+//! A scene's active edges: found as triangles are pushed (each new one against the earlier
+//! ones), and anew for all once one is removed.
+
+use super::Scene;
+use crate::adjacency::{deactivate, hides};
+use crate::cover::{covered, interval};
+use crate::{Features, Scalar};
+
+impl<S: Scalar, const N: usize> Scene<S, N> {
+    /// Every edge active again, then each triangle linked and covered in index order, against
+    /// the ones before it, as pushing them in that order does.
+    pub(super) fn active_edges_anew(&mut self) {
+        for t in self.triangles.iter_mut() {
+            *t = t.with_features(Features::ALL);
+        }
+        for index in 0..self.triangles.len() {
+            for other in 0..index {
+                self.link(index, other);
+            }
+            self.cover(index);
+        }
+    }
+
+    /// Switches off edges that flat neighbours cover without sharing a vertex pair
+    /// (T-junctions): those of triangle `t`, and those of earlier triangles that one of `t`'s
+    /// edges runs along. Only the triangles up to `t` count, as when `t` was the last pushed.
+    pub(super) fn cover(&mut self, t: usize) {
+        let v = self.sources[t].vertices();
+        let upto = t + 1;
+        for j in 0..upto {
+            for k in 0..3 {
+                let (tj, tt) = (&self.triangles[j], &self.triangles[t]);
+                if !tj.features().edge(k) {
+                    continue;
+                }
+                let near = j == t || (0..3).any(|e| interval(tj, k, tt, v, e).is_some());
+                let all = self.triangles.iter().zip(self.sources.iter()).take(upto);
+                if near && covered(tj, k, all) {
+                    deactivate(&mut self.triangles[j], k);
+                }
+            }
+        }
+    }
+
+    /// Switches off the edges `a` and `b` share where the surface is flat or a valley there.
+    pub(super) fn link(&mut self, a: usize, b: usize) {
+        let (ta, tb) = (self.sources[a].vertices(), self.sources[b].vertices());
+        for i in 0..3 {
+            for j in 0..3 {
+                let shared = ta[i] == tb[(j + 1) % 3] && ta[(i + 1) % 3] == tb[j];
+                if shared && hides(&self.triangles[a], &self.triangles[b], tb[(j + 2) % 3]) {
+                    deactivate(&mut self.triangles[a], i);
+                    deactivate(&mut self.triangles[b], j);
+                }
+            }
+        }
+    }
+}
