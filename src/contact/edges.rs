@@ -3,7 +3,7 @@
 
 use super::Touch;
 use crate::reject::Cut;
-use crate::scalar::largest;
+use crate::scalar::{largest, tie};
 use crate::{Contact, Scalar, StandardTriangle, Vec3};
 
 /// An edge or vertex contact with its alpha still as a fraction `t / len` (see `first_touch`):
@@ -41,27 +41,24 @@ impl<S: Scalar> StandardTriangle<S> {
     fn earliest(&self, p0: Vec3<S>, d: Vec3<S>, r: S, from: S, cut: Cut<S>) -> Option<Touch<S>> {
         let after = |c: &Timed<S>| c.0.0 >= from;
         let mut best: Option<Timed<S>> = None;
-        // Which edges are met, for the vertices at their ends.
-        let mut met = [false; 3];
-        for (i, m) in met.iter_mut().enumerate() {
+        // Each edge's rounded alpha, for the vertices at its ends.
+        let mut edges: [Option<S>; 3] = [None; 3];
+        for (i, at) in edges.iter_mut().enumerate() {
             if self.features.edge(i) {
                 let e = self.edge_contact(i, p0, d, r, cut).filter(after);
-                *m = e.is_some();
+                *at = e.map(|e| e.0.0);
                 best = earlier(best, e);
             }
         }
         // The path's length and direction, computed once and only if a vertex needs them.
         let mut motion = None;
+        // Where an edge's contact lies next to its vertex, the two arrive together; the edge's
+        // normal is the right one, so a vertex must be earlier than each edge through it by
+        // more than rounding. Against any other contact (another vertex, the opposite edge) the
+        // exact order decides: there a margin would keep a contact later than the vertex's.
+        let tie = tie::<S>();
         for i in 0..3 {
-            // A vertex is never met before an edge through it that is met at all: the centre
-            // is never farther from the edge's line than from the vertex, so it comes within r
-            // of the line first, and `edge_contact` only reports a line's first touch within
-            // the edge. Where the two arrive together the edge's normal is the right one.
-            // Against any other contact (another vertex, the opposite edge) the exact order
-            // decides.
-            if met[i]
-                || met[(i + 2) % 3]
-                || !self.features.vertex(i)
+            if !self.features.vertex(i)
                 || self.vertex_out_of_reach(i, p0, d, r)
                 || self.vertex_line_misses(i, p0, d, r)
                 || cut.short_of(p0 - self.corner(i), d, r)
@@ -77,7 +74,13 @@ impl<S: Scalar> StandardTriangle<S> {
                     resting(q, r).then_some((at, (S::ZERO, S::ONE)))
                 }
             };
-            let v = v.filter(after);
+            // The edges through vertex `i`: edge `i` (from it) and the one before (to it).
+            let shadowed = |v: &Timed<S>| {
+                [i, (i + 2) % 3]
+                    .iter()
+                    .any(|&e| edges[e].is_some_and(|a| v.0.0 >= a - tie))
+            };
+            let v = v.filter(|v| after(v) && !shadowed(v));
             best = earlier(best, v);
         }
         best.map(|((alpha, offset, contact), key)| (alpha, offset, contact, key))
@@ -201,7 +204,8 @@ fn first_touch<S: Scalar>(
 }
 
 /// `q0 × dir`: the offset of a feature from a line through `q0` along the unit `dir`, whose
-/// length is their distance; each component a two-term dot product rounded once.
+/// length is their distance; each component a two-term dot product (rounded once in fixed
+/// point; a float rounds each product and their sum).
 pub(crate) fn off_line<S: Scalar>(q0: Vec3<S>, dir: Vec3<S::Unit>) -> Vec3<S> {
     // Each `a u - b v` as the x–z dot product of (a, _, -b) with (u, v).
     let two =
