@@ -212,20 +212,46 @@ impl<S: Scalar, const N: usize> Scene<S, N> {
         Ok(index)
     }
 
-    /// Removes the triangle at `index` and returns it as it was pushed; the triangles after it
-    /// move down one index, as in `Vec::remove`. Active edges are found anew for every
-    /// triangle, as if the scene had been built without it (a neighbour's edge it hid is
-    /// active again): `O(N²)` in the scene's size, as the pushes were. `None`, the scene
-    /// unchanged, for an index beyond the scene.
+    /// Removes the triangle at `index` and returns it as it was pushed (its sidedness was
+    /// [`triangle(index)`](Self::triangle)`.is_two_sided()`); the triangles after it move down
+    /// one index, as in `Vec::remove`. `None`, the scene unchanged, for an index beyond it.
+    ///
+    /// Every active edge is then found anew, as if the scene had been built without it (an
+    /// edge the triangle hid is active again): the cost of building the scene again, `O(n²)` in
+    /// its length `n` (in `f32` on a PC, tens of milliseconds for 512 triangles). Keep what
+    /// changes at run time, a door or a breakable wall, in a small scene of its own beside the
+    /// level ([`Compound`](crate::Compound)), and take several triangles out at once with
+    /// [`retain`](Self::retain). Indices kept from before (a [`SceneHit::index`], a
+    /// character's floor) name other triangles afterwards, and a triangle pushed back comes
+    /// last, so ties between simultaneous contacts may then be reported by another index.
     pub fn remove(&mut self, index: usize) -> Option<Triangle<S>> {
-        if index >= self.len() {
-            return None;
-        }
-        self.bounds.remove(index);
-        self.triangles.remove(index);
-        let removed = self.sources.remove(index);
-        self.active_edges_anew();
+        let removed = self.sources.get(index).copied()?;
+        self.retain(|i, _| i != index);
         Some(removed)
+    }
+
+    /// Keeps the triangles for which `keep(index, triangle as pushed)` is true, in order, and
+    /// finds every active edge anew once, as [`remove`](Self::remove) does for one: the scene
+    /// as if built from the triangles kept. Returns how many were taken out.
+    pub fn retain(&mut self, mut keep: impl FnMut(usize, &Triangle<S>) -> bool) -> usize {
+        let mut kept = 0;
+        for i in 0..self.len() {
+            if !keep(i, &self.sources[i]) {
+                continue;
+            }
+            self.bounds[kept] = self.bounds[i];
+            self.triangles[kept] = self.triangles[i];
+            self.sources[kept] = self.sources[i];
+            kept += 1;
+        }
+        let removed = self.len() - kept;
+        if removed > 0 {
+            self.bounds.truncate(kept);
+            self.triangles.truncate(kept);
+            self.sources.truncate(kept);
+            self.active_edges_anew();
+        }
+        removed
     }
 
     /// The earliest contact of the sweep with any triangle, or `None`.

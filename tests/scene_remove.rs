@@ -1,7 +1,8 @@
-//! `Scene::remove`: the scene left is the scene built without the triangle, active edges
-//! included (an edge the removed triangle hid is active again), whatever triangle goes, on a
-//! bumpy terrain (ridges and valleys), a floor with T-junctions (edges hidden by covering, not
-//! by a shared vertex pair) and two-sided triangles; an index beyond the scene changes nothing.
+//! `Scene::remove` and `Scene::retain`: the scene left is the scene built without the
+//! triangles taken out, active edges included (an edge a removed triangle hid is active
+//! again), whatever triangle goes, on a bumpy terrain (ridges and valleys), a floor with
+//! T-junctions (edges hidden by covering, not by a shared vertex pair) and two-sided
+//! triangles; an index beyond the scene changes nothing.
 //! Every property in every scalar.
 
 #[macro_use]
@@ -94,8 +95,41 @@ fn removing_beyond_the_scene_changes_nothing<S: Scalar>() {
     assert_eq!(empty.remove(0), None::<Triangle<S>>);
 }
 
+/// `retain` takes out a whole set at once: the scene built from the triangles kept, and the
+/// count taken out; keeping all changes nothing.
+fn retaining_is_building_from_those_kept<S: Scalar>() {
+    let mut rng = Rng(0x7E7A_1A5E_5EED_0001);
+    let src = meshes::heightfield(&mut rng, 4, 1.0, 0.4);
+    let full = scene::<S>(&src, |k| k.is_multiple_of(5));
+    for m in [2, 3, 7] {
+        let mut s = full.clone();
+        let mut seen = Vec::new();
+        let out = s.retain(|k, t| {
+            seen.push((k, *t));
+            k % m != 1
+        });
+        let all: Vec<(usize, Triangle<S>)> =
+            (0..src.len()).map(|k| (k, meshes::tri(src[k]))).collect();
+        assert_eq!(
+            seen, all,
+            "retain offers each triangle once, in order, as pushed"
+        );
+        let kept: Vec<usize> = (0..src.len()).filter(|k| k % m != 1).collect();
+        assert_eq!(out, src.len() - kept.len());
+        let rest: Vec<[P; 3]> = kept.iter().map(|&k| src[k]).collect();
+        assert!(
+            same(&s, &scene::<S>(&rest, |j| kept[j].is_multiple_of(5))),
+            "every {m}th from 1 out"
+        );
+    }
+    let mut s = full.clone();
+    assert_eq!(s.retain(|_, _| true), 0);
+    assert!(same(&s, &full));
+}
+
 every_scalar!(
     removing_a_triangle_is_building_without_it,
+    retaining_is_building_from_those_kept,
     edge_comes_back_with_its_neighbour_gone,
     removing_beyond_the_scene_changes_nothing
 );
