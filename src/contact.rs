@@ -298,8 +298,8 @@ pub(crate) fn within_reach<S: Scalar>(
 /// Whether `q'` from beta as rounded may be off by more than the face allows for: beta's half
 /// step times the path's run along the plane beyond four steps (the seam margin's own part, by
 /// which the face is widened along its inactive edges), that is a run of 8.5 units or more in
-/// fixed point (the product rounded to a step). Never for floats, whose beta rounds relative to itself: a step of it times the
-/// run is within the rounding of the run's coordinates.
+/// fixed point (the product rounded to a step). Never for floats, whose beta rounds relative to
+/// itself: a step of it times the run is within the rounding of the run's coordinates.
 #[inline]
 fn beta_rounding_counts<S: Scalar>(d: Vec3<S>) -> bool {
     // `EPSILON × run > 8 EPSILON`, the product rounded to a step: a run of 8.5 or more, with no

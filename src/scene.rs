@@ -205,10 +205,7 @@ impl<S: Scalar, const N: usize> Scene<S, N> {
             self.triangles.push(st),
             self.sources.push(t),
         );
-        for other in 0..index {
-            self.link(index, other);
-        }
-        self.cover(index);
+        self.edges_against_earlier(index);
         Ok(index)
     }
 

@@ -1,10 +1,10 @@
 //! Long sweeps at the apexes of fans of 9 to 24 triangles (more can tie than the merge keeps,
 //! where its second visit runs): the mesh, leaves of four and the linear scan answer alike.
+#[macro_use]
 mod common;
 mod meshes;
 
 use common::{P, Rng};
-use fixed::types::{I16F16, I32F32};
 use meshes::against_linear_by;
 
 fn fans(rng: &mut Rng) -> Vec<[P; 3]> {
@@ -59,15 +59,4 @@ fn at_apexes<S: ballcast::Scalar>() {
     });
 }
 
-#[test]
-fn i16f16() {
-    at_apexes::<I16F16>();
-}
-#[test]
-fn i32f32() {
-    at_apexes::<I32F32>();
-}
-#[test]
-fn f32() {
-    at_apexes::<f32>();
-}
+every_scalar!(at_apexes);

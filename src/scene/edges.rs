@@ -14,11 +14,17 @@ impl<S: Scalar, const N: usize> Scene<S, N> {
             *t = t.with_features(Features::ALL);
         }
         for index in 0..self.triangles.len() {
-            for other in 0..index {
-                self.link(index, other);
-            }
-            self.cover(index);
+            self.edges_against_earlier(index);
         }
+    }
+
+    /// Triangle `index`'s edges against those of the triangles before it, and theirs against
+    /// its, as when it was the last pushed.
+    pub(super) fn edges_against_earlier(&mut self, index: usize) {
+        for other in 0..index {
+            self.link(index, other);
+        }
+        self.cover(index);
     }
 
     /// Switches off edges that flat neighbours cover without sharing a vertex pair
@@ -28,7 +34,7 @@ impl<S: Scalar, const N: usize> Scene<S, N> {
     /// Only triangles whose boxes meet are compared: an edge that runs along another within
     /// the tolerance of `interval` lies within it of that edge, far inside the rounding the
     /// boxes are grown by, so the answers are those of comparing every pair.
-    pub(super) fn cover(&mut self, t: usize) {
+    fn cover(&mut self, t: usize) {
         let v = self.sources[t].vertices();
         let upto = t + 1;
         for j in 0..upto {
@@ -58,7 +64,7 @@ impl<S: Scalar, const N: usize> Scene<S, N> {
 
     /// Switches off the edges `a` and `b` share where the surface is flat or a valley there.
     /// (Triangles that share a vertex pair have boxes that meet: others are passed by.)
-    pub(super) fn link(&mut self, a: usize, b: usize) {
+    fn link(&mut self, a: usize, b: usize) {
         if !self.bounds[a].overlaps(&self.bounds[b]) {
             return;
         }
