@@ -52,17 +52,20 @@ pub(super) fn split_mul_i32(a: i32, b: i32) -> i64 {
 }
 
 /// `round(s b / 2^16)` to nearest, ties away from zero, for `|s| < 2^16`: `I16F16`'s `mul`
-/// with one factor below one. With `b = bh 2^16 + bl` (`bl` unsigned), `|s| b / 2^16` is
-/// `|s| bh + |s| bl / 2^16`, two products that fit 32 bits, and its magnitude stays below
-/// `2^31 - 2^15`: no saturation, and the sign of `s` applies afterwards (the rounding is odd).
+/// with one factor below one. With `b = bh 2^16 + bl`, `bl` the signed low half (in
+/// `[-2^15, 2^15)`, so `bh` is at most `2^15`), both `s bh` and `s bl` fit 32 bits, and
+/// `s b + 2^15 - [s b < 0]` shifted right by 16 (a floor) is the rounded quotient: `s bh` whole
+/// plus the shifted rest, with no branch on a sign. The rest is shifted in two steps, as
+/// `s bl + 2^15` reaches `2^31` (for `s = 1 - 2^16`, `bl = -2^15`).
 #[inline]
 pub(super) fn small_mul_i32(s: i32, b: i32) -> i32 {
-    let m = s.unsigned_abs() as i32;
-    let (bh, bl) = (b >> 16, (b & 0xFFFF) as u32);
-    let low = m as u32 * bl;
-    let whole = m * bh + (low >> 16) as i32;
-    let r = whole + (((low & 0xFFFF) + (1 << 15) - (whole < 0) as u32) >> 16) as i32;
-    if s < 0 { -r } else { r }
+    let bl = b as i16 as i32;
+    // (b - bl) / 2^16 without its overflow for b near i32::MAX: bit 15 of b set makes bl
+    // negative, and bh one more than b's top half.
+    let bh = (b >> 16) - ((b << 16) >> 31);
+    // The product's sign; a zero product has `s bl` zero and rounds to zero either way.
+    let negative = ((s ^ b) as u32 >> 31) as i32;
+    s * bh + ((((s * bl - negative) >> 1) + (1 << 14)) >> 15)
 }
 
 /// `a * b` exactly for unsigned operands, as [`split_mul_i32`].
@@ -81,13 +84,15 @@ pub(super) fn split_mul_u32(a: u32, b: u32) -> u64 {
 /// steps of 4 up to 32 for longer vectors. The exact remainder `|a n| - q |d|` corrects the
 /// estimate and decides the rounding. `q` is `round(n 2^16 / d)`, the fraction as
 /// [`split_div_i32`] rounds it, which gives `F` for `k = 16` ([`floor_of_rounded`]) with no
-/// division steps; [`quotient_steps`] extend it four bits at a time. `None` for `|n| >= |d|`.
+/// division steps; [`quotient_steps`] extend it four bits at a time. `None` for `|n| >= |d|`
+/// and for an `a` of `i32::MIN`, the only one whose result can saturate (no sweep's motion
+/// reaches it): so that no other pays for the test.
 pub(super) fn split_scale_fraction_i32(a: [i32; 3], n: i32, d: i32, q: i32) -> Option<[i32; 3]> {
     let (nm, dm) = (n.unsigned_abs(), d.unsigned_abs());
-    if nm >= dm {
+    let top = a.iter().fold(0, |m, c| m | c.unsigned_abs());
+    if nm >= dm || top >> 31 != 0 {
         return None;
     }
-    let top = a.iter().fold(0, |m, c| m | c.unsigned_abs());
     let (mut f, mut r) = floor_of_rounded(nm, dm, q.unsigned_abs());
     let mut k = 16;
     while k < 32 && top >> (k - 1) != 0 {
@@ -125,14 +130,10 @@ fn scale_one(a: i32, n: i32, d: i32, (f, dm): (u32, u32)) -> i32 {
         q += 1;
         rem -= dm;
     }
-    // Half or more of the divisor left: away from zero. q <= |a| <= 2^31 afterwards, so its
-    // negation fits and only a positive 2^31 saturates.
-    let q = q + (rem >= dm - rem) as u32;
-    if (a ^ n ^ d) < 0 {
-        q.wrapping_neg() as i32
-    } else {
-        q.min(i32::MAX as u32) as i32
-    }
+    // Half or more of the divisor left: away from zero. q <= |a| < 2^31 afterwards: it and
+    // its negation fit.
+    let q = (q + (rem >= dm - rem) as u32) as i32;
+    if (a ^ n ^ d) < 0 { -q } else { q }
 }
 
 /// `floor(a f / 2^32)`, from four 16 × 16 → 32-bit products: `ah fl` plus the carry of the low

@@ -127,7 +127,7 @@ fn split_products_are_exact() {
         if let Some(got) = split_scale_fraction_i32(a, n, d, split_div_i32(n, d)) {
             assert_eq!(got, want, "{a:?} * {n} / {d}");
         } else {
-            assert!(n.unsigned_abs() >= d.unsigned_abs());
+            assert!(n.unsigned_abs() >= d.unsigned_abs() || a.contains(&i32::MIN));
         }
     }
     for a in [i32::MIN, i32::MIN + 1, -1, 0, 1, i32::MAX] {
@@ -142,9 +142,11 @@ fn split_products_are_exact() {
         ] {
             let f = |b: i32| I16F16::from_bits(b);
             let want = <I16F16 as Kernel>::mul_div(f(a), f(n), f(d)).to_bits();
+            // i32::MIN, which may saturate, is left to `mul_div` itself.
+            let want = (a != i32::MIN).then_some([want; 3]);
             assert_eq!(
                 split_scale_fraction_i32([a; 3], n, d, split_div_i32(n, d)),
-                Some([want; 3]),
+                want,
                 "{a} * {n} / {d}"
             );
         }
