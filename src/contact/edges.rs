@@ -148,7 +148,7 @@ impl<S: Scalar> StandardTriangle<S> {
             let offset = Vec3::new(S::mul_unit(w0, out.x), p0.y, S::mul_unit(w0, out.z));
             return Some(((z, Some(offset), Contact::Edge(i as u8)), (z, S::ONE)));
         };
-        let (beta, key) = first_touch(Vec3::new(w0, p0.y, z), motion, r)?;
+        let (beta, key) = first_touch_across((w0, p0.y), motion, r)?;
         let (u, w, y) = (u0 + beta.mul(du), w0 + beta.mul(dw), p0.y + beta.mul(d.y));
         // One-sided, the centre must be in front at contact; two-sided, either side will do.
         if !(u > z && u < e.len && (y >= z || self.two_sided)) {
@@ -184,12 +184,33 @@ fn first_touch<S: Scalar>(
     (len, dir): (S, Vec3<S::Unit>),
     r: S,
 ) -> Option<(S, (S, S))> {
+    touch(S::dot_unit(q0, dir), || S::chord(r, off_line(q0, dir)), len)
+}
+
+/// [`first_touch`] for an edge, in the plane across it: the offset `(w0, y0, 0)` from the
+/// edge's line and a direction whose z is zero. The same numbers with the zero terms left out
+/// (a float's sum less a zero may differ in the sign of a zero, which no result keeps).
+fn first_touch_across<S: Scalar>(
+    (w0, y0): (S, S),
+    (len, dir): (S, Vec3<S::Unit>),
+    r: S,
+) -> Option<(S, (S, S))> {
+    // The in-plane dot and cross products as x–z dot products: (w0, y0)·(x, y) and the cross
+    // product's only nonzero component, w0 y − y0 x.
+    let s = S::dot_unit_xz(Vec3::new(w0, S::ZERO, y0), [dir.x, dir.y]);
+    let off = || S::dot_unit_xz(Vec3::new(w0, S::ZERO, -y0), [dir.y, dir.x]);
+    touch(s, || S::chord(r, Vec3::new(S::ZERO, S::ZERO, off())), len)
+}
+
+/// [`first_touch`] from `s`, the start's offset along the direction, and the half-chord the
+/// line of motion cuts from the ball about the feature (`None`: it passes farther than `r`).
+#[inline(always)]
+fn touch<S: Scalar>(s: S, chord: impl FnOnce() -> Option<S>, len: S) -> Option<(S, (S, S))> {
     // Moving away from the feature; moving square to it counts, for a ball already within r.
-    let s = S::dot_unit(q0, dir);
     if s > S::ZERO {
         return None;
     }
-    let t = -s - S::chord(r, off_line(q0, dir))?;
+    let t = -s - chord()?;
     // At or before the start: alpha `+0`. (A ball exactly `r` from the feature moving square to
     // it has `s = +0` and a chord of zero: `-s - 0` is a float's `-0`, which `t / len` kept.)
     if t <= S::ZERO {
