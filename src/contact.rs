@@ -123,16 +123,7 @@ impl<S: Scalar> StandardTriangle<S> {
             s.p0.y = -s.p0.y;
             s.p1.y = -s.p1.y;
         }
-        let touch = self.cast_front(&s, reach)?;
-        Some(self.hit(sweep, touch, back))
-    }
-
-    /// The hit of a contact found in the standard frame, in world terms: out of line, so that
-    /// the misses' path does not pay for its registers; inline on bare-metal Arm, where the
-    /// call's arguments cost a Cortex-M0 more than the registers (7 instructions a `cast`).
-    #[cfg_attr(not(all(target_arch = "arm", target_os = "none")), inline(never))]
-    fn hit(&self, sweep: &Sweep<S>, touch: Touch<S>, back: bool) -> Hit<S> {
-        let (alpha, offset, contact, (num, den)) = touch;
+        let (alpha, offset, contact, (num, den)) = self.cast_front(&s, reach)?;
         // The centre at contact from the unrounded fraction: a few steps of `S` off, where
         // `p0 + alpha (p1 - p0)` would carry alpha's rounding times the path's length.
         let (p0, d) = (sweep.p0(), sweep.p1() - sweep.p0());
@@ -142,7 +133,6 @@ impl<S: Scalar> StandardTriangle<S> {
             p0 + S::scale_fraction(d, num, den, alpha)
         };
         let normal = match offset {
-            None if back => -self.normal(),
             None => self.normal(),
             Some(mut v) => {
                 if back {
@@ -151,12 +141,16 @@ impl<S: Scalar> StandardTriangle<S> {
                 unit(self.world_direction(v)).unwrap_or(self.normal())
             }
         };
-        Hit {
+        Some(Hit {
             alpha,
             position,
-            normal,
+            normal: if back && offset.is_none() {
+                -normal
+            } else {
+                normal
+            },
             contact,
-        }
+        })
     }
 
     /// `cast` for a sweep whose centre starts in front of the plane (or in it); edges and

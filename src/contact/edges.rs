@@ -65,7 +65,7 @@ impl<S: Scalar> StandardTriangle<S> {
             {
                 continue;
             }
-            let v = match *motion.get_or_insert_with(|| direction(d)) {
+            let v = match *motion.get_or_insert_with(|| S::direction(d)) {
                 Some(m) => self.vertex_contact(i, p0, d, m, r),
                 // No motion: only an overlap at the start.
                 None => {
@@ -259,11 +259,4 @@ fn earlier<S: Scalar>(a: Option<Timed<S>>, b: Option<Timed<S>>) -> Option<Timed<
         }
         (x, y) => x.or(y),
     }
-}
-
-/// The path's length and direction, out of line: computed only for a vertex that may be met,
-/// not ahead of the rejections by the compiler's scheduling.
-#[inline(never)]
-fn direction<S: Scalar>(d: Vec3<S>) -> Option<(S, Vec3<S::Unit>)> {
-    S::direction(d)
 }
