@@ -75,7 +75,13 @@ pub(crate) fn link_all<S: Scalar>(
             let (ha, hb) = (h[e], h[(e + 1) % 3]);
             // Any order of a pair's two vertices on which both its edges agree: by hash, and
             // on equal hashes (equal or colliding points) by x, then y, then z.
-            let forward = ha < hb || (ha == hb && lexical(a, b) == Ordering::Less);
+            // (Decided without a branch on the hashes' random order: one the predictor misses
+            // half the time.)
+            let forward = if ha != hb {
+                ha < hb
+            } else {
+                lexical(a, b) == Ordering::Less
+            };
             let key = (ha ^ hb) >> (64 - HASH_BITS);
             *slot = key << (SLOT_BITS + 1) | (forward as u64) << SLOT_BITS | (used + e) as u64;
         }
@@ -185,30 +191,26 @@ fn link<S: Scalar>(
     let (Some(ta), Some(tb)) = (source(a), source(b)) else {
         return false;
     };
-    // The vertex after `k < 3`, around the triangle; vertex `k` of a source, read in place.
-    let next = |k: usize| if k < 2 { k + 1 } else { 0 };
-    fn at<S: Scalar>(t: &Triangle<S>, k: usize) -> &Vec3<S> {
-        match k {
-            0 => &t.v0,
-            1 => &t.v1,
-            _ => &t.v2,
-        }
-    }
-    let (va, vb) = (|k| at(ta, k), |k| at(tb, k));
-    let (i1, j1) = (next(i), next(j));
-    let (i2, j2) = (next(i1), next(j1));
-    if a == b || va(i) != vb(j1) || va(i1) != vb(j) {
+    // The vertices from `i` and `j` on, around each triangle: by indexing, not by branches on
+    // the edge, which varies at random from pair to pair (a mispredicted branch costs a modern
+    // core more than the loads). `i`, `j` < 3 (remainders): no bounds checks.
+    let around = |t: &Triangle<S>, k: usize| {
+        let v = t.vertices();
+        [v[k], v[[1, 2, 0][k]], v[[2, 0, 1][k]]]
+    };
+    let (va, vb) = (around(ta, i), around(tb, j));
+    if a == b || va[0] != vb[1] || va[1] != vb[0] {
         return false;
     }
     let (Some(pa), Some(pb)) = (triangles.get(a), triangles.get(b)) else {
         return false;
     };
-    if hides(pa, pb, *vb(j2)) {
+    if hides(pa, pb, vb[2]) {
         deactivate(&mut triangles[a], i);
         deactivate(&mut triangles[b], j);
     }
     // A triangle's exact reverse (its back, as a two-sided floor is made) is no partner.
-    va(i2) != vb(j2)
+    va[2] != vb[2]
 }
 
 /// Orders points by x, then y, then z (validated, so never NaN).
