@@ -47,6 +47,7 @@ mod walk;
 pub use buf::HeightfieldBuf;
 pub use error::HeightfieldError;
 
+use crate::triangle::Frame;
 use crate::{Features, Scalar, StandardTriangle, Triangle, Vec3};
 
 /// The hole bit of a cell byte: the cell has no triangles.
@@ -184,6 +185,7 @@ impl<'a, S: Scalar> Heightfield<'a, S> {
 
     /// The corners of the cell at column `i`, row `k`: vertices `(i, k)`, `(i, k + 1)`,
     /// `(i + 1, k + 1)` and `(i + 1, k)`, if on the grid.
+    #[inline]
     fn corners(&self, i: u32, k: u32) -> Option<[Vec3<S>; 4]> {
         // The cell's two grid lines each way, shared by its corners.
         let (o, a) = (self.origin, |o: S, n: u32| self.along(o, n));
@@ -199,6 +201,16 @@ impl<'a, S: Scalar> Heightfield<'a, S> {
     /// [`corners`](Self::corners) and byte.
     fn prepare_from(corners: [Vec3<S>; 4], index: usize, byte: u8) -> Option<StandardTriangle<S>> {
         let st = StandardTriangle::new(&half(corners, index % 2)).ok()?;
+        Some(st.with_features(Features::of_edges(byte >> (3 * (index % 2)))))
+    }
+
+    /// [`prepare_from`](Self::prepare_from) the corners of the cell at column `i`, row `k`,
+    /// made here, where the preparation runs: passed in a copy just stored, they would be
+    /// loaded back before the stores complete (a store-forwarding wait on x86-64).
+    #[inline(never)]
+    fn prepare_cell(&self, i: u32, k: u32, index: usize, byte: u8) -> Option<StandardTriangle<S>> {
+        let t = half(self.corners(i, k)?, index % 2);
+        let st = Frame::of(&t).ok()?.finish(&t).ok()?;
         Some(st.with_features(Features::of_edges(byte >> (3 * (index % 2)))))
     }
 

@@ -73,11 +73,12 @@ impl<S: Scalar, I: MeshIndex> CompactMesh<'_, S, I> {
         // `f64` plane test they seldom do, and the triangle is prepared at once.
         // With a cache the whole triangle is prepared and kept, for the next query.
         let cast_slot = |s: usize, reach: S| -> Option<(usize, Hit<S>)> {
-            let (t, byte) = (triangle(self.vertices, corners(s)?)?, *self.bytes.get(s)?);
+            let byte = *self.bytes.get(s)?;
             let hit = if cull.is_err() && !K::ON {
+                let t = triangle(self.vertices, corners(s)?)?;
                 cast_lazily(&t, byte, sweep, reach)
             } else {
-                let st = prepare(&t, byte)?;
+                let st = prepare_at(self.vertices, corners(s)?, byte)?;
                 cache.put(s, &st);
                 st.cast_within(sweep, reach)
             };
@@ -144,6 +145,19 @@ pub(super) fn triangle<S: Scalar>(
 /// `t` prepared with the features and sidedness of `byte`.
 pub(super) fn prepare<S: Scalar>(t: &Triangle<S>, byte: u8) -> Option<StandardTriangle<S>> {
     Some(with_byte(StandardTriangle::new(t).ok()?, byte))
+}
+
+/// The triangle of `vertices` at `corners` prepared with `byte`, its vertices read here, where
+/// the preparation runs, not through a copy just stored.
+#[inline(never)]
+fn prepare_at<S: Scalar>(
+    vertices: &[Vec3<S>],
+    corners: [usize; 3],
+    byte: u8,
+) -> Option<StandardTriangle<S>> {
+    let t = triangle(vertices, corners)?;
+    let st = Frame::of(&t).ok()?.finish(&t).ok()?;
+    Some(with_byte(st, byte))
 }
 
 /// The contact of `t` (a triangle with `byte`) with the sweep at alpha `reach` or earlier, its

@@ -190,8 +190,6 @@ impl<S: Scalar> Heightfield<'_, S> {
                 let Some(span) = path.clip_within(lo, hi, (t0, t1.min(lim)), 0..2) else {
                     continue;
                 };
-                // The cell's corners in `S`, made once for both triangles, when one needs them.
-                let mut corners = None;
                 for (half, v) in [(0, [p00, p01, p11]), (1, [p00, p11, p10])] {
                     let t = 2 * c + half;
                     // A kept triangle is cast at once: its heights cull as the plane would.
@@ -206,9 +204,7 @@ impl<S: Scalar> Heightfield<'_, S> {
                     let tri = match &kept {
                         Some(tri) => tri,
                         None => {
-                            let q =
-                                *corners.get_or_insert_with(|| self.corners(i as u32, k as u32));
-                            let Some(tri) = q.and_then(|q| Self::prepare_from(q, t, byte)) else {
+                            let Some(tri) = self.prepare_cell(i as u32, k as u32, t, byte) else {
                                 continue;
                             };
                             fresh = tri;
