@@ -288,8 +288,9 @@ impl Grid {
     }
 
     /// The bounding box of a triangle in world units, `f64`.
+    #[inline]
     pub(crate) fn bounds<S: Scalar>(t: &Triangle<S>) -> ([f64; 3], [f64; 3]) {
-        let [p, q, r] = t.vertices().map(|v| v.to_array());
+        let (p, q, r) = (t.v0.to_array(), t.v1.to_array(), t.v2.to_array());
         let lo = |a: S, b: S| if b < a { b } else { a };
         let hi = |a: S, b: S| if b > a { b } else { a };
         (
@@ -300,6 +301,7 @@ impl Grid {
 
     /// The cells of the box from `min` to `max` (world units, `min <= max`), rounded outward
     /// and grown by one cell.
+    #[inline]
     pub(crate) fn cells(exponent: i32, min: [f64; 3], max: [f64; 3]) -> Cells {
         let s = Self::scale(exponent);
         (min.map(|v| floor(v * s) - 1), max.map(|v| ceil(v * s) + 1))
