@@ -128,9 +128,15 @@ impl<S: Scalar, I: MeshIndex> CompactMesh<'_, S, I> {
 }
 
 /// The corners of `vertices` at `corners` in `f64`, if they exist.
+#[inline]
 fn world<S: Scalar>(vertices: &[Vec3<S>], corners: [usize; 3]) -> Option<[[f64; 3]; 3]> {
-    let v = |k: usize| vertices.get(corners[k]);
-    Some([v(0)?, v(1)?, v(2)?].map(|p| p.to_array().map(S::to_f64)))
+    // Each vertex converted as it is read (an array's `map` here was left out of line, its
+    // result stored and loaded back).
+    let v = |k: usize| {
+        let p = vertices.get(corners[k])?;
+        Some([p.x.to_f64(), p.y.to_f64(), p.z.to_f64()])
+    };
+    Some([v(0)?, v(1)?, v(2)?])
 }
 
 /// The triangle of `vertices` at `corners`, if they exist.
