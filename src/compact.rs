@@ -26,7 +26,7 @@
 use crate::bvh::{self, Grid, Node};
 use crate::{Mesh, Scalar, Vec3};
 use core::fmt;
-use query::{prepare, triangle};
+use query::prepare;
 
 /// The two-sided bit of a triangle's byte.
 const TWO_SIDED: u8 = 1 << 6;
@@ -245,9 +245,8 @@ impl<'a, S: Scalar, I: MeshIndex> CompactMesh<'a, S, I> {
                     given: vertices.len(),
                 });
             }
-            let rebuilt = triangle(vertices, corners.map(|c| c as usize)).ok_or(mismatch)?;
             let byte = prepared.features().bits() | (TWO_SIDED * prepared.is_two_sided() as u8);
-            let again = prepare(&rebuilt, byte).ok_or(mismatch)?;
+            let again = prepare(vertices, corners.map(|c| c as usize), byte).ok_or(mismatch)?;
             if !again.to_parts().identical(&prepared.to_parts()) {
                 return Err(mismatch);
             }

@@ -223,8 +223,7 @@ impl<'a, S: Scalar> Heightfield<'a, S> {
         }
         let c = index / 2;
         let w = self.columns.max(1) as usize;
-        let corners = self.corners((c % w) as u32, (c / w) as u32)?;
-        Self::prepare_from(corners, index, byte)
+        self.prepare_cell((c % w) as u32, (c / w) as u32, index, byte)
     }
 
     /// Cells along x and along z.

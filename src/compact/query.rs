@@ -42,8 +42,8 @@ impl<S: Scalar, I: MeshIndex> CompactMesh<'_, S, I> {
         let corners = |s: usize| Some(self.triangles.get(s)?.map(I::get));
         if scan {
             let slot = |s: usize| -> Option<(usize, StandardTriangle<S>)> {
-                let t = triangle(self.vertices, corners(s)?)?;
-                Some((self.order.get(s)?.get(), prepare(&t, *self.bytes.get(s)?)?))
+                let st = prepare(self.vertices, corners(s)?, *self.bytes.get(s)?)?;
+                Some((self.order.get(s)?.get(), st))
             };
             for s in 0..self.triangles.len() {
                 if let Some((i, t)) = slot(s)
@@ -78,7 +78,7 @@ impl<S: Scalar, I: MeshIndex> CompactMesh<'_, S, I> {
                 let t = triangle(self.vertices, corners(s)?)?;
                 cast_lazily(&t, byte, sweep, reach)
             } else {
-                let st = prepare_at(self.vertices, corners(s)?, byte)?;
+                let st = prepare(self.vertices, corners(s)?, byte)?;
                 cache.put(s, &st);
                 st.cast_within(sweep, reach)
             };
@@ -140,23 +140,17 @@ fn world<S: Scalar>(vertices: &[Vec3<S>], corners: [usize; 3]) -> Option<[[f64; 
 }
 
 /// The triangle of `vertices` at `corners`, if they exist.
-pub(super) fn triangle<S: Scalar>(
-    vertices: &[Vec3<S>],
-    corners: [usize; 3],
-) -> Option<Triangle<S>> {
+fn triangle<S: Scalar>(vertices: &[Vec3<S>], corners: [usize; 3]) -> Option<Triangle<S>> {
     let v = |k: usize| vertices.get(corners[k]).copied();
     Some(Triangle::new(v(0)?, v(1)?, v(2)?))
 }
 
-/// `t` prepared with the features and sidedness of `byte`.
-pub(super) fn prepare<S: Scalar>(t: &Triangle<S>, byte: u8) -> Option<StandardTriangle<S>> {
-    Some(with_byte(StandardTriangle::new(t).ok()?, byte))
-}
-
-/// The triangle of `vertices` at `corners` prepared with `byte`, its vertices read here, where
-/// the preparation runs, not through a copy just stored.
+/// The triangle of `vertices` at `corners` prepared with the features and sidedness of `byte`:
+/// [`StandardTriangle::new`]'s work, the vertices read here, where it runs (a triangle passed
+/// to it in a copy just stored would be read back before the stores complete, a
+/// store-forwarding wait on x86-64).
 #[inline(never)]
-fn prepare_at<S: Scalar>(
+pub(super) fn prepare<S: Scalar>(
     vertices: &[Vec3<S>],
     corners: [usize; 3],
     byte: u8,
@@ -249,10 +243,9 @@ impl<S: Scalar, I: MeshIndex> CompactMesh<'_, S, I> {
         if apart {
             return;
         }
-        let t = triangle(self.vertices, corners.map(I::get));
         let byte = self.bytes.get(s).copied();
-        if let (Some(t), Some(b), Some(i)) = (t, byte, self.order.get(s))
-            && let Some(st) = prepare(&t, b)
+        if let (Some(b), Some(i)) = (byte, self.order.get(s))
+            && let Some(st) = prepare(self.vertices, corners.map(I::get), b)
         {
             f(i.get(), &st);
         }
