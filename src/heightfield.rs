@@ -47,7 +47,7 @@ mod walk;
 pub use buf::HeightfieldBuf;
 pub use error::HeightfieldError;
 
-use crate::triangle::Frame;
+use crate::triangle::prepare_here;
 use crate::{Features, Scalar, StandardTriangle, Triangle, Vec3};
 
 /// The hole bit of a cell byte: the cell has no triangles.
@@ -210,7 +210,7 @@ impl<'a, S: Scalar> Heightfield<'a, S> {
     #[inline(never)]
     fn prepare_cell(&self, i: u32, k: u32, index: usize, byte: u8) -> Option<StandardTriangle<S>> {
         let t = half(self.corners(i, k)?, index % 2);
-        let st = Frame::of(&t).ok()?.finish(&t).ok()?;
+        let st = prepare_here(&t)?;
         Some(st.with_features(Features::of_edges(byte >> (3 * (index % 2)))))
     }
 

@@ -370,4 +370,4 @@ mod frame;
 #[cfg(test)]
 mod tests;
 
-pub(crate) use frame::Frame;
+pub(crate) use frame::{Frame, prepare_here};

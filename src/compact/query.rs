@@ -10,7 +10,7 @@ use crate::contact::within_reach;
 use crate::cull::{Path, SOFT_F64, UnitBox, UnitHeights};
 use crate::merge::{Earliest, earliest_of};
 use crate::scalar::{largest, smallest};
-use crate::triangle::Frame;
+use crate::triangle::{Frame, prepare_here};
 use crate::{Features, Geometry, Hit, Scalar, SceneHit, StandardTriangle, Sweep, Triangle, Vec3};
 
 impl<S: Scalar, I: MeshIndex> CompactMesh<'_, S, I> {
@@ -156,8 +156,7 @@ pub(super) fn prepare<S: Scalar>(
     byte: u8,
 ) -> Option<StandardTriangle<S>> {
     let t = triangle(vertices, corners)?;
-    let st = Frame::of(&t).ok()?.finish(&t).ok()?;
-    Some(with_byte(st, byte))
+    Some(with_byte(prepare_here(&t)?, byte))
 }
 
 /// The contact of `t` (a triangle with `byte`) with the sweep at alpha `reach` or earlier, its
