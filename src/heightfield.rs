@@ -109,6 +109,11 @@ pub struct Heightfield<'a, S: Scalar> {
     class: u8,
 }
 
+/// The active edges of triangle `index` (either half of a cell) from its cell's byte.
+fn features(byte: u8, index: usize) -> Features {
+    Features::of_edges(byte >> (3 * (index % 2)))
+}
+
 /// Triangle `half` (0: `2c`, 1: `2c + 1`) of a cell from its corners (see
 /// [`Heightfield::corners`]).
 fn half<S: Scalar>([a, b, d, e]: [Vec3<S>; 4], half: usize) -> Triangle<S> {
@@ -201,7 +206,7 @@ impl<'a, S: Scalar> Heightfield<'a, S> {
     /// [`corners`](Self::corners) and byte.
     fn prepare_from(corners: [Vec3<S>; 4], index: usize, byte: u8) -> Option<StandardTriangle<S>> {
         let st = StandardTriangle::new(&half(corners, index % 2)).ok()?;
-        Some(st.with_features(Features::of_edges(byte >> (3 * (index % 2)))))
+        Some(st.with_features(features(byte, index)))
     }
 
     /// [`prepare_from`](Self::prepare_from) the corners of the cell at column `i`, row `k`,
@@ -211,7 +216,7 @@ impl<'a, S: Scalar> Heightfield<'a, S> {
     fn prepare_cell(&self, i: u32, k: u32, index: usize, byte: u8) -> Option<StandardTriangle<S>> {
         let t = half(self.corners(i, k)?, index % 2);
         let st = prepare_here(&t)?;
-        Some(st.with_features(Features::of_edges(byte >> (3 * (index % 2)))))
+        Some(st.with_features(features(byte, index)))
     }
 
     /// Triangle `index` prepared with its active edges, as a mesh of the same triangles holds

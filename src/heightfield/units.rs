@@ -7,14 +7,14 @@
 //! walk's, bit for bit; a sweep whose box spans more than [`MAX_CELLS`] cells (a long cast,
 //! whose box holds far more cells than its path crosses) takes that walk instead.
 
-use super::{HOLE, Heightfield, half};
+use super::{HOLE, Heightfield, features, half};
 use crate::bvh;
 use crate::cache::Keep;
 use crate::contact::within_reach;
 use crate::cull::{UnitHeights, unit_bits};
 use crate::merge::Earliest;
 use crate::triangle::Frame;
-use crate::{Features, Hit, Scalar, Sweep, Triangle};
+use crate::{Hit, Scalar, Sweep, Triangle};
 
 /// The most cells a query's box may span for the integer query.
 pub(super) const MAX_CELLS: i64 = 64;
@@ -235,7 +235,7 @@ fn cast_lazily<S: Scalar>(
     let heights = frame.heights(sweep);
     within_reach(sweep, heights, false, reach)?;
     let st = frame.finish(tri).ok()?;
-    st.with_features(Features::of_edges(byte >> (3 * (t % 2))))
+    st.with_features(features(byte, t))
         .cast_within_heights(sweep, heights, reach)
 }
 
