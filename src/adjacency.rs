@@ -41,7 +41,7 @@ const HASH_BITS: u32 = 23;
 /// Applies [`hides`] to every pair of triangles sharing an edge with opposite winding, as
 /// [`Scene`](crate::Scene) does pair by pair, in `O(N + P)`: one record per edge, radix-sorted.
 ///
-/// `triangles[c]` is the prepared form of `sources[order[c]]`, `c` increasing with input order;
+/// `triangles[c]` is the prepared form of `sources[order[c]]`, in any order of the slots `c`;
 /// `records` holds at least `6 * triangles.len()` words (records and the radix sort's other
 /// buffer), and `triangles.len() <= 2^28`.
 /// A record is a 23-bit hash of the edge's unordered vertex pair, one bit for its direction and
@@ -181,11 +181,13 @@ fn link<S: Scalar>(
     sx: usize,
     sy: usize,
 ) -> bool {
-    // `a` is the later triangle, as in `Scene::push`.
-    let ((a, i), (b, j)) = if sx > sy {
-        ((sx / 3, sx % 3), (sy / 3, sy % 3))
+    // `a` is the later triangle in input order, as in `Scene::push`, whatever the slots' order.
+    let input = |c: usize| order.get(c).copied().unwrap_or(0);
+    let (x, y) = ((sx / 3, sx % 3), (sy / 3, sy % 3));
+    let ((a, i), (b, j)) = if input(x.0) > input(y.0) {
+        (x, y)
     } else {
-        ((sy / 3, sy % 3), (sx / 3, sx % 3))
+        (y, x)
     };
     let source = |c: usize| order.get(c).and_then(|&k| sources.get(k as usize));
     let (Some(ta), Some(tb)) = (source(a), source(b)) else {
