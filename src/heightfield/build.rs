@@ -150,9 +150,7 @@ impl<'a, S: Scalar> Heightfield<'a, S> {
             if cells[t / 2] & HOLE == 0 {
                 let all_active = (cells[t / 2] >> (3 * (t % 2))) & 0b111 == 0b111;
                 let st = field.prepare_at(t)?;
-                let [_, b, c] = st.vertices();
-                let shape = [b.x, b.z, c.x].map(S::to_f64);
-                class = class.max(crate::bvh::seam_class(all_active, shape));
+                class = class.max(crate::bvh::seam_class(all_active, &st));
             }
         }
         field.cells = &cells[..n];

@@ -339,6 +339,11 @@ macro_rules! fixed_scalar {
                 <$t>::from_bits(v.wrapping_add((1 << (K - 1)) - (v < 0) as $bits) >> K)
             }
             #[inline]
+            fn unit_to_f64(u: $unit) -> f64 {
+                // A power-of-two scale: exact but for `I2F62`'s bits beyond `f64`'s 53.
+                u.to_bits() as f64 * (1.0 / (1u64 << $ufrac) as f64)
+            }
+            #[inline]
             fn from_int(n: i32) -> Self {
                 <$t>::saturating_from_num(n)
             }

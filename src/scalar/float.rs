@@ -189,6 +189,10 @@ macro_rules! float_scalar {
                 u
             }
             #[inline]
+            fn unit_to_f64(u: Self) -> f64 {
+                u as f64
+            }
+            #[inline]
             fn from_int(n: i32) -> Self {
                 n as Self
             }

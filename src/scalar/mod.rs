@@ -198,6 +198,9 @@ pub(crate) mod sealed {
         fn line_misses(q: [Self; 2], d: [Self; 2], r: Self, extent: Self) -> bool;
         /// A unit-vector component rounded to `Self`.
         fn unit_to_scalar(u: Self::Unit) -> Self;
+        /// A unit-vector component as `f64` (exact for `f32`, `f64` and `I2F30`; `I2F62`
+        /// rounded to nearest).
+        fn unit_to_f64(u: Self::Unit) -> f64;
         /// The integer `n`, saturated at the range (exact for fixed-point within it, and for
         /// floats up to their mantissa): a grid index, with no float conversion and no panic.
         fn from_int(n: i32) -> Self;
