@@ -42,8 +42,9 @@ const HASH_BITS: u32 = 23;
 /// [`Scene`](crate::Scene) does pair by pair, in `O(N + P)`: one record per edge, radix-sorted.
 ///
 /// `triangles[c]` is the prepared form of `sources[order[c]]`, in any order of the slots `c`;
+/// both slices hold the mesh's slots and no more (`triangles.len() == order.len() <= 2^28`);
 /// `records` holds at least `6 * triangles.len()` words (records and the radix sort's other
-/// buffer), and `triangles.len() <= 2^28`.
+/// buffer: with fewer, nothing is linked).
 /// A record is a 23-bit hash of the edge's unordered vertex pair, one bit for its direction and
 /// the edge's slot; records with equal hashes are adjacent once sorted, and only the pairs of
 /// opposite direction within such a run are compared, exactly. P counts those pairs: one per

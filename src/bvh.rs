@@ -171,9 +171,11 @@ const MAX_CLASS: u32 = 31;
 ///
 /// The sines come from the prepared triangle's unit edge directions `u` (leaving a corner) and
 /// `w` (arriving): `sin θ = |u × w|` and `sin(θ/2) = |u + w| / 2`, compared squared, so no
-/// square root and one division (a tenth off the build of a mesh of 10^5 triangles). Those directions
-/// are rounded (by `2^-24` for `f32`), which moves a sine below `2^-15` by more than a part in
-/// `2^9`: such a sliver's class comes from its shape in `f64` instead ([`sliver_class`]).
+/// square root and one division (a tenth off the build of a mesh of 10^5 triangles). Those
+/// directions are rounded (by up to `2^-24` for `f32`), so the result is grown by a margin
+/// that covers it, which takes the class one higher than the shape's own where that lies
+/// within a fifth of a percent below a power of two; a sine below `2^-10`, which the rounding
+/// moves by more, comes from its shape in `f64` instead ([`sliver_class`]).
 pub(crate) fn seam_class<S: crate::Scalar>(
     all_active: bool,
     t: &crate::StandardTriangle<S>,
@@ -192,13 +194,16 @@ pub(crate) fn seam_class<S: crate::Scalar>(
         let (hx, hz) = (ux + wx, uz + wz);
         least = least.min(sin * sin).min((hx * hx + hz * hz) * 0.25);
     }
-    if !least.is_finite() || least < 1.0 / (1u64 << 30) as f64 {
+    if !least.is_finite() || least < 1.0 / (1u64 << 20) as f64 {
         let [_, b, c] = t.vertices();
         return sliver_class([b.x, b.z, c.x].map(S::to_f64));
     }
     // 2^c >= f = 2 max(1 / sin, 1) where 4^c >= f^2 = 4 max(1 / least, 1): c is half of
-    // f^2's exponent rounded up (itself rounded up unless f^2 is a power of two).
-    let f2 = 4.0 * (1.0 / least).max(1.0);
+    // f^2's exponent rounded up (itself rounded up unless f^2 is a power of two). `f^2` is
+    // grown by 2^-9, more than the directions' rounding moves it (their components are off by
+    // up to 2^-24, so a sine of at least 2^-10 by under 2^-12 of itself): the class never
+    // falls short.
+    let f2 = 4.0 * (1.0 / least).max(1.0) * (1.0 + 1.0 / 512.0);
     let bits = f2.to_bits();
     let exponent = ((bits >> 52) & 0x7ff) as u32 - 1023;
     (exponent + (bits & ((1 << 52) - 1) != 0) as u32).div_ceil(2)

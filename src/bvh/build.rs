@@ -196,8 +196,9 @@ fn split(
     ((lo, left), (right, hi))
 }
 
-/// Builds the tree over `items` (each a triangle's box, index and seam class) into `nodes`, the
-/// root's box being `root`, with leaves of `leaves`. `keys` (one per item, any values) ends in leaf order: slot `s`
+/// Builds the tree over `items` (each a triangle's box, index and seam class: zero where the
+/// caller sets the classes afterwards with [`set_classes`]) into `nodes`, the root's box being
+/// `root`, with leaves of `leaves`. `keys` (one per item, any values) ends in leaf order: slot `s`
 /// holds item [`key_index`]`(keys[s])`. Returns the number of nodes used.
 pub(crate) fn build(
     items: &[Item],

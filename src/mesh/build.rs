@@ -68,7 +68,8 @@ impl<'a, S: Scalar> Mesh<'a, S> {
     /// `Scene` given the same sides. A level exported with mixed winding, thin walls and
     /// floors seen from below need them: a triangle added a second time reversed stops a ball
     /// at its face from behind, but not one that passes its plane beside it and comes back at
-    /// an edge from behind.
+    /// an edge from behind. `two_sided` is asked in no set order, and may be asked twice for
+    /// one index: it should answer from the index alone.
     ///
     /// ```
     /// use ballcast::{bvh::nodes_for, Degenerates, Mesh, Node, Sweep, Triangle, Vec3};
@@ -249,6 +250,8 @@ fn in_leaf_order<S: Scalar>(
         triangles[s] = st.with_two_sided(two_sided(index));
         order[s] = index as u32;
     }
+    // The buffers may be longer than the mesh: only its slots.
+    let (triangles, order) = (triangles.get_mut(..n)?, order.get_mut(..n)?);
     link_all(sources, order, triangles, &mut scratch[..6 * n]);
     // Each triangle's class once, in slot order, for the leaves to take the largest of.
     let classes = &mut scratch[..n];
