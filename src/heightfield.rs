@@ -215,7 +215,7 @@ impl<'a, S: Scalar> Heightfield<'a, S> {
     #[inline(never)]
     fn prepare_cell(&self, i: u32, k: u32, index: usize, byte: u8) -> Option<StandardTriangle<S>> {
         let t = half(self.corners(i, k)?, index % 2);
-        let st = prepare_here(&t)?;
+        let st = prepare_here(&t).ok()?;
         Some(st.with_features(features(byte, index)))
     }
 

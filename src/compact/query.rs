@@ -156,7 +156,7 @@ pub(super) fn prepare<S: Scalar>(
     byte: u8,
 ) -> Option<StandardTriangle<S>> {
     let t = triangle(vertices, corners)?;
-    Some(with_byte(prepare_here(&t)?, byte))
+    Some(with_byte(prepare_here(&t).ok()?, byte))
 }
 
 /// The contact of `t` (a triangle with `byte`) with the sweep at alpha `reach` or earlier, its

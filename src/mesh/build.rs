@@ -8,6 +8,7 @@ use crate::adjacency::{link_all, open_edges};
 use crate::bvh::{self, BuildError, Cells, Grid, MAX_TRIANGLES, Node};
 use crate::cover::cover_open;
 use crate::merge::earliest;
+use crate::triangle::prepare_here;
 use crate::{Scalar, StandardTriangle, Sweep, Triangle, Vec3};
 
 impl<'a, S: Scalar> Mesh<'a, S> {
@@ -246,7 +247,7 @@ fn in_leaf_order<S: Scalar>(
     let used = bvh::build(items, keys, (lo, hi), nodes, leaf_size).ok()?;
     for (s, &k) in keys.iter().enumerate() {
         let index = bvh::key_index(k);
-        let st = StandardTriangle::new(sources.get(index)?).ok()?;
+        let st = prepare_here(sources.get(index)?).ok()?;
         triangles[s] = st.with_two_sided(two_sided(index));
         order[s] = index as u32;
     }
@@ -284,7 +285,7 @@ fn in_input_order<S: Scalar>(
     let mut kept = 0;
     let mut world = None;
     for (index, t) in sources.iter().enumerate() {
-        match StandardTriangle::new(t) {
+        match prepare_here(t) {
             Ok(st) => {
                 triangles[kept] = st.with_two_sided(two_sided(index));
                 order[kept] = index as u32;
