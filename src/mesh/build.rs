@@ -234,8 +234,7 @@ fn in_leaf_order<S: Scalar>(
     if !within {
         return None;
     }
-    let world = Some(world);
-    let (exponent, (lo, hi)) = grid_of(world);
+    let (exponent, (lo, hi)) = grid_of(Some(world));
     let (items, rest) = scratch.split_at_mut(4 * n);
     let (items, _) = items.as_chunks_mut::<4>();
     let keys = rest.get_mut(..n)?;
