@@ -60,10 +60,9 @@ pub(crate) struct Segment {
     /// nothing).
     inv: [f64; 3],
     inv32: [f32; 3],
+    /// Per axis, the pad's scale into the segment's parameter: the magnitude of the `f32`
+    /// reciprocal, or infinity where the reciprocal is below `2^-100`.
     slope: [f32; 3],
-    /// Per axis, whether the segment runs towards lower coordinates: it enters a slab by its
-    /// maximum.
-    falling: [bool; 3],
     /// How far (cells) every box is grown: the radius plus every rounding (module docs), in
     /// `f32` for the node tests, rounded up.
     pad: f32,
@@ -106,7 +105,6 @@ impl Segment {
                     f32::INFINITY
                 }
             }),
-            falling: inv.map(|x| x < 0.0),
             pad: up((pad * s + 2.0 + slack) * grow),
             seam: up(seam * s * grow).max(f32::MIN_POSITIVE),
         }
@@ -157,22 +155,27 @@ impl Segment {
         });
         let (mut t0, mut t1) = ([f32::NEG_INFINITY; 4], [limit; 4]);
         for (a, &base) in lo.iter().enumerate() {
-            // The side the segment enters the slab by first.
-            let (qa, qb) = if self.falling[a] {
-                (node.boxes[3 + a], node.boxes[a])
-            } else {
-                (node.boxes[a], node.boxes[3 + a])
-            };
+            let (min, max) = (node.boxes[a], node.boxes[3 + a]);
             // In the node's steps: t = byte * per_step + at_zero (module docs); `2^shift`
             // times the `f32` reciprocal is exact, as `2^shift` times the `f64` one rounded.
             let per_step = self.inv32[a] * pow2f(shift[a]);
             let at_zero = ((base as f64 - self.q0[a]) * self.inv[a]) as f32;
             let slope = self.slope[a];
             for k in 0..4 {
+                // Where the line crosses the box's two bounds: the earlier is where it enters
+                // the slab, whichever way it runs (so no branch on the direction); then both
+                // moved out by the pad. A NaN (from `± grow` after an overflow, never
+                // expected) is left out of the plain comparisons, which only widens the
+                // interval.
+                let tmin = min[k] as f32 * per_step + at_zero;
+                let tmax = max[k] as f32 * per_step + at_zero;
+                let (ta, tb) = if tmax < tmin {
+                    (tmax, tmin)
+                } else {
+                    (tmin, tmax)
+                };
                 let grow = pad[k] * slope;
-                let ta = qa[k] as f32 * per_step + (at_zero - grow);
-                let tb = qb[k] as f32 * per_step + (at_zero + grow);
-                // Plain comparisons: a NaN (an overflow, never expected) only widens the interval.
+                let (ta, tb) = (ta - grow, tb + grow);
                 t0[k] = if ta > t0[k] { ta } else { t0[k] };
                 t1[k] = if tb < t1[k] { tb } else { t1[k] };
             }
