@@ -49,6 +49,9 @@ pub struct Earliest<S: Scalar> {
     fixed: Option<(S, S)>,
     /// A tied contact was dropped for room while the window could still shrink.
     lossy: bool,
+    /// [`reach`](Self::reach), kept up to date as `best` changes: the traversal and every
+    /// triangle's test ask for it.
+    reach: S,
 }
 
 impl<S: Scalar> Earliest<S> {
@@ -60,17 +63,16 @@ impl<S: Scalar> Earliest<S> {
             window,
             fixed,
             lossy: false,
+            reach: fixed.map_or(S::ONE, |(w, _)| w),
         }
     }
 
     /// The largest alpha still worth testing: contacts later than this can neither come first
-    /// nor tie with the first. One (the end of the path) while nothing was found.
+    /// nor tie with the first. One (the end of the path) while nothing was found; on a second
+    /// visit, the first's.
+    #[inline]
     pub(crate) fn reach(&self) -> S {
-        match (self.fixed, self.best) {
-            (Some((w, _)), _) => w,
-            (None, Some((_, b))) => b.alpha + tie::<S>(),
-            (None, None) => S::ONE,
-        }
+        self.reach
     }
 
     /// Sets the index the next contacts' indices count from; returns the one before.
@@ -97,7 +99,10 @@ impl<S: Scalar> Earliest<S> {
         });
         if first {
             self.best = Some((index, hit));
-            let reach = self.reach();
+            if self.fixed.is_none() {
+                self.reach = hit.alpha + tie::<S>();
+            }
+            let reach = self.reach;
             self.ties.retain(|t| t.1 <= reach);
         }
         // Keep the buffer sorted by index, dropping the largest index when full.
@@ -109,20 +114,21 @@ impl<S: Scalar> Earliest<S> {
             }
             self.ties.pop();
         }
-        // Room was made above, so the push succeeds; then the entry rotates into place. (No
-        // `insert`: its index assertion would leave a panic path the optimiser cannot remove.)
+        // Room was made above, so the push succeeds; then the entry rotates into place unless
+        // it is already last. (No `insert`: its index assertion would leave a panic path the
+        // optimiser cannot remove.)
         if self
             .ties
             .push((index, hit.alpha, hit.normal, hit.contact, along))
             .is_ok()
             && let Some(tail) = self.ties.get_mut(at..)
-            && !tail.is_empty()
+            && tail.len() > 1
         {
             tail.rotate_right(1);
         }
     }
 
-    fn finish(self) -> Option<SceneHit<S>> {
+    fn finish(&self) -> Option<SceneHit<S>> {
         let (
             index,
             Hit {
