@@ -56,11 +56,12 @@
 //! reciprocal of its direction (`2^100` on an axis where the direction is below `2^-100`: the
 //! pad below covers the difference), that reciprocal rounded to `f32` (an axis along which
 //! the segment spans more than `2^100` cells, whose reciprocal `f32` cannot scale exactly,
-//! culls nothing), and per axis the side by which the segment enters a slab. Each node takes
-//! the segment into its own byte steps per axis (`t = byte · 2^shift / d + (lo − p0) / d`: a
-//! scale, `2^shift` times the `f32` reciprocal, exact, and an offset, in `f64`), and clips its
-//! four child boxes, grown, against it with the slab test (Kay and Kajiya, 1986) in `f32`,
-//! four lanes side by side, bound by bound, without a branch or a division. Children are
+//! culls nothing). Each node takes the segment into its own byte steps per axis
+//! (`t = byte · 2^shift / d + (lo − p0) / d`: a scale, `2^shift` times the `f32` reciprocal,
+//! exact, and an offset, in `f64`), and clips its four child boxes, grown, against it with the
+//! slab test (Kay and Kajiya, 1986) in `f32`, four lanes side by side, bound by bound, without
+//! a branch or a division: per axis the earlier of the two bounds' crossings is where the line
+//! enters the slab, whichever way it runs, and both move out by the pad. Children are
 //! ordered by where the segment's line enters their boxes, even before the start (boxes that
 //! hold the start all begin at zero along the segment itself, and this orders them on a short
 //! move better than child order): the first is visited next (a leaf at once), the others wait
