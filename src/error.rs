@@ -266,22 +266,27 @@ impl fmt::Display for Error {
 
 impl core::error::Error for Error {}
 
-/// The values of one message as the caller most likely typed them: where each is an `f32`
-/// (zero, or exactly an `f32` between its smallest normal and 2^24 in magnitude, or a whole
-/// number of 2^24 or more, which prints alike either way), those below 2^24 in the shortest
+/// The values of one message as the caller most likely typed them: each that is an `f32` (zero,
+/// or exactly an `f32` between its smallest normal and 2^24 in magnitude) in the shortest
 /// digits that give the `f32` back, so an `f32` radius of -0.4 reads -0.4, not the
-/// -0.4000000059604645 it widens to; else all in the shortest digits that give the `f64`
-/// back, so no two values of a message read alike (an `f64` radius just above a limit that is
-/// an `f32` would have). The error's fields keep the exact values.
+/// -0.4000000059604645 it widens to, also beside a limit worked out in `f64` (a time step's);
+/// the rest in the shortest digits that give the `f64` back. Where a value that is no `f32`
+/// rounds to the same `f32` as one printed so, the two could read alike (an `f64` radius just
+/// above a limit that is an `f32`), and all take their `f64` digits. The error's fields keep the
+/// exact values.
 fn typed<const N: usize>(values: [f64; N]) -> [Typed; N] {
     const WHOLE: f64 = 16_777_216.0;
-    let narrow = values.iter().all(|&v| {
+    let narrow = |v: f64| {
         let a = v.abs();
-        v == 0.0
-            || (a >= f64::from(f32::MIN_POSITIVE) && a < WHOLE && f64::from(v as f32) == v)
-            || (a >= WHOLE && libm::trunc(a) == a)
+        v == 0.0 || (a >= f64::from(f32::MIN_POSITIVE) && a < WHOLE && f64::from(v as f32) == v)
+    };
+    let clash = values.iter().any(|&w| {
+        !narrow(w)
+            && values
+                .iter()
+                .any(|&v| narrow(v) && v != w && w as f32 == v as f32)
     });
-    values.map(|v| Typed(v, narrow && v.abs() < WHOLE))
+    values.map(|v| Typed(v, !clash && narrow(v)))
 }
 
 /// `value` as an error message prints it: its shortest digits, in exponent form where plain

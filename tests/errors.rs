@@ -253,6 +253,23 @@ fn f32_values_read_as_typed() {
         .unwrap_err();
     let said = e.to_string();
     assert!(said.starts_with("the time step is -0.016, "), "{said}");
+    // Also under gravity, whose longest step (1307.75...) is worked out in `f64` and is no
+    // `f32`: the step read -0.01600000075995922 there.
+    let gravity = Vec3::new(0.0, -9.81f32, 0.0);
+    let e = me.update(&scene, Vec3::ZERO, gravity, -0.016).unwrap_err();
+    let said = e.to_string();
+    assert!(said.starts_with("the time step is -0.016, "), "{said}");
+    // The limit keeps its `f64` digits: the root of 9.81 t² = 2^24, to the last bit or so.
+    let max: f64 = said
+        .rsplit_once("[0, ")
+        .and_then(|(_, m)| m.strip_suffix(']'))
+        .and_then(|m| m.parse().ok())
+        .unwrap_or_else(|| panic!("no limit in {said}"));
+    let root = (16_777_216.0 / f64::from(9.81f32)).sqrt();
+    assert!(
+        (max - root).abs() <= 1e-12 * root && max as f32 as f64 != max,
+        "{said}"
+    );
     // An `f64` that is no `f32` keeps its own digits.
     let scene: Scene<f64, 1> = Scene::new();
     let e = move_and_slide(&scene, Vec3::ZERO, Vec3::ZERO, -0.1).unwrap_err();

@@ -17,9 +17,9 @@ pub struct Memory {
     /// A [`CompactMesh`](crate::CompactMesh): the nodes of a tree with leaves of up to four
     /// triangles, the shared vertices, and per
     /// triangle three vertex indices, its input index and a byte (`u16` indices where vertices
-    /// and triangles number at most 65 536, else `u32`). A
-    /// [`CompactMeshBuf`](crate::CompactMeshBuf) always takes `u32` indices: 8 bytes more per
-    /// triangle than counted here for a level within 65 536.
+    /// and triangles number at most 65 536, else `u32`). A `CompactMeshBuf` (feature `alloc`)
+    /// always takes `u32` indices: 8 bytes more per triangle than counted here for a level
+    /// within 65 536.
     pub compact: usize,
     /// A [`Heightfield`](crate::Heightfield) of a grid with these vertices and triangles: two
     /// bytes per vertex, one per cell (two triangles). Meaningful only for a grid.
