@@ -270,10 +270,10 @@ impl core::error::Error for Error {}
 /// or exactly an `f32` between its smallest normal and 2^24 in magnitude) in the shortest
 /// digits that give the `f32` back, so an `f32` radius of -0.4 reads -0.4, not the
 /// -0.4000000059604645 it widens to, also beside a limit worked out in `f64` (a time step's);
-/// the rest in the shortest digits that give the `f64` back. Where a value that is no `f32`
-/// rounds to the same `f32` as one printed so, the two could read alike (an `f64` radius just
-/// above a limit that is an `f32`), and all take their `f64` digits. The error's fields keep the
-/// exact values.
+/// the rest in the shortest digits that give the `f64` back. Where a value that is no `f32` is
+/// what the digits of one printed so read as in `f64`, the two could read alike (an `f64`
+/// radius just above a limit that is an `f32`), and all take their `f64` digits. The error's
+/// fields keep the exact values.
 fn typed<const N: usize>(values: [f64; N]) -> [Typed; N] {
     const WHOLE: f64 = 16_777_216.0;
     let narrow = |v: f64| {
@@ -284,9 +284,38 @@ fn typed<const N: usize>(values: [f64; N]) -> [Typed; N] {
         !narrow(w)
             && values
                 .iter()
-                .any(|&v| narrow(v) && v != w && w as f32 == v as f32)
+                .any(|&v| narrow(v) && f32_digits_in_f64(v as f32) == Some(w))
     });
     values.map(|v| Typed(v, !clash && narrow(v)))
+}
+
+/// The shortest digits of `v` read back as an `f64`: the one `f64` whose own shortest digits
+/// can be the same. (Whether `w` rounds to `v` does not tell: digits next to a midpoint between
+/// two `f32`s can read as an `f64` that rounds to the other one, as `7.038531e-26` does.)
+fn f32_digits_in_f64(v: f32) -> Option<f64> {
+    /// A line of text on the stack: no allocation; a write beyond it fails.
+    struct Line {
+        bytes: [u8; 32],
+        len: usize,
+    }
+    impl fmt::Write for Line {
+        fn write_str(&mut self, s: &str) -> fmt::Result {
+            let end = self.len.checked_add(s.len()).ok_or(fmt::Error)?;
+            let to = self.bytes.get_mut(self.len..end).ok_or(fmt::Error)?;
+            to.copy_from_slice(s.as_bytes());
+            self.len = end;
+            Ok(())
+        }
+    }
+    let mut line = Line {
+        bytes: [0; 32],
+        len: 0,
+    };
+    fmt::write(&mut line, format_args!("{v:e}")).ok()?;
+    core::str::from_utf8(line.bytes.get(..line.len)?)
+        .ok()?
+        .parse()
+        .ok()
 }
 
 /// `value` as an error message prints it: its shortest digits, in exponent form where plain

@@ -295,6 +295,36 @@ fn f32_values_read_as_typed() {
     assert_eq!(e.to_string(), format!("the radius {tiny:e} is negative"));
 }
 
+/// Two values of one message never read alike: the `f32` whose shortest digits are
+/// `7.038531e-26` and the `f64` those digits read as, which rounds to the next `f32` up (the
+/// digits lie next to the midpoint between the two), read `7.038531e-26` both when only the
+/// `f64` rounding to the `f32` counted as a clash.
+#[test]
+fn an_f32_and_the_f64_of_its_digits_read_apart() {
+    let v = f32::from_bits(0x15ae_43fd);
+    let w: f64 = v.to_string().parse().unwrap();
+    assert_eq!(v.to_string(), "0.00000000000000000000000007038531");
+    assert_ne!(
+        w as f32, v,
+        "the case: its digits' f64 rounds to another f32"
+    );
+    let e = Error::RadiusTooSmall {
+        radius: f64::from(v),
+        min: w,
+        extent: 1e-18,
+    };
+    let said = e.to_string();
+    let (radius, rest) = said
+        .strip_prefix("the radius ")
+        .and_then(|r| r.split_once(" is below "))
+        .unwrap_or_else(|| panic!("{said}"));
+    let min = rest.split_once(',').map_or(rest, |(m, _)| m);
+    assert_ne!(radius, min, "{said}");
+    // Each reads back as itself.
+    assert_eq!(radius.parse::<f64>().ok(), Some(f64::from(v)), "{said}");
+    assert_eq!(min.parse::<f64>().ok(), Some(w), "{said}");
+}
+
 /// Huge and tiny values read in exponent form, as JavaScript prints them (from 10^21 up, below
 /// 10^-7): a radius of 1e300 read as 301 digits, and f32::MAX as 39.
 #[test]
