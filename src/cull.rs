@@ -25,7 +25,10 @@ pub(crate) struct Path {
     pub(crate) inv: [f64; 3],
     /// How far every box is grown: the radius, every rounding, and the seam margins.
     pub(crate) pad: f64,
-    /// The pad less the radius: more than the rounding of a triangle's heights in `cast`.
+    /// The pad less the seam margins, which widen a face within its plane only: how far from
+    /// the plane a contact can find the ball's centre (the radius and every rounding).
+    plane: f64,
+    /// That less the radius: more than the rounding of a triangle's heights in `cast`.
     slack: f64,
     /// A bound on the rounding of a prepared unit vector: `16 EPSILON` (floats), or `1/1024`
     /// of that (fixed point, whose unit vectors have 30 or 62 fractional bits).
@@ -38,7 +41,7 @@ impl Path {
     pub(crate) fn new<S: Scalar>(sweep: &Sweep<S>, extent: f64, class: u8) -> Self {
         let (ends, r) = (endpoints(sweep), sweep.radius().to_f64());
         let (p0, d, _) = ends;
-        let pad = grown_by::<S>(r, ends, extent, class);
+        let (plane, pad) = grown::<S>(r, ends, extent, class);
         let per_unit = if S::PRECISION.relative {
             1.0
         } else {
@@ -49,7 +52,8 @@ impl Path {
             d,
             inv: d.map(|x| 1.0 / x),
             pad,
-            slack: pad - r,
+            plane,
+            slack: plane - r,
             unit: 16.0 * S::PRECISION.epsilon * per_unit,
         }
     }
@@ -103,8 +107,9 @@ impl Path {
 }
 
 impl Path {
-    /// Whether the path, over `[t0, t1]`, comes within the pad of the plane through `v`:
-    /// every contact needs the ball within its radius of the triangle's plane. The distance
+    /// Whether the path, over `[t0, t1]`, comes within the radius and every rounding (the pad
+    /// less its seam margins, which widen a face within its plane only) of the plane through
+    /// `v`: every contact needs the ball within its radius of the triangle's plane. The distance
     /// along the path is linear, so its ends decide. A one-sided triangle (front where `v` turns
     /// counter-clockwise) is also passed by where the path starts behind its plane, beyond the
     /// rounding of the heights `cast` decides it by.
@@ -137,6 +142,7 @@ impl Path {
             span: (mut a, mut b),
             start,
             along,
+            across,
             reach,
         }) = self.slab(v, span, one_sided)
         else {
@@ -144,7 +150,7 @@ impl Path {
         };
         // The part of the span within reach of the plane.
         if along != 0.0 {
-            let (ta, tb) = ((-reach - start) / along, (reach - start) / along);
+            let (ta, tb) = ((-across - start) / along, (across - start) / along);
             let (lo, hi) = if tb < ta { (tb, ta) } else { (ta, tb) };
             if lo > a {
                 a = lo;
@@ -191,12 +197,14 @@ impl Path {
         let tilt = self.unit * product / norm;
         // Points of the path over the span lie within the pad of the triangle's box, whose
         // extent is at most `longest` per axis from the first vertex: `2 (longest + pad)` away.
-        let reach = (self.pad + tilt * 2.0 * (longest + self.pad)) * norm;
+        let tilted = tilt * 2.0 * (longest + self.pad);
+        // Across the plane, the radius and every rounding; within it, the seam margins too.
+        let (across, reach) = ((self.plane + tilted) * norm, (self.pad + tilted) * norm);
         let height = |far: f64| (self.slack + tilt * 2.0 * far) * norm;
         let behind = one_sided && is_less(start, -height(big(sub(self.p0, v[0]))));
         // d0 and d1 are finite (the path and the triangle are): ordered by one comparison.
         let (near, far) = if d1 < d0 { (d1, d0) } else { (d0, d1) };
-        if behind || is_less(reach, near) || is_less(far, -reach) {
+        if behind || is_less(across, near) || is_less(far, -across) {
             return None;
         }
         Some(Slab {
@@ -204,6 +212,7 @@ impl Path {
             span: (t0, t1),
             start,
             along,
+            across,
             reach,
         })
     }
@@ -211,12 +220,13 @@ impl Path {
 
 /// What [`Path::near_plane`] found of a triangle it keeps: its normal `n` (unnormalised), the
 /// span, the path's distance from the plane at its start and its change along the path, and
-/// the reach (all distances times `|n|`).
+/// the reach across the plane and within it (all distances times `|n|`).
 struct Slab {
     n: [f64; 3],
     span: (f64, f64),
     start: f64,
     along: f64,
+    across: f64,
     reach: f64,
 }
 
@@ -284,17 +294,30 @@ impl UnitBox {
 #[inline]
 fn grown_by<S: Scalar>(
     r: f64,
-    (p0, d, p1): ([f64; 3], [f64; 3], [f64; 3]),
+    ends: ([f64; 3], [f64; 3], [f64; 3]),
     extent: f64,
     class: u8,
 ) -> f64 {
+    grown::<S>(r, ends, extent, class).1
+}
+
+/// [`grown_by`] without the seam margins, and with them.
+fn grown<S: Scalar>(
+    r: f64,
+    (p0, d, p1): ([f64; 3], [f64; 3], [f64; 3]),
+    extent: f64,
+    class: u8,
+) -> (f64, f64) {
     let big = |a: [f64; 3]| a.iter().fold(0.0f64, |m, x| m.max(x.abs()));
     let magnitude = big(p0).max(big(p1)).max(extent);
     // 2^class, exactly.
     let seams = f64::from_bits(((1023 + class.min(31) as u32) as u64) << 52);
-    crate::bvh::rounding_pad::<S>(r, big(d), magnitude)
-        + crate::bvh::ray_pad::<S>(r, magnitude)
-        + (r / 64.0 + 4.0 * S::PRECISION.epsilon) * seams
+    let plane = crate::bvh::rounding_pad::<S>(r, big(d), magnitude)
+        + crate::bvh::ray_pad::<S>(r, magnitude);
+    (
+        plane,
+        plane + (r / 64.0 + 4.0 * S::PRECISION.epsilon) * seams,
+    )
 }
 
 /// A sweep's start and displacement in `f64`, and its end.
