@@ -149,6 +149,8 @@ mod seam;
 pub mod slide;
 mod start_overlap;
 pub mod sweep;
+#[cfg(test)]
+mod testing;
 pub mod triangle;
 pub mod vec3;
 pub mod winding;

@@ -110,17 +110,4 @@ fn oversized_buffers_give_the_same_parts<S: Scalar>() {
     }
 }
 
-macro_rules! per_scalar {
-    ($($name:ident: $s:ty),*) => {$(
-        #[test]
-        fn $name() {
-            oversized_buffers_give_the_same_parts::<$s>();
-        }
-    )*};
-}
-per_scalar!(
-    oversized_buffers_give_the_same_parts_f32: f32,
-    oversized_buffers_give_the_same_parts_f64: f64,
-    oversized_buffers_give_the_same_parts_i16f16: I16F16,
-    oversized_buffers_give_the_same_parts_i32f32: I32F32
-);
+meshes::per_scalar!(oversized_buffers_give_the_same_parts);

@@ -3,7 +3,6 @@
 use super::{MAX_CLASS, seam_class};
 use crate::xorshift::Rng;
 use crate::{Features, Scalar, StandardTriangle, Triangle, Vec3};
-use fixed::types::{I16F16, I32F32};
 
 /// `2 max(F, 1)` for the triangle with standardized shape `[x1, z1, x2]`, from its corners'
 /// angles by `atan2` (independent of both ways [`seam_class`] computes it): `F` the largest of
@@ -65,17 +64,4 @@ fn class_bounds_the_corners<S: Scalar>() {
     assert!(slivers > 1000, "{slivers} slivers");
 }
 
-macro_rules! per_scalar {
-    ($($name:ident: $s:ty),*) => {$(
-        #[test]
-        fn $name() {
-            class_bounds_the_corners::<$s>();
-        }
-    )*};
-}
-per_scalar!(
-    class_bounds_the_corners_f32: f32,
-    class_bounds_the_corners_f64: f64,
-    class_bounds_the_corners_i16f16: I16F16,
-    class_bounds_the_corners_i32f32: I32F32
-);
+crate::testing::per_scalar!(class_bounds_the_corners);

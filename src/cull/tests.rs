@@ -4,7 +4,6 @@
 use super::Path;
 use crate::xorshift::Rng;
 use crate::{Features, Scalar, StandardTriangle, Sweep, Triangle, Vec3};
-use fixed::types::{I16F16, I32F32};
 
 fn point<S: Scalar>(p: [f64; 3]) -> Vec3<S> {
     Vec3::new(S::from_f64(p[0]), S::from_f64(p[1]), S::from_f64(p[2]))
@@ -148,17 +147,4 @@ fn culls_pass_by_only_misses<S: Scalar>() {
     );
 }
 
-macro_rules! per_scalar {
-    ($($name:ident: $s:ty),*) => {$(
-        #[test]
-        fn $name() {
-            culls_pass_by_only_misses::<$s>();
-        }
-    )*};
-}
-per_scalar!(
-    culls_pass_by_only_misses_f32: f32,
-    culls_pass_by_only_misses_f64: f64,
-    culls_pass_by_only_misses_i16f16: I16F16,
-    culls_pass_by_only_misses_i32f32: I32F32
-);
+crate::testing::per_scalar!(culls_pass_by_only_misses);

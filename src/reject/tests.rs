@@ -6,7 +6,6 @@
 
 use crate::xorshift::Rng;
 use crate::{Features, Scalar, StandardTriangle, Sweep, Triangle, Vec3};
-use fixed::types::{I16F16, I32F32};
 
 type P = [f64; 3];
 
@@ -96,17 +95,4 @@ fn within_reach_answers_as_cast<S: Scalar>() {
     );
 }
 
-macro_rules! per_scalar {
-    ($($name:ident: $s:ty),*) => {$(
-        #[test]
-        fn $name() {
-            within_reach_answers_as_cast::<$s>();
-        }
-    )*};
-}
-per_scalar!(
-    within_reach_answers_as_cast_f32: f32,
-    within_reach_answers_as_cast_f64: f64,
-    within_reach_answers_as_cast_i16f16: I16F16,
-    within_reach_answers_as_cast_i32f32: I32F32
-);
+crate::testing::per_scalar!(within_reach_answers_as_cast);

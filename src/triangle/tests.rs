@@ -66,24 +66,7 @@ fn edges_are_directions_of_the_corners<S: Scalar>() {
     assert!(prepared > 25_000, "{prepared}");
 }
 
-macro_rules! per_scalar {
-    ($($name:ident: $s:ty),*) => {$(
-        mod $name {
-            #[test]
-            fn neg_x_direction_is_direction() {
-                super::neg_x_direction_is_direction::<$s>();
-            }
-            #[test]
-            fn edges_are_directions_of_the_corners() {
-                super::edges_are_directions_of_the_corners::<$s>();
-            }
-        }
-    )*};
-}
-
-per_scalar!(
-    f32_: f32,
-    f64_: f64,
-    i16f16: fixed::types::I16F16,
-    i32f32: fixed::types::I32F32
+crate::testing::per_scalar!(
+    neg_x_direction_is_direction,
+    edges_are_directions_of_the_corners
 );
