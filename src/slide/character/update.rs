@@ -81,7 +81,12 @@ impl<S: Scalar> Character<S> {
                 // ball stays where it is. (Floats far out round a press as coarsely, but on no grid
                 // shared with the level: there the press still holds a walking ball down
                 // against the rounding of its walk, which would lift it off the floor.)
-                me.velocity = wish.reject_from_normalized(n);
+                let along = wish.reject_from_normalized(n);
+                me.velocity = if me.constant_speed {
+                    at_speed(along, wish.reject_from_normalized(me.unit_up()))
+                } else {
+                    along
+                };
                 let walk = me.velocity * dt;
                 let rise = S::dot(walk, me.unit_up());
                 if on == Contact::Face && rise > S::ZERO {
@@ -169,6 +174,13 @@ impl<S: Scalar> Character<S> {
         *self = me;
         Ok(out)
     }
+}
+
+/// `along` (the wish's part along the floor) lengthened to the length of `level` (the wish's
+/// part across `up`): [`Character::with_constant_speed`]'s walk. `along` as it is where it has
+/// no direction (a wish square to the floor).
+fn at_speed<S: Scalar>(along: Vec3<S>, level: Vec3<S>) -> Vec3<S> {
+    along.try_normalize().map_or(along, |u| u * level.length())
 }
 
 /// The longest time step whose moves fit in the range: `(|velocity| + |wish| + |gravity| dt) dt
