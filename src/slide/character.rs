@@ -30,7 +30,8 @@ use crate::{Error, Input, Scalar, Vec3, check};
 /// g r cos θ`, at any frame rate). Slopes
 /// steeper than the slope limit hold it back as walls ([`Slider::with_max_slope`]). It has no
 /// friction and no inertia on the floor: it takes the wished velocity at once, as its part
-/// along the floor (or at the wish's speed, [`with_constant_speed`](Self::with_constant_speed)).
+/// along the floor (or at the speed of its part across `up`,
+/// [`with_constant_speed`](Self::with_constant_speed)).
 ///
 /// Defaults: `up` along +y, slopes up to 45° walkable, a step height and a snap depth of half
 /// the radius each, the default [`skin`](super::skin). The fields are the state a game keeps:
@@ -157,17 +158,18 @@ impl<S: Scalar> Character<S> {
         Ok(Self { air, ..self })
     }
 
-    /// The same character walking at the wish's speed on every walkable slope (Godot's
-    /// `floor_constant_speed`): on a floor, its walk is the wish's part along the floor's plane
-    /// lengthened to the length of the wish's part across `up`. Off, the default, the walk is
-    /// that part along the plane as it is: heading straight up or down a slope of angle `θ`,
-    /// `cos θ` of the wished speed along the slope (`cos² θ` of it across `up`, as a map
-    /// shows it); heading across the slope, all of it. In the air the option changes nothing.
+    /// The same character walking at the same speed on every slope (Godot's
+    /// `floor_constant_speed`): on a floor, its walk takes the wish's part across `up` (the
+    /// heading and speed a map shows) and turns it into the floor's plane at that speed. The
+    /// wish's part along `up` plays no part. Off, the default, the walk is the wish's part along
+    /// the floor's plane as it is: for a level wish heading straight up or down a slope of angle
+    /// `θ`, `cos θ` of the wished speed (`cos² θ` of it across `up`); heading across the slope,
+    /// all of it. In the air the option changes nothing.
     ///
-    /// Rounding: the direction along the plane is a unit vector in the scalar (`I16F16`:
-    /// of length within about `2^-15` of one) times the wish's speed, each rounded once; over
-    /// a second at 2 units/s on 15° to 40° slopes, the distance walked was within 8e-4 of 2
-    /// (`I16F16`), 2.5e-5 (`f32`).
+    /// Rounding: the heading is a unit vector in the scalar (`I16F16`: of length within about
+    /// `2^-15` of one) times the speed, each rounded once; over a second at 2 units/s on 15° to
+    /// 40° slopes the distance walked was within 1e-3 of 2 (`I16F16`), 3e-5 (`f32`). A wish
+    /// near the range's edge can give a walk beyond it (see [`update`](Self::update)'s errors).
     pub const fn with_constant_speed(self, on: bool) -> Self {
         Self {
             constant_speed: on,

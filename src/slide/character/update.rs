@@ -24,8 +24,11 @@ impl<S: Scalar> Character<S> {
     /// milliseconds is refused only beyond that bound, and below it is obeyed. Then those of the
     /// slides it makes ([`Slider::slide`](crate::Slider::slide), [`Slider::step_slide`](crate::Slider::step_slide), [`Slider::snap_to_floor`](crate::Slider::snap_to_floor)):
     /// a move whose target leaves the range ([`Input::Target`]), a ball too small for the
-    /// scalar at its coordinates ([`Error::RadiusTooSmall`]). On an error the character is left
-    /// as it was.
+    /// scalar at its coordinates ([`Error::RadiusTooSmall`]), and a walk whose velocity has a
+    /// coordinate beyond `±LIMIT` ([`Input::Velocity`]: along a slope its part along the floor
+    /// can have a coordinate larger than any of the wish's, more so at
+    /// [constant speed](Self::with_constant_speed)). On an error the character is left as it
+    /// was.
     ///
     /// The wish steers in the air only with [`with_air_control`](Self::with_air_control) (or
     /// by changing [`velocity`](Self::velocity) before the update).
@@ -81,11 +84,10 @@ impl<S: Scalar> Character<S> {
                 // ball stays where it is. (Floats far out round a press as coarsely, but on no grid
                 // shared with the level: there the press still holds a walking ball down
                 // against the rounding of its walk, which would lift it off the floor.)
-                let along = wish.reject_from_normalized(n);
                 me.velocity = if me.constant_speed {
-                    at_speed(along, wish.reject_from_normalized(me.unit_up()))
+                    at_speed(wish.reject_from_normalized(me.unit_up()), n)
                 } else {
-                    along
+                    wish.reject_from_normalized(n)
                 };
                 let walk = me.velocity * dt;
                 let rise = S::dot(walk, me.unit_up());
@@ -176,11 +178,16 @@ impl<S: Scalar> Character<S> {
     }
 }
 
-/// `along` (the wish's part along the floor) lengthened to the length of `level` (the wish's
-/// part across `up`): [`Character::with_constant_speed`]'s walk. `along` as it is where it has
-/// no direction (a wish square to the floor).
-fn at_speed<S: Scalar>(along: Vec3<S>, level: Vec3<S>) -> Vec3<S> {
-    along.try_normalize().map_or(along, |u| u * level.length())
+/// [`Character::with_constant_speed`]'s walk: `level` (the wish's part across `up`) turned into
+/// the floor's plane (its part along the plane, normal `n`), at `level`'s length. Zero where
+/// `level` is (the wish was along `up`, or nothing); the part along the plane is never much
+/// shorter than `level` on a walkable floor (by the slope's cosine at most), so the lengthening
+/// scales up no rounding noise.
+fn at_speed<S: Scalar>(level: Vec3<S>, n: Vec3<S>) -> Vec3<S> {
+    match level.reject_from_normalized(n).try_normalize() {
+        Some(u) => u * level.length(),
+        None => Vec3::ZERO,
+    }
 }
 
 /// The longest time step whose moves fit in the range: `(|velocity| + |wish| + |gravity| dt) dt
