@@ -160,8 +160,8 @@ impl<S: Scalar> Character<S> {
 
     /// The same character walking at the same speed on every slope (Godot's
     /// `floor_constant_speed`): on a floor, its walk takes the wish's part across `up` (the
-    /// heading and speed a map shows) and turns it into the floor's plane at that speed. The
-    /// wish's part along `up` plays no part. Off, the default, the walk is the wish's part along
+    /// heading and speed a map shows) and turns it into the floor's plane at that speed; the
+    /// wish's component along `up` is ignored. Off, the default, the walk is the wish's part along
     /// the floor's plane as it is: for a level wish heading straight up or down a slope of angle
     /// `θ`, `cos θ` of the wished speed (`cos² θ` of it across `up`); heading across the slope,
     /// all of it. In the air the option changes nothing.
