@@ -184,10 +184,7 @@ impl<S: Scalar> Character<S> {
 /// shorter than `level` on a walkable floor (by the slope's cosine at most), so the lengthening
 /// scales up no rounding noise.
 fn at_speed<S: Scalar>(level: Vec3<S>, n: Vec3<S>) -> Vec3<S> {
-    match level.reject_from_normalized(n).try_normalize() {
-        Some(u) => u * level.length(),
-        None => Vec3::ZERO,
-    }
+    level.reject_from_normalized(n).normalize_or_zero() * level.length()
 }
 
 /// The longest time step whose moves fit in the range: `(|velocity| + |wish| + |gravity| dt) dt
